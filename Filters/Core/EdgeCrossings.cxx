@@ -1,0 +1,140 @@
+#include "EdgeCrossings.h"
+
+#include <cmath>
+
+namespace tpc
+{
+namespace
+{
+bool LeafInside(const CsgLeaf& leaf, const std::vector<Quadric>& prims, const Vec3& p)
+{
+  return prims[leaf.Primitive].ExactSign(p) * leaf.Sigma < 0;
+}
+
+EdgeCrossingCount Count(const CsgExpressionPtr& expression, const std::vector<Quadric>& prims,
+  const Vec3& a, const Vec3& b, int axis, bool inA, bool inB, int budget)
+{
+  Box3 seg{ a, b };
+  const auto pruned = CsgExpression::Prune(expression, seg, prims);
+  if (pruned.Sign != RegionSign::Mixed)
+  {
+    return { 0, true };
+  }
+  bool decided = true;
+  int changing = 0;
+  for (const CsgLeaf& leaf : pruned.Expression->Leaves())
+  {
+    if (prims[leaf.Primitive].EncloseDerivative(seg, axis).ContainsZero())
+    {
+      decided = false;
+      break;
+    }
+    if (LeafInside(leaf, prims, a) != LeafInside(leaf, prims, b))
+    {
+      ++changing;
+    }
+  }
+  if (decided && changing <= 1)
+  {
+    // Every leaf is monotone, at most one changes status: the combined status
+    // changes at most once along the piece.
+    return { inA != inB ? 1 : 0, true };
+  }
+  if (budget == 0)
+  {
+    return { 0, false };
+  }
+  Vec3 m = a;
+  m[axis] = 0.5 * (a[axis] + b[axis]);
+  if (m[axis] <= a[axis] || m[axis] >= b[axis])
+  {
+    return { 0, false }; // no representable midpoint left
+  }
+  const bool inM = pruned.Expression->IsInside(m, prims);
+  const EdgeCrossingCount left = Count(pruned.Expression, prims, a, m, axis, inA, inM, budget - 1);
+  if (!left.Proven || left.Count >= 2)
+  {
+    return left;
+  }
+  const EdgeCrossingCount right = Count(pruned.Expression, prims, m, b, axis, inM, inB, budget - 1);
+  return { left.Count + right.Count, right.Proven };
+}
+} // namespace
+
+EdgeCrossingCount CountEdgeCrossings(const CsgExpressionPtr& expression,
+  const std::vector<Quadric>& primitives, const Vec3& a, const Vec3& b, int axis, bool insideA,
+  bool insideB, int maxBisections)
+{
+  return Count(expression, primitives, a, b, axis, insideA, insideB, maxBisections);
+}
+
+Vec3 FindEdgeCrossing(const CsgExpression& expression, const std::vector<Quadric>& primitives,
+  const Vec3& a, const Vec3& b, bool insideA)
+{
+  // Illinois (modified regula falsi) on the floating-point field, bracketed by
+  // the exact signs; falls back to bisection on exact signs when rounding
+  // makes the floating-point values disagree with them.
+  double ta = 0.0, tb = 1.0;
+  const Vec3 d = b - a;
+  auto at = [&](double t) { return a + d * t; };
+  double fa = expression.Value(a, primitives);
+  double fb = expression.Value(b, primitives);
+  const bool usable = insideA ? (fa < 0.0 && fb >= 0.0) : (fa >= 0.0 && fb < 0.0);
+  if (usable)
+  {
+    int side = 0;
+    for (int it = 0; it < 100 && tb - ta > 1e-15; ++it)
+    {
+      double t = (ta * fb - tb * fa) / (fb - fa);
+      if (!(t > ta && t < tb))
+      {
+        t = 0.5 * (ta + tb);
+      }
+      const double ft = expression.Value(at(t), primitives);
+      if (ft == 0.0)
+      {
+        return at(t);
+      }
+      if ((ft < 0.0) == (fa < 0.0))
+      {
+        ta = t;
+        fa = ft;
+        if (side == -1)
+        {
+          fb *= 0.5;
+        }
+        side = -1;
+      }
+      else
+      {
+        tb = t;
+        fb = ft;
+        if (side == 1)
+        {
+          fa *= 0.5;
+        }
+        side = 1;
+      }
+      if (std::fabs(ft) < 1e-300)
+      {
+        break;
+      }
+    }
+    return at(0.5 * (ta + tb));
+  }
+  for (int it = 0; it < 60; ++it)
+  {
+    const double t = 0.5 * (ta + tb);
+    if (expression.IsInside(at(t), primitives) == insideA)
+    {
+      ta = t;
+    }
+    else
+    {
+      tb = t;
+    }
+  }
+  return at(0.5 * (ta + tb));
+}
+
+} // namespace tpc

@@ -1,0 +1,37 @@
+// How many times the surface crosses an axis-aligned edge (the complex-edge
+// criterion, paper 5.3.1), proven with interval arithmetic.
+//
+// The paper uses directed distances for polyhedra. For our primitives each leaf
+// restricted to the edge is a polynomial of degree <= 2; rather than solving it
+// in floating point (which can miss a double root), the edge is bisected until
+// on every piece each active leaf is either sign-definite or strictly monotone
+// (derivative enclosure excluding zero) and at most one leaf changes sign.
+// On such a piece the combined min/max field changes sign at most once, so the
+// count is exact. Tangential contact never reaches that state: the bisection
+// budget runs out and the edge is reported as not proven (hence complex).
+#pragma once
+
+#include "CsgExpression.h"
+
+namespace tpc
+{
+
+struct EdgeCrossingCount
+{
+  int Count = 0;       ///< number of crossings found (meaningful if Proven)
+  bool Proven = false; ///< false: could not be decided within the budget
+};
+
+/// Counts crossings on the segment from `a` to `b` (which differ only along
+/// `axis`); `insideA`/`insideB` are the exact signs at the endpoints. Stops
+/// early once two crossings are found.
+EdgeCrossingCount CountEdgeCrossings(const CsgExpressionPtr& expression,
+  const std::vector<Quadric>& primitives, const Vec3& a, const Vec3& b, int axis, bool insideA,
+  bool insideB, int maxBisections = 24);
+
+/// A point of the surface on a segment whose endpoint signs differ (root
+/// finding on the exact field, paper 4.3), with `insideA` the sign at a.
+Vec3 FindEdgeCrossing(const CsgExpression& expression, const std::vector<Quadric>& primitives,
+  const Vec3& a, const Vec3& b, bool insideA);
+
+} // namespace tpc

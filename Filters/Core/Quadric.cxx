@@ -1,0 +1,426 @@
+#include "Quadric.h"
+
+#include "ExactSum.h"
+
+#include <cmath>
+
+namespace tpc
+{
+namespace
+{
+// Symmetric 3x3 matrix of the quadratic part, b and c of f = x'Ax + b'x + c.
+struct QuadraticForm
+{
+  double A[3][3];
+  double b[3];
+  double c;
+};
+
+QuadraticForm ToForm(const std::array<double, 10>& a)
+{
+  QuadraticForm q;
+  q.A[0][0] = a[0];
+  q.A[1][1] = a[1];
+  q.A[2][2] = a[2];
+  q.A[0][1] = q.A[1][0] = 0.5 * a[3];
+  q.A[1][2] = q.A[2][1] = 0.5 * a[4];
+  q.A[0][2] = q.A[2][0] = 0.5 * a[5];
+  q.b[0] = a[6];
+  q.b[1] = a[7];
+  q.b[2] = a[8];
+  q.c = a[9];
+  return q;
+}
+
+std::array<double, 10> FromForm(const QuadraticForm& q)
+{
+  return { q.A[0][0], q.A[1][1], q.A[2][2], 2.0 * q.A[0][1], 2.0 * q.A[1][2], 2.0 * q.A[0][2],
+    q.b[0], q.b[1], q.b[2], q.c };
+}
+
+double Determinant(const double m[3][3])
+{
+  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+    m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+    m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+bool Invert(const double m[3][3], double inv[3][3])
+{
+  const double det = Determinant(m);
+  double scale = 0.0;
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      scale = std::max(scale, std::fabs(m[i][j]));
+    }
+  }
+  if (scale == 0.0 || std::fabs(det) <= 1e-14 * scale * scale * scale)
+  {
+    return false;
+  }
+  inv[0][0] = (m[1][1] * m[2][2] - m[1][2] * m[2][1]) / det;
+  inv[0][1] = (m[0][2] * m[2][1] - m[0][1] * m[2][2]) / det;
+  inv[0][2] = (m[0][1] * m[1][2] - m[0][2] * m[1][1]) / det;
+  inv[1][0] = (m[1][2] * m[2][0] - m[1][0] * m[2][2]) / det;
+  inv[1][1] = (m[0][0] * m[2][2] - m[0][2] * m[2][0]) / det;
+  inv[1][2] = (m[0][2] * m[1][0] - m[0][0] * m[1][2]) / det;
+  inv[2][0] = (m[1][0] * m[2][1] - m[1][1] * m[2][0]) / det;
+  inv[2][1] = (m[0][1] * m[2][0] - m[0][0] * m[2][1]) / det;
+  inv[2][2] = (m[0][0] * m[1][1] - m[0][1] * m[1][0]) / det;
+  return true;
+}
+
+bool PositiveDefinite(const double m[3][3])
+{
+  const double m2 = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+  return m[0][0] > 0.0 && m2 > 0.0 && Determinant(m) > 0.0;
+}
+} // namespace
+
+// ---------------------------------------------------------------------------
+Interval IntervalQuadric::EncloseAt(const Vec3& p) const
+{
+  const Interval x(p[0]), y(p[1]), z(p[2]);
+  return (A[0] * x + A[3] * y + A[5] * z + A[6]) * x + (A[1] * y + A[4] * z + A[7]) * y +
+    (A[2] * z + A[8]) * z + A[9];
+}
+
+Interval IntervalQuadric::Enclose(const Box3& box) const
+{
+  const Vec3 c = box.Center();
+  double r[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    r[i] = std::max(rounding::AddUp(c[i], -box.lo[i]), rounding::AddUp(box.hi[i], -c[i]));
+  }
+  // Centred form: f(c + d) = f(c) + g(c).d + d'Qd with |d_i| <= r_i.
+  const Interval cx(c[0]), cy(c[1]), cz(c[2]);
+  const Interval two(2.0);
+  const Interval g0 = two * A[0] * cx + A[3] * cy + A[5] * cz + A[6];
+  const Interval g1 = A[3] * cx + two * A[1] * cy + A[4] * cz + A[7];
+  const Interval g2 = A[5] * cx + A[4] * cy + two * A[2] * cz + A[8];
+  const Interval d0(-r[0], r[0]), d1(-r[1], r[1]), d2(-r[2], r[2]);
+  const Interval taylor = this->EncloseAt(c) + g0 * d0 + g1 * d1 + g2 * d2 + A[0] * Square(d0) +
+    A[1] * Square(d1) + A[2] * Square(d2) + A[3] * (d0 * d1) + A[4] * (d1 * d2) + A[5] * (d0 * d2);
+
+  // Natural extension: better than the centred form on large boxes.
+  const Interval x(box.lo[0], box.hi[0]), y(box.lo[1], box.hi[1]), z(box.lo[2], box.hi[2]);
+  const Interval natural = A[0] * Square(x) + A[1] * Square(y) + A[2] * Square(z) +
+    A[3] * (x * y) + A[4] * (y * z) + A[5] * (x * z) + A[6] * x + A[7] * y + A[8] * z + A[9];
+
+  return { std::max(taylor.lo, natural.lo), std::min(taylor.hi, natural.hi) };
+}
+
+// ---------------------------------------------------------------------------
+Quadric Quadric::Sphere(const Vec3& center, double radius)
+{
+  return Quadric({ 1, 1, 1, 0, 0, 0, -2 * center[0], -2 * center[1], -2 * center[2],
+    Dot(center, center) - radius * radius });
+}
+
+Quadric Quadric::Plane(const Vec3& origin, const Vec3& normal)
+{
+  return Quadric({ 0, 0, 0, 0, 0, 0, normal[0], normal[1], normal[2], -Dot(normal, origin) });
+}
+
+Quadric Quadric::Cylinder(const Vec3& center, const Vec3& axis, double radius)
+{
+  const Vec3 u = Normalized(axis);
+  QuadraticForm q{};
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      q.A[i][j] = (i == j ? 1.0 : 0.0) - u[i] * u[j];
+    }
+  }
+  double cAc = 0.0;
+  for (int i = 0; i < 3; ++i)
+  {
+    double Ac = 0.0;
+    for (int j = 0; j < 3; ++j)
+    {
+      Ac += q.A[i][j] * center[j];
+    }
+    q.b[i] = -2.0 * Ac;
+    cAc += center[i] * Ac;
+  }
+  q.c = cAc - radius * radius;
+  return Quadric(FromForm(q));
+}
+
+Quadric Quadric::Ellipsoid(const Vec3& center, const Vec3& semiAxes)
+{
+  std::array<double, 10> a{};
+  for (int i = 0; i < 3; ++i)
+  {
+    const double w = 1.0 / (semiAxes[i] * semiAxes[i]);
+    a[i] = w;
+    a[6 + i] = -2.0 * w * center[i];
+    a[9] += w * center[i] * center[i];
+  }
+  a[9] -= 1.0;
+  return Quadric(a);
+}
+
+Quadric Quadric::Composed(const double m[16]) const
+{
+  const QuadraticForm q = ToForm(this->A);
+  double L[3][3], t[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      L[i][j] = m[4 * i + j];
+    }
+    t[i] = m[4 * i + 3];
+  }
+  QuadraticForm r{};
+  // A' = L^T A L
+  double AL[3][3];
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      AL[i][j] = q.A[i][0] * L[0][j] + q.A[i][1] * L[1][j] + q.A[i][2] * L[2][j];
+    }
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      r.A[i][j] = L[0][i] * AL[0][j] + L[1][i] * AL[1][j] + L[2][i] * AL[2][j];
+    }
+  }
+  // b' = L^T (2 A t + b),  c' = t'At + b't + c
+  double At[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    At[i] = q.A[i][0] * t[0] + q.A[i][1] * t[1] + q.A[i][2] * t[2];
+  }
+  for (int j = 0; j < 3; ++j)
+  {
+    r.b[j] = 0.0;
+    for (int i = 0; i < 3; ++i)
+    {
+      r.b[j] += L[i][j] * (2.0 * At[i] + q.b[i]);
+    }
+  }
+  r.c = q.c;
+  for (int i = 0; i < 3; ++i)
+  {
+    r.c += t[i] * At[i] + q.b[i] * t[i];
+  }
+  // Keep exact symmetry of the result.
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = i + 1; j < 3; ++j)
+    {
+      const double s = 0.5 * (r.A[i][j] + r.A[j][i]);
+      r.A[i][j] = r.A[j][i] = s;
+    }
+  }
+  return Quadric(FromForm(r));
+}
+
+Quadric Quadric::Scaled(double s) const
+{
+  std::array<double, 10> a = this->A;
+  for (double& v : a)
+  {
+    v *= s;
+  }
+  return Quadric(a);
+}
+
+double Quadric::Value(const Vec3& p) const
+{
+  const double x = p[0], y = p[1], z = p[2];
+  const auto& a = this->A;
+  return (a[0] * x + a[3] * y + a[5] * z + a[6]) * x + (a[1] * y + a[4] * z + a[7]) * y +
+    (a[2] * z + a[8]) * z + a[9];
+}
+
+Vec3 Quadric::Gradient(const Vec3& p) const
+{
+  const double x = p[0], y = p[1], z = p[2];
+  const auto& a = this->A;
+  return { 2 * a[0] * x + a[3] * y + a[5] * z + a[6], a[3] * x + 2 * a[1] * y + a[4] * z + a[7],
+    a[5] * x + a[4] * y + 2 * a[2] * z + a[8] };
+}
+
+IntervalQuadric Quadric::AsInterval() const
+{
+  IntervalQuadric q;
+  for (int i = 0; i < 10; ++i)
+  {
+    q.A[i] = Interval(this->A[i]);
+  }
+  return q;
+}
+
+int Quadric::ExactSign(const Vec3& p) const
+{
+  const Interval v = this->AsInterval().EncloseAt(p);
+  if (v.lo > 0.0)
+  {
+    return 1;
+  }
+  if (v.hi < 0.0)
+  {
+    return -1;
+  }
+  if (v.lo == 0.0 && v.hi == 0.0)
+  {
+    return 0;
+  }
+  const auto& a = this->A;
+  const double x = p[0], y = p[1], z = p[2];
+  ExactSum s;
+  s.AddProduct(a[0], x, x);
+  s.AddProduct(a[1], y, y);
+  s.AddProduct(a[2], z, z);
+  s.AddProduct(a[3], x, y);
+  s.AddProduct(a[4], y, z);
+  s.AddProduct(a[5], x, z);
+  s.AddProduct(a[6], x);
+  s.AddProduct(a[7], y);
+  s.AddProduct(a[8], z);
+  s.Add(a[9]);
+  return s.Sign();
+}
+
+Interval Quadric::Enclose(const Box3& box) const
+{
+  return this->AsInterval().Enclose(box);
+}
+
+Interval Quadric::EncloseDerivative(const Box3& box, int axis) const
+{
+  // df/dx_axis is affine: its exact range is reached at box corners, and the
+  // natural extension of an expression using each variable once is exact up
+  // to rounding.
+  const auto& a = this->A;
+  const Interval x(box.lo[0], box.hi[0]), y(box.lo[1], box.hi[1]), z(box.lo[2], box.hi[2]);
+  switch (axis)
+  {
+    case 0:
+      return Interval(2 * a[0]) * x + Interval(a[3]) * y + Interval(a[5]) * z + Interval(a[6]);
+    case 1:
+      return Interval(a[3]) * x + Interval(2 * a[1]) * y + Interval(a[4]) * z + Interval(a[7]);
+    default:
+      return Interval(a[5]) * x + Interval(a[4]) * y + Interval(2 * a[2]) * z + Interval(a[8]);
+  }
+}
+
+Interval Quadric::EncloseStarCondition(
+  const Box3& box, const StarWitness& witness, int sigma) const
+{
+  // h(x) = sigma * grad f(x) . (w x - p) is again a quadric in x; build its
+  // coefficients in interval arithmetic and enclose it like f itself.
+  const auto& a = this->A;
+  const Interval w(witness.W), s(static_cast<double>(sigma)), two(2.0);
+  const Interval p0(witness.P[0]), p1(witness.P[1]), p2(witness.P[2]);
+  const Interval a0(a[0]), a1(a[1]), a2(a[2]), a3(a[3]), a4(a[4]), a5(a[5]), a6(a[6]),
+    a7(a[7]), a8(a[8]);
+  IntervalQuadric h;
+  h.A[0] = s * two * w * a0;
+  h.A[1] = s * two * w * a1;
+  h.A[2] = s * two * w * a2;
+  h.A[3] = s * two * w * a3;
+  h.A[4] = s * two * w * a4;
+  h.A[5] = s * two * w * a5;
+  h.A[6] = s * (w * a6 - (two * a0 * p0 + a3 * p1 + a5 * p2));
+  h.A[7] = s * (w * a7 - (a3 * p0 + two * a1 * p1 + a4 * p2));
+  h.A[8] = s * (w * a8 - (a5 * p0 + a4 * p1 + two * a2 * p2));
+  h.A[9] = -(s * (a6 * p0 + a7 * p1 + a8 * p2));
+  return h.Enclose(box);
+}
+
+SolidBounds Quadric::Bounds() const
+{
+  SolidBounds result;
+  if (this->IsLinear())
+  {
+    // A half-space is bounded on one side only when its normal is an axis.
+    int axis = -1, nonzero = 0;
+    for (int i = 0; i < 3; ++i)
+    {
+      if (this->A[6 + i] != 0.0)
+      {
+        axis = i;
+        ++nonzero;
+      }
+    }
+    if (nonzero == 0)
+    {
+      return this->A[9] < 0.0 ? SolidBounds::Everything() : SolidBounds::Nothing();
+    }
+    if (nonzero == 1)
+    {
+      // a x + c < 0
+      const double x = -this->A[9] / this->A[6 + axis];
+      const double pad = 1e-12 * (std::fabs(x) + 1e-300);
+      if (this->A[6 + axis] > 0.0)
+      {
+        result.Box.hi[axis] = x + pad;
+      }
+      else
+      {
+        result.Box.lo[axis] = x - pad;
+      }
+    }
+    return result;
+  }
+  const QuadraticForm q = ToForm(this->A);
+  double inv[3][3];
+  if (!PositiveDefinite(q.A) || !Invert(q.A, inv))
+  {
+    return result; // unbounded
+  }
+  Vec3 x0;
+  for (int i = 0; i < 3; ++i)
+  {
+    x0[i] = -0.5 * (inv[i][0] * q.b[0] + inv[i][1] * q.b[1] + inv[i][2] * q.b[2]);
+  }
+  // f = (x-x0)'A(x-x0) - k
+  double k = -q.c;
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      k += x0[i] * q.A[i][j] * x0[j];
+    }
+  }
+  if (k <= 0.0)
+  {
+    return SolidBounds::Nothing();
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    // Small relative inflation: the box must contain the solid despite rounding.
+    const double half = std::sqrt(k * inv[i][i]) * (1.0 + 1e-12) + 1e-300;
+    result.Box.lo[i] = x0[i] - half;
+    result.Box.hi[i] = x0[i] + half;
+  }
+  return result;
+}
+
+bool Quadric::EllipsoidCenter(Vec3& center) const
+{
+  const QuadraticForm q = ToForm(this->A);
+  double inv[3][3];
+  if (!PositiveDefinite(q.A) || !Invert(q.A, inv))
+  {
+    return false;
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    center[i] = -0.5 * (inv[i][0] * q.b[0] + inv[i][1] * q.b[1] + inv[i][2] * q.b[2]);
+  }
+  return true;
+}
+
+} // namespace tpc

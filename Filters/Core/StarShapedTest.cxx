@@ -1,0 +1,223 @@
+#include "StarShapedTest.h"
+
+#include <cmath>
+
+namespace tpc
+{
+namespace
+{
+constexpr int VerificationDepth = 2;
+
+bool VerifyLeaf(const Quadric& q, int sigma, const StarWitness& w, const Box3& box, int depth)
+{
+  Interval f = q.Enclose(box);
+  if (sigma < 0)
+  {
+    f = -f;
+  }
+  if (f.lo >= 0.0 || f.hi < 0.0)
+  {
+    return true; // this leaf's surface does not reach the box
+  }
+  if (q.EncloseStarCondition(box, w, sigma).lo > 0.0)
+  {
+    return true;
+  }
+  if (depth == 0)
+  {
+    return false;
+  }
+  int axes[3], count = 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (box.hi[a] > box.lo[a])
+    {
+      axes[count++] = a;
+    }
+  }
+  for (int piece = 0; piece < (1 << count); ++piece)
+  {
+    Box3 sub = box;
+    for (int k = 0; k < count; ++k)
+    {
+      const int a = axes[k];
+      const double mid = 0.5 * (box.lo[a] + box.hi[a]);
+      ((piece >> k) & 1 ? sub.lo[a] : sub.hi[a]) = mid;
+    }
+    if (!VerifyLeaf(q, sigma, w, sub, depth - 1))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Unit outward normals of each leaf sampled near the box: box points pulled
+/// onto the leaf surface by a few Newton steps.
+void SampleNormals(const std::vector<CsgLeaf>& leaves, const std::vector<Quadric>& prims,
+  const Box3& box, int planeAxis, std::vector<Vec3>& normals)
+{
+  const Vec3 c = box.Center();
+  const double size = box.Diagonal();
+  Box3 grown = box;
+  for (int a = 0; a < 3; ++a)
+  {
+    grown.lo[a] -= 0.25 * size;
+    grown.hi[a] += 0.25 * size;
+  }
+  for (const CsgLeaf& leaf : leaves)
+  {
+    const Quadric& q = prims[leaf.Primitive];
+    for (int s = 0; s < 9; ++s)
+    {
+      Vec3 x = s == 0 ? c : (box.Corner(s - 1) + c) * 0.5;
+      bool ok = true;
+      for (int it = 0; it < 4; ++it)
+      {
+        const Vec3 g = q.Gradient(x);
+        const double gg = Dot(g, g);
+        if (gg <= 0.0)
+        {
+          ok = false;
+          break;
+        }
+        x = x - g * (q.Value(x) / gg);
+        if (planeAxis >= 0)
+        {
+          x[planeAxis] = box.lo[planeAxis];
+        }
+      }
+      if (!ok || !grown.Contains(x))
+      {
+        continue;
+      }
+      Vec3 n = q.Gradient(x) * static_cast<double>(leaf.Sigma);
+      if (planeAxis >= 0)
+      {
+        n[planeAxis] = 0.0;
+      }
+      if (Norm(n) > 0.0)
+      {
+        normals.push_back(Normalized(n));
+      }
+    }
+  }
+}
+
+/// Direction u maximizing min_k n_k . u, approximately (a few steps of moving
+/// toward the worst normal). Exactness is not needed: the result is verified.
+Vec3 MaximinDirection(const std::vector<Vec3>& normals)
+{
+  Vec3 u;
+  for (const Vec3& n : normals)
+  {
+    u += n;
+  }
+  u = Normalized(u);
+  for (int it = 0; it < 12; ++it)
+  {
+    double worst = 2.0;
+    const Vec3* w = nullptr;
+    for (const Vec3& n : normals)
+    {
+      const double d = Dot(n, u);
+      if (d < worst)
+      {
+        worst = d;
+        w = &n;
+      }
+    }
+    if (!w || worst > 0.5)
+    {
+      break;
+    }
+    u = Normalized(u + *w * 0.5);
+  }
+  return u;
+}
+
+bool IsStarShaped(const CsgExpressionPtr& expression, const std::vector<Quadric>& prims,
+  const Box3& box, int planeAxis)
+{
+  const std::vector<CsgLeaf> leaves = expression->Leaves();
+  if (leaves.empty())
+  {
+    return true;
+  }
+  std::vector<StarWitness> candidates;
+  std::vector<Vec3> normals;
+  SampleNormals(leaves, prims, box, planeAxis, normals);
+  Vec3 u;
+  if (!normals.empty())
+  {
+    u = MaximinDirection(normals);
+    candidates.push_back({ u * -1.0, 0.0 });
+  }
+  const double planeValue = planeAxis >= 0 ? box.lo[planeAxis] : 0.0;
+  for (const CsgLeaf& leaf : leaves)
+  {
+    Vec3 center;
+    if (leaf.Sigma > 0 && prims[leaf.Primitive].EllipsoidCenter(center))
+    {
+      if (planeAxis >= 0)
+      {
+        center[planeAxis] = planeValue;
+      }
+      candidates.push_back({ center, 1.0 });
+    }
+  }
+  if (Norm(u) > 0.0)
+  {
+    const Vec3 c = box.Center();
+    for (const double k : { 0.75, 3.0 })
+    {
+      Vec3 p = c - u * (k * box.Diagonal());
+      if (planeAxis >= 0)
+      {
+        p[planeAxis] = planeValue;
+      }
+      candidates.push_back({ p, 1.0 });
+    }
+  }
+  for (const StarWitness& w : candidates)
+  {
+    if (VerifyStarWitness(*expression, prims, box, w, VerificationDepth))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+} // namespace
+
+bool VerifyStarWitness(const CsgExpression& expression, const std::vector<Quadric>& primitives,
+  const Box3& box, const StarWitness& witness, int refinementDepth)
+{
+  for (const CsgLeaf& leaf : expression.Leaves())
+  {
+    if (!VerifyLeaf(primitives[leaf.Primitive], leaf.Sigma, witness, box, refinementDepth))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool IsStarShapedWithRespectToVoxel(
+  const CsgExpressionPtr& expression, const std::vector<Quadric>& primitives, const Box3& cell)
+{
+  return IsStarShaped(expression, primitives, cell, -1);
+}
+
+bool IsStarShapedWithRespectToFace(const CsgExpressionPtr& expression,
+  const std::vector<Quadric>& primitives, const Box3& face, int axis)
+{
+  const auto pruned = CsgExpression::Prune(expression, face, primitives);
+  if (pruned.Sign != RegionSign::Mixed)
+  {
+    return true;
+  }
+  return IsStarShaped(pruned.Expression, primitives, face, axis);
+}
+
+} // namespace tpc

@@ -1,0 +1,41 @@
+// Marching-Cubes-like extraction on the adaptive grid with crack patching
+// (paper 4.3).
+//
+// Crack patching as one idea: in an MC-compatible cell the exact surface is a
+// disk (Lemma 3) whose boundary is a loop on the cell's faces. Each leaf that
+// meets the surface walks its six faces at the finest resolution present on
+// them - every lattice corner of every leaf touching the face or its edges -
+// so a face shared with smaller neighbours is split exactly as they split it.
+// On each tile of a face, every run of inside points along the tile's boundary
+// is cut off by one segment between the two crossings that bound the run;
+// the segments chain into the disk's boundary loop, which is triangulated as
+// a fan around a vertex placed on the surface inside the cell. Both cells
+// sharing a tile compute the same segments from the same points, and a
+// crossing is identified by the finest lattice sub-edge that contains it, so
+// no crack can appear and every edge of the output has exactly two
+// triangles - whether or not the cell passed the tests (cells stopped by a
+// limit still give a closed manifold, only without the topology guarantee).
+// Edge crossings are found on the exact field by root finding, not by linear
+// interpolation.
+#pragma once
+
+#include "AdaptiveOctree.h"
+#include "Parallel.h"
+#include "TopologyPreservingSubdivision.h"
+#include "TriangleMesh.h"
+
+namespace tpc
+{
+
+struct ExtractionResult
+{
+  TriangleMesh Mesh;
+  /// Cells whose boundary crossings did not close into loops (never expected;
+  /// reported rather than hidden).
+  std::size_t InconsistentCells = 0;
+};
+
+ExtractionResult ExtractSurface(const AdaptiveOctree& octree, const ImplicitScene& scene,
+  const ParallelFor& parallelFor = SequentialFor);
+
+} // namespace tpc

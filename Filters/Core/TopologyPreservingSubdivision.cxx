@@ -1,0 +1,357 @@
+#include "TopologyPreservingSubdivision.h"
+
+#include "ComplexCellTest.h"
+#include "CubeTopology.h"
+#include "StarShapedTest.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tpc
+{
+
+int MaximumSupportedDepth(const int dims[3])
+{
+  const int n = std::max({ dims[0], dims[1], dims[2], 1 });
+  int depth = 0;
+  while ((static_cast<std::uint64_t>(n) << (depth + 1)) < LatticeLimit)
+  {
+    ++depth;
+  }
+  return depth;
+}
+
+RootGrid MakeRootGrid(const Box3& domain, double tolerance, int maximumDepth)
+{
+  RootGrid grid;
+  double extent = 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    extent = std::max(extent, domain.Width(a));
+  }
+  if (!(extent > 0.0))
+  {
+    extent = std::max(tolerance, 1e-12);
+  }
+  const double sqrt3 = std::sqrt(3.0);
+  int levels = 0;
+  if (tolerance > 0.0)
+  {
+    levels = std::max(0, static_cast<int>(std::ceil(std::log2(extent * sqrt3 / tolerance))));
+  }
+  double size = extent;
+  if (tolerance > 0.0 && levels <= maximumDepth)
+  {
+    // Level `levels` then has a diagonal of exactly the tolerance.
+    size = std::max(extent, std::ldexp(tolerance / sqrt3, levels));
+  }
+  // A lattice aligned with the input's own numbers (a sphere of radius 0.5 at
+  // (0.1, 0.2, 0.3) has many rational points) puts lattice corners at almost
+  // exactly the surface; each such near-hit is a genuinely complex cell that
+  // only refinement to the scale of the near-miss resolves. A lattice with a
+  // generic spacing and a generic offset makes such coincidences as rare as
+  // chance makes them. Deterministic: the same input gives the same grid.
+  const double generic = 0.9876543210987654;
+  const Vec3 shift(0.0731059, 0.0418603, 0.0586947);
+  const double finest = std::ldexp(size, -levels);
+  if (size * generic >= extent + 2.0 * finest)
+  {
+    size *= generic;
+  }
+  grid.RootSize = size;
+  const Vec3 center = domain.Center();
+  for (int a = 0; a < 3; ++a)
+  {
+    grid.Dims[a] = std::max(1, static_cast<int>(std::ceil(domain.Width(a) / size - 1e-12)));
+    grid.Origin[a] = center[a] - 0.5 * grid.Dims[a] * size;
+    const double offset = shift[a] * std::ldexp(size, -levels);
+    if (grid.Origin[a] - offset <= domain.lo[a] &&
+      grid.Origin[a] - offset + grid.Dims[a] * size >= domain.hi[a])
+    {
+      grid.Origin[a] -= offset;
+    }
+  }
+  grid.MaxDepth = std::min(maximumDepth, MaximumSupportedDepth(grid.Dims));
+  return grid;
+}
+
+namespace
+{
+/// Outcome of the tests for one cell.
+enum class Verdict : std::uint8_t
+{
+  Pass,
+  Constant, // proven free of the surface after local refinement
+  Split
+};
+
+struct CellVerdict
+{
+  Verdict Kind = Verdict::Pass;
+  SplitReason Reason = SplitReason::None;
+  RegionSign Sign = RegionSign::Mixed;
+};
+
+CellVerdict Classify(const CsgExpressionPtr& expression, const std::vector<Quadric>& prims,
+  const Box3& box, unsigned mask, double cellDiagonal, double tolerance)
+{
+  CellVerdict v;
+  v.Kind = Verdict::Split;
+  if (mask == 0 || mask == 0xFF)
+  {
+    // Corners agree: either the surface misses the voxel or it is complex.
+    const RegionSign s = ProveConstantSign(expression, prims, box, 1);
+    if (s != RegionSign::Mixed)
+    {
+      v.Kind = Verdict::Constant;
+      v.Sign = s;
+      return v;
+    }
+    v.Reason = SplitReason::ComplexVoxel;
+    return v;
+  }
+  if ((v.Reason = SignAmbiguityTest(mask)) != SplitReason::None)
+  {
+    return v;
+  }
+  const ComplexCellQuery q{ expression, prims, box, mask };
+  if ((v.Reason = ComplexVoxelOrFaceTest(q)) != SplitReason::None)
+  {
+    return v;
+  }
+  // Cells that must shrink anyway skip the costlier edge and star tests.
+  if (cellDiagonal > tolerance * (1.0 + 1e-9))
+  {
+    v.Reason = SplitReason::HausdorffSize;
+    return v;
+  }
+  if ((v.Reason = ComplexEdgeTest(q)) != SplitReason::None)
+  {
+    return v;
+  }
+  if (!IsStarShapedWithRespectToVoxel(expression, prims, box))
+  {
+    v.Reason = SplitReason::NotStarShapedVoxel;
+    return v;
+  }
+  for (int f = 0; f < 6; ++f)
+  {
+    if (cube::FaceHasSignChange(mask, f) &&
+      !IsStarShapedWithRespectToFace(expression, prims, FaceBox(box, f), cube::FaceAxis(f)))
+    {
+      v.Reason = SplitReason::NotStarShapedFace;
+      return v;
+    }
+  }
+  v.Kind = Verdict::Pass;
+  v.Reason = SplitReason::None;
+  return v;
+}
+
+CellState StateOf(RegionSign s)
+{
+  return s == RegionSign::Inside ? CellState::Inside : CellState::Outside;
+}
+} // namespace
+
+SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
+  const RootGrid& grid, const SubdivisionParameters& params, const ParallelFor& parallelFor,
+  const ProgressCallback& progress)
+{
+  SubdivisionResult result;
+  AdaptiveOctree& tree = result.Octree;
+  tree.Grid = grid;
+  const auto& prims = scene.Primitives;
+
+  // Roots.
+  const int treeCount = grid.TreeCount();
+  tree.Nodes.resize(static_cast<std::size_t>(treeCount));
+  tree.Expressions.resize(static_cast<std::size_t>(treeCount));
+  std::vector<std::uint32_t> active;
+  for (int t = 0; t < treeCount; ++t)
+  {
+    OctreeNode& n = tree.Nodes[static_cast<std::size_t>(t)];
+    n.Ijk[0] = static_cast<std::uint32_t>(t % grid.Dims[0]);
+    n.Ijk[1] = static_cast<std::uint32_t>((t / grid.Dims[0]) % grid.Dims[1]);
+    n.Ijk[2] = static_cast<std::uint32_t>(t / (grid.Dims[0] * grid.Dims[1]));
+    n.Level = 0;
+    if (!scene.Expression)
+    {
+      n.State = CellState::Outside;
+      continue;
+    }
+    const auto pruned = CsgExpression::Prune(scene.Expression, grid.CellBox(0, n.Ijk), prims);
+    if (pruned.Sign == RegionSign::Mixed)
+    {
+      n.State = CellState::Surface;
+      tree.Expressions[static_cast<std::size_t>(t)] = pruned.Expression;
+      active.push_back(static_cast<std::uint32_t>(t));
+    }
+    else
+    {
+      n.State = StateOf(pruned.Sign);
+    }
+  }
+
+  const int expectedLevels = std::max(1,
+    static_cast<int>(std::ceil(std::log2(grid.RootSize * std::sqrt(3.0) / params.HausdorffTolerance))) + 3);
+
+  for (int level = 0; !active.empty(); ++level)
+  {
+    if (progress && progress(std::min(0.95, static_cast<double>(level) / expectedLevels)))
+    {
+      result.Aborted = true;
+      return result;
+    }
+
+    // 1. Exact signs at corners not seen before, each evaluated once.
+    std::vector<std::pair<PointKey, std::uint32_t>> pending;
+    for (const std::uint32_t n : active)
+    {
+      for (int c = 0; c < 8; ++c)
+      {
+        std::uint32_t p[3];
+        CornerLattice(grid, tree.Nodes[n], c, p);
+        const PointKey key = MakePointKey(p[0], p[1], p[2]);
+        if (tree.Signs.Find(key) < 0)
+        {
+          pending.emplace_back(key, n);
+        }
+      }
+    }
+    std::sort(pending.begin(), pending.end());
+    pending.erase(std::unique(pending.begin(), pending.end(),
+                    [](const auto& a, const auto& b) { return a.first == b.first; }),
+      pending.end());
+    std::vector<std::uint8_t> inside(pending.size());
+    parallelFor(pending.size(), [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i)
+      {
+        inside[i] = tree.Expressions[pending[i].second]->IsInside(grid.Point(pending[i].first), prims);
+      }
+    });
+    for (std::size_t i = 0; i < pending.size(); ++i)
+    {
+      tree.Signs.Insert(pending[i].first, inside[i] != 0);
+    }
+
+    // 2. The paper's tests on every cell of this level.
+    std::vector<CellVerdict> verdicts(active.size());
+    const double diagonal = grid.CellDiagonal(level);
+    parallelFor(active.size(), [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i)
+      {
+        const std::uint32_t n = active[i];
+        unsigned mask = 0;
+        for (int c = 0; c < 8; ++c)
+        {
+          mask |= tree.CornerInside(n, c) ? (1u << c) : 0u;
+        }
+        verdicts[i] = Classify(tree.Expressions[n], prims,
+          grid.CellBox(level, tree.Nodes[n].Ijk), mask, diagonal, params.HausdorffTolerance);
+      }
+    });
+
+    // 3. Apply verdicts; limits turn splits into unresolved leaves.
+    std::size_t splits = 0;
+    for (const CellVerdict& v : verdicts)
+    {
+      splits += v.Kind == Verdict::Split ? 1 : 0;
+    }
+    const bool atDepthLimit = level >= grid.MaxDepth;
+    const bool atCellLimit =
+      !atDepthLimit && tree.Nodes.size() + 8 * splits > params.MaximumNumberOfCells;
+    result.DepthLimitReached |= atDepthLimit && splits > 0;
+    result.CellLimitReached |= atCellLimit && splits > 0;
+
+    std::vector<std::uint32_t> parents;
+    for (std::size_t i = 0; i < active.size(); ++i)
+    {
+      const std::uint32_t n = active[i];
+      OctreeNode& node = tree.Nodes[n];
+      const CellVerdict& v = verdicts[i];
+      if (v.Kind == Verdict::Pass)
+      {
+        node.State = CellState::Surface;
+        ++result.SurfaceCells;
+      }
+      else if (v.Kind == Verdict::Constant)
+      {
+        node.State = StateOf(v.Sign);
+        tree.Expressions[n].reset();
+      }
+      else if (atDepthLimit || atCellLimit)
+      {
+        node.State = CellState::Unresolved;
+        node.Reason = SplitReason::LimitReached;
+        node.FailedTest = v.Reason;
+        ++result.UnresolvedCells;
+        ++result.UnresolvedByReason[static_cast<int>(v.Reason)];
+      }
+      else
+      {
+        node.State = CellState::Refined;
+        node.Reason = v.Reason;
+        ++result.SplitsByReason[static_cast<int>(v.Reason)];
+        parents.push_back(n);
+      }
+    }
+
+    // 4. Children of split cells, each with the parent's expression pruned to it.
+    const std::size_t first = tree.Nodes.size();
+    tree.Nodes.resize(first + 8 * parents.size());
+    tree.Expressions.resize(tree.Nodes.size());
+    for (std::size_t i = 0; i < parents.size(); ++i)
+    {
+      tree.Nodes[parents[i]].FirstChild = static_cast<std::int32_t>(first + 8 * i);
+    }
+    parallelFor(parents.size(), [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i)
+      {
+        const OctreeNode& parent = tree.Nodes[parents[i]];
+        const CsgExpressionPtr& parentExpression = tree.Expressions[parents[i]];
+        for (int c = 0; c < 8; ++c)
+        {
+          const std::size_t ci = first + 8 * i + static_cast<std::size_t>(c);
+          OctreeNode& child = tree.Nodes[ci];
+          child.Level = static_cast<std::uint8_t>(level + 1);
+          for (int a = 0; a < 3; ++a)
+          {
+            child.Ijk[a] = 2 * parent.Ijk[a] + ((c >> a) & 1);
+          }
+          const auto pruned =
+            CsgExpression::Prune(parentExpression, grid.CellBox(level + 1, child.Ijk), prims);
+          if (pruned.Sign == RegionSign::Mixed)
+          {
+            child.State = CellState::Surface;
+            tree.Expressions[ci] = pruned.Expression;
+          }
+          else
+          {
+            child.State = StateOf(pruned.Sign);
+          }
+        }
+      }
+    });
+    active.clear();
+    for (std::size_t i = 0; i < parents.size(); ++i)
+    {
+      tree.Expressions[parents[i]].reset();
+      for (int c = 0; c < 8; ++c)
+      {
+        const std::size_t ci = first + 8 * i + static_cast<std::size_t>(c);
+        if (tree.Nodes[ci].State == CellState::Surface)
+        {
+          active.push_back(static_cast<std::uint32_t>(ci));
+        }
+      }
+    }
+  }
+  if (progress)
+  {
+    progress(1.0);
+  }
+  return result;
+}
+
+} // namespace tpc

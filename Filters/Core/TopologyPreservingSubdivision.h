@@ -1,0 +1,66 @@
+// The topology preserving subdivision (paper 5.3): refine an octree until
+// every cell that meets the surface is MC-compatible (not complex, star-shaped
+// w.r.t. its voxel and faces) and no larger than the Hausdorff tolerance.
+//
+// Breadth-first, one level at a time: each level is a parallel loop over the
+// cells that still meet the surface. Cells whose pruned expression has a
+// definite sign are leaves at once, whatever their size - the work follows the
+// surface, not the volume. MaximumDepth and MaximumNumberOfCells only stop
+// runaway refinement (tangential contact never passes the tests, 5.3.3); cells
+// stopped by them are marked Unresolved and the result says the guarantee is
+// lost.
+#pragma once
+
+#include "AdaptiveOctree.h"
+#include "CsgExpression.h"
+#include "Parallel.h"
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace tpc
+{
+
+/// The solid to contour: primitives combined by a CSG expression.
+struct ImplicitScene
+{
+  std::vector<Quadric> Primitives;
+  CsgExpressionPtr Expression;
+};
+
+struct SubdivisionParameters
+{
+  /// Absolute two-sided Hausdorff bound: every surface cell's diagonal is <= it.
+  double HausdorffTolerance = 0.01;
+  int MaximumDepth = 12;
+  std::size_t MaximumNumberOfCells = 20000000;
+};
+
+struct SubdivisionResult
+{
+  AdaptiveOctree Octree;
+  bool Aborted = false;
+  bool DepthLimitReached = false;
+  bool CellLimitReached = false;
+  std::size_t SurfaceCells = 0;
+  std::size_t UnresolvedCells = 0;
+  /// Number of cells split for each SplitReason (and leaves left unresolved
+  /// with that failing test, in UnresolvedByReason).
+  std::array<std::size_t, 10> SplitsByReason{};
+  std::array<std::size_t, 10> UnresolvedByReason{};
+};
+
+/// Chooses the root grid: cubic root cells covering `domain`, sized so that
+/// some level has cells whose diagonal is exactly the tolerance (no finer
+/// than needed), and the lattice depth MaximumDepth.
+RootGrid MakeRootGrid(const Box3& domain, double hausdorffTolerance, int maximumDepth);
+
+/// Largest MaximumDepth the lattice supports for a root grid of `dims`.
+int MaximumSupportedDepth(const int dims[3]);
+
+SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
+  const RootGrid& grid, const SubdivisionParameters& parameters,
+  const ParallelFor& parallelFor = SequentialFor, const ProgressCallback& progress = nullptr);
+
+} // namespace tpc

@@ -1,0 +1,154 @@
+// Small fixed-size geometry used everywhere in the core: points/vectors and
+// closed axis-aligned boxes (a box may be degenerate: a face or an edge).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace tpc
+{
+
+struct Vec3
+{
+  double x[3] = { 0.0, 0.0, 0.0 };
+
+  Vec3() = default;
+  Vec3(double a, double b, double c)
+    : x{ a, b, c }
+  {
+  }
+  double& operator[](int i) { return x[i]; }
+  double operator[](int i) const { return x[i]; }
+
+  Vec3 operator+(const Vec3& o) const { return { x[0] + o[0], x[1] + o[1], x[2] + o[2] }; }
+  Vec3 operator-(const Vec3& o) const { return { x[0] - o[0], x[1] - o[1], x[2] - o[2] }; }
+  Vec3 operator*(double s) const { return { x[0] * s, x[1] * s, x[2] * s }; }
+  Vec3& operator+=(const Vec3& o)
+  {
+    x[0] += o[0];
+    x[1] += o[1];
+    x[2] += o[2];
+    return *this;
+  }
+};
+
+inline double Dot(const Vec3& a, const Vec3& b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+inline Vec3 Cross(const Vec3& a, const Vec3& b)
+{
+  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+}
+
+inline double Norm(const Vec3& a)
+{
+  return std::sqrt(Dot(a, a));
+}
+
+inline Vec3 Normalized(const Vec3& a)
+{
+  const double n = Norm(a);
+  return n > 0.0 ? a * (1.0 / n) : a;
+}
+
+/// A closed axis-aligned box [lo, hi]. Degenerate boxes (lo == hi on some
+/// axes) describe cell faces and edges.
+struct Box3
+{
+  Vec3 lo;
+  Vec3 hi;
+
+  Vec3 Center() const { return (lo + hi) * 0.5; }
+  double Width(int axis) const { return hi[axis] - lo[axis]; }
+  double Diagonal() const { return Norm(hi - lo); }
+  bool Contains(const Vec3& p) const
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      if (p[a] < lo[a] || p[a] > hi[a])
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+  Vec3 Clamp(const Vec3& p) const
+  {
+    return { std::clamp(p[0], lo[0], hi[0]), std::clamp(p[1], lo[1], hi[1]),
+      std::clamp(p[2], lo[2], hi[2]) };
+  }
+  /// Corner `c` (bit a of c chooses hi on axis a).
+  Vec3 Corner(int c) const
+  {
+    return { (c & 1) ? hi[0] : lo[0], (c & 2) ? hi[1] : lo[1], (c & 4) ? hi[2] : lo[2] };
+  }
+};
+
+/// Bounding box of a solid. Unbounded directions hold -inf/+inf.
+struct SolidBounds
+{
+  bool Empty = false; ///< the solid is provably empty
+  Box3 Box{ { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL }, { HUGE_VAL, HUGE_VAL, HUGE_VAL } };
+
+  bool Bounded() const
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      if (!std::isfinite(Box.lo[a]) || !std::isfinite(Box.hi[a]))
+      {
+        return false;
+      }
+    }
+    return true;
+  }
+  static SolidBounds Everything() { return SolidBounds{}; }
+  static SolidBounds Nothing()
+  {
+    SolidBounds b;
+    b.Empty = true;
+    return b;
+  }
+  /// Union: hull of the boxes.
+  static SolidBounds Hull(const SolidBounds& a, const SolidBounds& b)
+  {
+    if (a.Empty)
+    {
+      return b;
+    }
+    if (b.Empty)
+    {
+      return a;
+    }
+    SolidBounds r;
+    for (int i = 0; i < 3; ++i)
+    {
+      r.Box.lo[i] = std::min(a.Box.lo[i], b.Box.lo[i]);
+      r.Box.hi[i] = std::max(a.Box.hi[i], b.Box.hi[i]);
+    }
+    return r;
+  }
+  /// Intersection: overlap of the boxes.
+  static SolidBounds Overlap(const SolidBounds& a, const SolidBounds& b)
+  {
+    if (a.Empty || b.Empty)
+    {
+      return Nothing();
+    }
+    SolidBounds r;
+    for (int i = 0; i < 3; ++i)
+    {
+      r.Box.lo[i] = std::max(a.Box.lo[i], b.Box.lo[i]);
+      r.Box.hi[i] = std::min(a.Box.hi[i], b.Box.hi[i]);
+      if (r.Box.lo[i] > r.Box.hi[i])
+      {
+        return Nothing();
+      }
+    }
+    return r;
+  }
+};
+
+} // namespace tpc
