@@ -1,15 +1,23 @@
 #include "StarShapedTest.h"
 
+#include "SymmetricEigen.h"
+
 #include <cmath>
 
 namespace tpc
 {
 namespace
 {
-constexpr int VerificationDepth = 2;
+constexpr int VerificationDepth = 4;
+constexpr int VerificationBudget = 200; // sub-boxes per leaf and witness
 
-bool VerifyLeaf(const Quadric& q, int sigma, const StarWitness& w, const Box3& box, int depth)
+bool VerifyLeaf(
+  const Quadric& q, int sigma, const StarWitness& w, const Box3& box, int depth, int& budget)
 {
+  if (--budget < 0)
+  {
+    return false;
+  }
   Interval f = q.Enclose(box);
   if (sigma < 0)
   {
@@ -44,7 +52,7 @@ bool VerifyLeaf(const Quadric& q, int sigma, const StarWitness& w, const Box3& b
       const double mid = 0.5 * (box.lo[a] + box.hi[a]);
       ((piece >> k) & 1 ? sub.lo[a] : sub.hi[a]) = mid;
     }
-    if (!VerifyLeaf(q, sigma, w, sub, depth - 1))
+    if (!VerifyLeaf(q, sigma, w, sub, depth - 1, budget))
     {
       return false;
     }
@@ -136,6 +144,31 @@ Vec3 MaximinDirection(const std::vector<Vec3>& normals)
   return u;
 }
 
+/// The critical point of a leaf's quadric nearest the box centre (restricted
+/// to the face plane for a face): the centre of a sphere or ellipsoid, the
+/// nearest axis point of a cylinder, the centre of a conic section.
+bool CriticalPoint(const Quadric& q, const Box3& box, int planeAxis, Vec3& point)
+{
+  const auto& a = q.Coefficients();
+  const double hessian[3][3] = { { 2 * a[0], a[3], a[5] }, { a[3], 2 * a[1], a[4] },
+    { a[5], a[4], 2 * a[2] } };
+  const Vec3 c = box.Center();
+  const Vec3 g = q.Gradient(c);
+  double m[3][3], rhs[3], delta[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      m[i][j] = (i == planeAxis || j == planeAxis) ? (i == j ? 1.0 : 0.0) : hessian[i][j];
+    }
+    rhs[i] = i == planeAxis ? 0.0 : -g[i];
+  }
+  SolveTruncated(m, rhs, 1e-9, delta);
+  point = c + Vec3(delta[0], delta[1], delta[2]);
+  return std::isfinite(point[0]) && std::isfinite(point[1]) && std::isfinite(point[2]) &&
+    Norm(Vec3(delta[0], delta[1], delta[2])) > 0.0;
+}
+
 bool IsStarShaped(const CsgExpressionPtr& expression, const std::vector<Quadric>& prims,
   const Box3& box, int planeAxis)
 {
@@ -156,13 +189,12 @@ bool IsStarShaped(const CsgExpressionPtr& expression, const std::vector<Quadric>
   const double planeValue = planeAxis >= 0 ? box.lo[planeAxis] : 0.0;
   for (const CsgLeaf& leaf : leaves)
   {
+    // Solids convex around a centre (spheres, ellipsoids, rods) are seen
+    // whole from it; holes (sigma < 0) are seen from behind their wall.
     Vec3 center;
-    if (leaf.Sigma > 0 && prims[leaf.Primitive].EllipsoidCenter(center))
+    if (leaf.Sigma > 0 && !prims[leaf.Primitive].IsLinear() &&
+      CriticalPoint(prims[leaf.Primitive], box, planeAxis, center))
     {
-      if (planeAxis >= 0)
-      {
-        center[planeAxis] = planeValue;
-      }
       candidates.push_back({ center, 1.0 });
     }
   }
@@ -195,7 +227,8 @@ bool VerifyStarWitness(const CsgExpression& expression, const std::vector<Quadri
 {
   for (const CsgLeaf& leaf : expression.Leaves())
   {
-    if (!VerifyLeaf(primitives[leaf.Primitive], leaf.Sigma, witness, box, refinementDepth))
+    int budget = VerificationBudget;
+    if (!VerifyLeaf(primitives[leaf.Primitive], leaf.Sigma, witness, box, refinementDepth, budget))
     {
       return false;
     }

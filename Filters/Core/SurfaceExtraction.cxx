@@ -1,6 +1,7 @@
 #include "SurfaceExtraction.h"
 
 #include "EdgeCrossings.h"
+#include "SymmetricEigen.h"
 
 #include <algorithm>
 #include <cmath>
@@ -341,61 +342,6 @@ private:
 
 // --- vertex placement ------------------------------------------------------
 
-/// Eigen-decomposition of a symmetric 3x3 matrix (cyclic Jacobi).
-void SymmetricEigen(double a[3][3], double vectors[3][3], double values[3])
-{
-  for (int i = 0; i < 3; ++i)
-  {
-    for (int j = 0; j < 3; ++j)
-    {
-      vectors[i][j] = i == j ? 1.0 : 0.0;
-    }
-  }
-  for (int sweep = 0; sweep < 20; ++sweep)
-  {
-    const double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
-    if (off < 1e-30)
-    {
-      break;
-    }
-    for (int p = 0; p < 2; ++p)
-    {
-      for (int q = p + 1; q < 3; ++q)
-      {
-        if (std::fabs(a[p][q]) < 1e-300)
-        {
-          continue;
-        }
-        const double theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
-        const double t = (theta >= 0 ? 1.0 : -1.0) / (std::fabs(theta) + std::sqrt(theta * theta + 1.0));
-        const double c = 1.0 / std::sqrt(t * t + 1.0), s = t * c;
-        for (int k = 0; k < 3; ++k)
-        {
-          const double akp = a[k][p], akq = a[k][q];
-          a[k][p] = c * akp - s * akq;
-          a[k][q] = s * akp + c * akq;
-        }
-        for (int k = 0; k < 3; ++k)
-        {
-          const double apk = a[p][k], aqk = a[q][k];
-          a[p][k] = c * apk - s * aqk;
-          a[q][k] = s * apk + c * aqk;
-        }
-        for (int k = 0; k < 3; ++k)
-        {
-          const double vkp = vectors[k][p], vkq = vectors[k][q];
-          vectors[k][p] = c * vkp - s * vkq;
-          vectors[k][q] = s * vkp + c * vkq;
-        }
-      }
-    }
-  }
-  for (int i = 0; i < 3; ++i)
-  {
-    values[i] = a[i][i];
-  }
-}
-
 bool FanIsConsistent(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, const Vec3& c)
 {
   const std::size_t m = pts.size();
@@ -441,26 +387,9 @@ Vec3 PlaceLoopVertex(const std::vector<Vec3>& pts, const std::vector<Vec3>& norm
       atb[i] += n[i] * d;
     }
   }
-  double vec[3][3], val[3];
-  SymmetricEigen(ata, vec, val);
-  const double largest = std::max({ std::fabs(val[0]), std::fabs(val[1]), std::fabs(val[2]) });
+  // Truncated pseudo-inverse: along flat directions stay at the centroid.
   Vec3 delta;
-  for (int k = 0; k < 3; ++k)
-  {
-    if (largest <= 0.0 || std::fabs(val[k]) < 0.1 * largest)
-    {
-      continue; // truncated pseudo-inverse: stay near the centroid along flat directions
-    }
-    double proj = 0.0;
-    for (int i = 0; i < 3; ++i)
-    {
-      proj += vec[i][k] * atb[i];
-    }
-    for (int i = 0; i < 3; ++i)
-    {
-      delta[i] += vec[i][k] * proj / val[k];
-    }
-  }
+  SolveTruncated(ata, atb, 0.1, delta.x);
   const Vec3 qef = cell.Clamp(m + delta);
   if (FanIsConsistent(pts, normals, qef))
   {

@@ -1,0 +1,27 @@
+// Adapter: the core's adaptive octree -> vtkHyperTreeGrid with cell data
+// "Depth", "SplitReason", "CellState" and "FailedTest".
+#ifndef OctreeToHyperTreeGrid_h
+#define OctreeToHyperTreeGrid_h
+
+#include "AdaptiveOctree.h"
+
+#include "vtkType.h"
+
+#include <vector>
+
+class vtkHyperTreeGrid;
+
+namespace tpc
+{
+namespace vtkadapter
+{
+
+/// Fills `grid`. `nodeToCell[n]` receives the HTG cell (global node) index of
+/// octree node n.
+void ConvertOctree(
+  const AdaptiveOctree& octree, vtkHyperTreeGrid* grid, std::vector<vtkIdType>& nodeToCell);
+
+} // namespace vtkadapter
+} // namespace tpc
+
+#endif

@@ -1,0 +1,406 @@
+#include "vtkTopologyPreservingContour.h"
+
+#include "ImplicitFunctionToCsg.h"
+#include "OctreeToHyperTreeGrid.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataObject.h"
+#include "vtkDemandDrivenPipeline.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkHyperTreeGrid.h"
+#include "vtkIdTypeArray.h"
+#include "vtkImplicitFunction.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+
+#include "SurfaceExtraction.h"
+#include "TopologyPreservingSubdivision.h"
+#include "TopologyReport.h"
+
+#include <cmath>
+#include <sstream>
+
+vtkStandardNewMacro(vtkTopologyPreservingContour);
+vtkCxxSetObjectMacro(vtkTopologyPreservingContour, ImplicitFunction, vtkImplicitFunction);
+
+namespace
+{
+void ParallelForSMP(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body)
+{
+  vtkSMPTools::For(0, static_cast<vtkIdType>(count),
+    [&](vtkIdType begin, vtkIdType end) {
+      body(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
+    });
+}
+
+struct Report
+{
+  long long Components = 0;
+  long long Genus = -1;
+  long long Euler = 0;
+  int Guaranteed = 0;
+  long long Unresolved = 0;
+  int Closed = 0;
+  int Manifold = 0;
+  double HausdorffBound = 0.0;
+};
+
+void AddReport(vtkDataObject* output, const Report& r)
+{
+  vtkFieldData* fd = output->GetFieldData();
+  auto addInt = [fd](const char* name, long long v) {
+    vtkNew<vtkIntArray> a;
+    a->SetName(name);
+    a->InsertNextValue(static_cast<int>(v));
+    fd->AddArray(a);
+  };
+  addInt("Components", r.Components);
+  addInt("Genus", r.Genus);
+  addInt("EulerCharacteristic", r.Euler);
+  addInt("TopologyGuaranteed", r.Guaranteed);
+  addInt("UnresolvedCells", r.Unresolved);
+  addInt("Closed", r.Closed);
+  addInt("Manifold", r.Manifold);
+  vtkNew<vtkDoubleArray> h;
+  h->SetName("HausdorffBound");
+  h->InsertNextValue(r.HausdorffBound);
+  fd->AddArray(h);
+}
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkTopologyPreservingContour::vtkTopologyPreservingContour()
+{
+  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfOutputPorts(2);
+}
+
+vtkTopologyPreservingContour::~vtkTopologyPreservingContour()
+{
+  this->SetImplicitFunction(nullptr);
+}
+
+vtkMTimeType vtkTopologyPreservingContour::GetMTime()
+{
+  vtkMTimeType t = this->Superclass::GetMTime();
+  if (this->ImplicitFunction)
+  {
+    t = std::max(t, this->ImplicitFunction->GetMTime());
+  }
+  return t;
+}
+
+int vtkTopologyPreservingContour::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  info->Set(vtkAlgorithm::INPUT_IS_REPEATABLE(), 1);
+  return 1;
+}
+
+int vtkTopologyPreservingContour::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 0 ? "vtkHyperTreeGrid" : "vtkPolyData");
+  return 1;
+}
+
+vtkHyperTreeGrid* vtkTopologyPreservingContour::GetGridOutput()
+{
+  return vtkHyperTreeGrid::SafeDownCast(this->GetOutputDataObject(0));
+}
+
+vtkPolyData* vtkTopologyPreservingContour::GetSurfaceOutput()
+{
+  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
+}
+
+vtkTypeBool vtkTopologyPreservingContour::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inInfo, vtkInformationVector* outInfo)
+{
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
+  {
+    return this->RequestData(request, inInfo, outInfo);
+  }
+  return this->Superclass::ProcessRequest(request, inInfo, outInfo);
+}
+
+//------------------------------------------------------------------------------
+int vtkTopologyPreservingContour::RequestData(
+  vtkInformation*, vtkInformationVector** inInfo, vtkInformationVector* outInfo)
+{
+  vtkHyperTreeGrid* gridOut = vtkHyperTreeGrid::GetData(outInfo, 0);
+  vtkPolyData* surfaceOut = vtkPolyData::GetData(outInfo, 1);
+  if (!gridOut || !surfaceOut)
+  {
+    vtkErrorMacro("Output data objects are missing.");
+    return 0;
+  }
+  gridOut->Initialize();
+  surfaceOut->Initialize();
+  Report report;
+  AddReport(gridOut, report);
+  AddReport(surfaceOut, report);
+
+  // Mesh inputs.
+  const int connections = this->GetNumberOfInputConnections(0);
+  for (int i = 0; i < connections; ++i)
+  {
+    vtkPolyData* mesh = vtkPolyData::GetData(inInfo[0], i);
+    if (mesh && mesh->GetNumberOfCells() > 0)
+    {
+      vtkErrorMacro("Input " << i << " is a mesh (" << mesh->GetNumberOfCells()
+                             << " cells): closed-mesh solids are not supported yet. Use an "
+                                "ImplicitFunction (sphere, quadric, box, cylinder, plane or a "
+                                "vtkImplicitBoolean of them).");
+      return 1;
+    }
+  }
+  if (!this->ImplicitFunction)
+  {
+    vtkErrorMacro("No solid to contour: set an ImplicitFunction (the solid is where it is "
+                  "negative).");
+    return 1;
+  }
+
+  // The solid as primitives and a CSG term.
+  tpc::ImplicitScene scene;
+  tpc::CsgTerm term;
+  std::string error;
+  if (!tpc::vtkadapter::ConvertImplicitFunction(this->ImplicitFunction, scene.Primitives, term, error))
+  {
+    vtkErrorMacro("Unsupported ImplicitFunction: " << error << ".");
+    return 1;
+  }
+
+  // Domain.
+  const bool userBounds = this->Bounds[0] <= this->Bounds[1] &&
+    this->Bounds[2] <= this->Bounds[3] && this->Bounds[4] <= this->Bounds[5];
+  tpc::Box3 domain;
+  if (userBounds)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      domain.lo[a] = this->Bounds[2 * a];
+      domain.hi[a] = this->Bounds[2 * a + 1];
+    }
+  }
+  else
+  {
+    const tpc::SolidBounds sb = term.Bounds(scene.Primitives);
+    if (sb.Empty)
+    {
+      vtkWarningMacro("The solid is empty: nothing to contour.");
+      return 1;
+    }
+    if (!sb.Bounded())
+    {
+      vtkErrorMacro("The solid is unbounded (e.g. a plane or a cylinder is not intersected "
+                    "with a bounded solid): set Bounds to the region to contour.");
+      return 1;
+    }
+    domain = sb.Box;
+  }
+  const double diagonal = domain.Diagonal();
+  if (!(diagonal > 0.0) || !std::isfinite(diagonal))
+  {
+    vtkErrorMacro("The domain is degenerate (diagonal " << diagonal << "): check Bounds.");
+    return 1;
+  }
+
+  // Guard against subclasses whose evaluation the converter does not know.
+  {
+    tpc::Box3 sampleBox = domain;
+    for (int a = 0; a < 3; ++a)
+    {
+      sampleBox.lo[a] -= 0.1 * diagonal;
+      sampleBox.hi[a] += 0.1 * diagonal;
+    }
+    const int bad = tpc::vtkadapter::CountSignDisagreements(
+      this->ImplicitFunction, scene.Primitives, term, sampleBox);
+    if (bad > 0)
+    {
+      vtkErrorMacro("The ImplicitFunction (" << this->ImplicitFunction->GetClassName()
+                                             << ") evaluates differently from its description at "
+                                             << bad << " sample points: it is not supported.");
+      return 1;
+    }
+  }
+
+  const double tolerance = this->ToleranceIsRelative ? this->Tolerance * diagonal : this->Tolerance;
+  if (!(tolerance > 0.0) || !std::isfinite(tolerance))
+  {
+    vtkErrorMacro("Tolerance must be positive (got " << this->Tolerance << ").");
+    return 1;
+  }
+
+  tpc::Box3 rootDomain = domain;
+  if (userBounds)
+  {
+    // Clip to the domain and cap it: intersect with the box's six planes.
+    std::vector<tpc::CsgTerm> operands{ term };
+    for (int a = 0; a < 3; ++a)
+    {
+      tpc::Vec3 n, o;
+      n[a] = 1.0;
+      o[a] = domain.hi[a];
+      scene.Primitives.push_back(tpc::Quadric::Plane(o, n));
+      operands.push_back(tpc::CsgTerm::Primitive(static_cast<int>(scene.Primitives.size() - 1)));
+      n[a] = -1.0;
+      o[a] = domain.lo[a];
+      scene.Primitives.push_back(tpc::Quadric::Plane(o, n));
+      operands.push_back(tpc::CsgTerm::Primitive(static_cast<int>(scene.Primitives.size() - 1)));
+    }
+    term = tpc::CsgTerm::Combine(tpc::CsgTerm::Op::Intersection, std::move(operands));
+    for (int a = 0; a < 3; ++a)
+    {
+      rootDomain.lo[a] -= 1e-3 * diagonal;
+      rootDomain.hi[a] += 1e-3 * diagonal;
+    }
+  }
+  else
+  {
+    // A margin keeps the surface away from the grid's outer boundary.
+    for (int a = 0; a < 3; ++a)
+    {
+      rootDomain.lo[a] -= 0.05 * diagonal;
+      rootDomain.hi[a] += 0.05 * diagonal;
+    }
+  }
+  scene.Expression = tpc::CsgExpression::FromTerm(term);
+
+  tpc::SubdivisionParameters params;
+  params.HausdorffTolerance = tolerance;
+  params.MaximumDepth = this->MaximumDepth;
+  params.MaximumNumberOfCells = static_cast<std::size_t>(std::max<vtkIdType>(this->MaximumNumberOfCells, 8));
+  const tpc::RootGrid rootGrid = tpc::MakeRootGrid(rootDomain, tolerance, params.MaximumDepth);
+
+  auto progress = [this](double f) {
+    this->UpdateProgress(0.85 * f);
+    return this->GetAbortExecute() != 0;
+  };
+  tpc::SubdivisionResult sub =
+    tpc::RunTopologyPreservingSubdivision(scene, rootGrid, params, ParallelForSMP, progress);
+  if (sub.Aborted)
+  {
+    vtkWarningMacro("Aborted: outputs are empty.");
+    return 1;
+  }
+  const tpc::ExtractionResult extraction = tpc::ExtractSurface(sub.Octree, scene, ParallelForSMP);
+  this->UpdateProgress(0.95);
+  const tpc::TopologyReport topo = tpc::ComputeTopologyReport(extraction.Mesh);
+
+  // Grid output.
+  std::vector<vtkIdType> nodeToCell;
+  tpc::vtkadapter::ConvertOctree(sub.Octree, gridOut, nodeToCell);
+
+  // Surface output.
+  const tpc::TriangleMesh& mesh = extraction.Mesh;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.Points.size()));
+  vtkNew<vtkDoubleArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(static_cast<vtkIdType>(mesh.Points.size()));
+  for (std::size_t i = 0; i < mesh.Points.size(); ++i)
+  {
+    points->SetPoint(static_cast<vtkIdType>(i), mesh.Points[i].x);
+    normals->SetTypedTuple(static_cast<vtkIdType>(i), mesh.Normals[i].x);
+  }
+  vtkNew<vtkCellArray> triangles;
+  triangles->AllocateExact(static_cast<vtkIdType>(mesh.Triangles.size()),
+    static_cast<vtkIdType>(3 * mesh.Triangles.size()));
+  vtkNew<vtkIdTypeArray> gridCell;
+  gridCell->SetName("GridCell");
+  gridCell->SetNumberOfValues(static_cast<vtkIdType>(mesh.Triangles.size()));
+  for (std::size_t t = 0; t < mesh.Triangles.size(); ++t)
+  {
+    const vtkIdType ids[3] = { mesh.Triangles[t][0], mesh.Triangles[t][1], mesh.Triangles[t][2] };
+    triangles->InsertNextCell(3, ids);
+    gridCell->SetValue(static_cast<vtkIdType>(t), nodeToCell[mesh.TriangleCell[t]]);
+  }
+  surfaceOut->SetPoints(points);
+  surfaceOut->SetPolys(triangles);
+  surfaceOut->GetPointData()->SetNormals(normals);
+  surfaceOut->GetCellData()->AddArray(gridCell);
+
+  // Topology report.
+  for (const tpc::OctreeNode& n : sub.Octree.Nodes)
+  {
+    if (n.IsLeaf() && (n.State == tpc::CellState::Surface || n.State == tpc::CellState::Unresolved))
+    {
+      report.HausdorffBound = std::max(report.HausdorffBound, rootGrid.CellDiagonal(n.Level));
+    }
+  }
+  report.Components = topo.Components;
+  report.Genus = topo.Genus;
+  report.Euler = topo.EulerCharacteristic;
+  report.Unresolved = static_cast<long long>(sub.UnresolvedCells);
+  report.Closed = topo.Closed ? 1 : 0;
+  report.Manifold = topo.Manifold ? 1 : 0;
+  const bool empty = mesh.Triangles.empty();
+  report.Guaranteed = (sub.UnresolvedCells == 0 && extraction.InconsistentCells == 0 &&
+                        (empty || (topo.Closed && topo.Manifold && topo.Oriented)))
+    ? 1
+    : 0;
+  gridOut->GetFieldData()->Initialize();
+  surfaceOut->GetFieldData()->Initialize();
+  AddReport(gridOut, report);
+  AddReport(surfaceOut, report);
+
+  if (!report.Guaranteed)
+  {
+    std::ostringstream why;
+    why << "The topology guarantee does not hold: " << sub.UnresolvedCells
+        << " surface cell(s) were stopped by";
+    if (sub.DepthLimitReached)
+    {
+      why << " MaximumDepth (" << rootGrid.MaxDepth << ")";
+    }
+    if (sub.CellLimitReached)
+    {
+      why << " MaximumNumberOfCells (" << this->MaximumNumberOfCells << ")";
+    }
+    why << " with a test still failing:";
+    for (int r = 1; r < 10; ++r)
+    {
+      if (sub.UnresolvedByReason[r] > 0)
+      {
+        why << " " << tpc::SplitReasonName(static_cast<tpc::SplitReason>(r)) << " "
+            << sub.UnresolvedByReason[r] << ";";
+      }
+    }
+    why << " they are marked CellState=3 in the grid output. Tangential contact between "
+           "primitives never passes the tests; otherwise raise the limits.";
+    if (extraction.InconsistentCells > 0)
+    {
+      why << " " << extraction.InconsistentCells << " cell(s) gave inconsistent loops.";
+    }
+    vtkWarningMacro(<< why.str());
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkTopologyPreservingContour::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ImplicitFunction: " << this->ImplicitFunction << "\n";
+  os << indent << "Operation: " << this->Operation << "\n";
+  os << indent << "Bounds: " << this->Bounds[0] << " " << this->Bounds[1] << " " << this->Bounds[2]
+     << " " << this->Bounds[3] << " " << this->Bounds[4] << " " << this->Bounds[5] << "\n";
+  os << indent << "Tolerance: " << this->Tolerance << "\n";
+  os << indent << "ToleranceIsRelative: " << this->ToleranceIsRelative << "\n";
+  os << indent << "MaximumDepth: " << this->MaximumDepth << "\n";
+  os << indent << "MaximumNumberOfCells: " << this->MaximumNumberOfCells << "\n";
+}

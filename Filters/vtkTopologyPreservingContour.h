@@ -1,0 +1,175 @@
+/**
+ * @class   vtkTopologyPreservingContour
+ * @brief   Surface of a CSG solid with guaranteed topology, by adaptive subdivision.
+ *
+ * vtkTopologyPreservingContour implements Varadhan, Krishnan, Sriram and
+ * Manocha, "Topology Preserving Surface Extraction Using Adaptive
+ * Subdivision" (SGP 2004). It builds an adaptive octree over the solid's
+ * field in which every cell that meets the surface passes the paper's
+ * complex-cell test (complex voxel, face and edge; face and voxel sign
+ * ambiguity) and star-shaped test (w.r.t. the voxel and each face, proven with
+ * interval arithmetic), and is no larger than the tolerance. A Marching-Cubes-
+ * like extraction with crack patching then gives a closed, manifold,
+ * outward-oriented triangle surface with the same number of components and
+ * the same genus as the exact surface, within a two-sided Hausdorff distance
+ * of Tolerance.
+ *
+ * Inputs
+ * - Input port 0 (optional, repeatable): closed triangle meshes, one solid per
+ *   connection. (Meshes are not supported yet: a mesh input is reported as an
+ *   error.)
+ * - ImplicitFunction: vtkSphere, vtkQuadric, vtkBox, vtkCylinder, vtkPlane and
+ *   vtkImplicitBoolean trees of them (Union, Intersection, Difference), each
+ *   honouring its linear Transform. The solid is where the function is < 0.
+ * - Operation folds the input solids in connection order, then the implicit
+ *   function: ((S0 op S1) op ...) op F.
+ *
+ * Outputs
+ * - Port 0, vtkHyperTreeGrid: the adaptive grid. Cell data: "Depth" (level),
+ *   "SplitReason" (why the cell was split, see SplitReasons), "CellState"
+ *   (0 inside, 1 outside, 2 surface cell that passed every test, 3 surface cell
+ *   stopped by a limit, 4 refined) and "FailedTest" (for state 3, the test that
+ *   still failed, as a SplitReasons value).
+ * - Port 1, vtkPolyData: triangles with point "Normals" and cell data
+ *   "GridCell" (the hyper tree grid cell each triangle was extracted from).
+ * - Field data on both: "Components", "Genus", "EulerCharacteristic",
+ *   "TopologyGuaranteed" (1 only if every cell on the surface passed every
+ *   test), "UnresolvedCells" (surface cells stopped by a limit), "Closed",
+ *   "Manifold", "HausdorffBound" (proven bound: largest surface-cell diagonal).
+ *
+ * When the guarantee cannot be reached (tangential contact, depth or cell
+ * limit) the filter still outputs a closed manifold surface, sets
+ * TopologyGuaranteed to 0, marks the cells (CellState 3, SplitReason
+ * LIMIT_REACHED) and warns.
+ *
+ * Threads: the subdivision and extraction loops use vtkSMPTools; set
+ * VTK_SMP_BACKEND_IN_USE=STDThread (the default backend is sequential).
+ */
+#ifndef vtkTopologyPreservingContour_h
+#define vtkTopologyPreservingContour_h
+
+#include "vtkAlgorithm.h"
+#include "vtkTopologyPreservingFiltersModule.h" // For export macro
+
+class vtkImplicitFunction;
+class vtkHyperTreeGrid;
+class vtkPolyData;
+
+class VTKTOPOLOGYPRESERVINGFILTERS_EXPORT vtkTopologyPreservingContour : public vtkAlgorithm
+{
+public:
+  static vtkTopologyPreservingContour* New();
+  vtkTypeMacro(vtkTopologyPreservingContour, vtkAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// How the solids are combined.
+  enum Operations
+  {
+    UNION = 0,
+    INTERSECTION = 1,
+    DIFFERENCE = 2
+  };
+
+  /// Values of the "SplitReason" and "FailedTest" cell arrays.
+  enum SplitReasons
+  {
+    NOT_SPLIT = 0,
+    COMPLEX_VOXEL = 1,
+    COMPLEX_FACE = 2,
+    COMPLEX_EDGE = 3,
+    FACE_AMBIGUITY = 4,
+    VOXEL_AMBIGUITY = 5,
+    NOT_STAR_SHAPED_VOXEL = 6,
+    NOT_STAR_SHAPED_FACE = 7,
+    HAUSDORFF_SIZE = 8,
+    LIMIT_REACHED = 9
+  };
+
+  ///@{
+  /**
+   * The implicit function defining (or combined with) the solid; the solid is
+   * where it is negative. Default: none.
+   */
+  virtual void SetImplicitFunction(vtkImplicitFunction*);
+  vtkGetObjectMacro(ImplicitFunction, vtkImplicitFunction);
+  ///@}
+
+  ///@{
+  /**
+   * Operation combining the input solids and the implicit function.
+   * Default: UNION.
+   */
+  vtkSetClampMacro(Operation, int, UNION, DIFFERENCE);
+  vtkGetMacro(Operation, int);
+  void SetOperationToUnion() { this->SetOperation(UNION); }
+  void SetOperationToIntersection() { this->SetOperation(INTERSECTION); }
+  void SetOperationToDifference() { this->SetOperation(DIFFERENCE); }
+  ///@}
+
+  ///@{
+  /**
+   * Domain (xmin, xmax, ymin, ymax, zmin, zmax). The solid is clipped to it
+   * (and capped, so the surface stays closed). Default: invalid (xmin > xmax),
+   * meaning "derive from the inputs"; an unbounded solid (a plane, a cylinder)
+   * then needs explicit Bounds.
+   */
+  vtkSetVector6Macro(Bounds, double);
+  vtkGetVector6Macro(Bounds, double);
+  ///@}
+
+  ///@{
+  /**
+   * Two-sided Hausdorff bound epsilon between the exact surface and the
+   * output. Relative to the domain diagonal when ToleranceIsRelative is on
+   * (default), absolute otherwise. Default 0.01.
+   */
+  vtkSetMacro(Tolerance, double);
+  vtkGetMacro(Tolerance, double);
+  vtkSetMacro(ToleranceIsRelative, bool);
+  vtkGetMacro(ToleranceIsRelative, bool);
+  vtkBooleanMacro(ToleranceIsRelative, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Safety limits against runaway refinement (tangential contact never passes
+   * the tests). Cells stopped by them are marked and the guarantee flag is 0.
+   * MaximumDepth is clamped to 19. Defaults: 16 and 10 000 000.
+   */
+  vtkSetClampMacro(MaximumDepth, int, 0, 19);
+  vtkGetMacro(MaximumDepth, int);
+  vtkSetMacro(MaximumNumberOfCells, vtkIdType);
+  vtkGetMacro(MaximumNumberOfCells, vtkIdType);
+  ///@}
+
+  /// Outputs.
+  vtkHyperTreeGrid* GetGridOutput();
+  vtkPolyData* GetSurfaceOutput();
+
+  vtkMTimeType GetMTime() override;
+
+  vtkTypeBool ProcessRequest(
+    vtkInformation* request, vtkInformationVector** inInfo, vtkInformationVector* outInfo) override;
+
+protected:
+  vtkTopologyPreservingContour();
+  ~vtkTopologyPreservingContour() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+
+  vtkImplicitFunction* ImplicitFunction = nullptr;
+  int Operation = UNION;
+  double Bounds[6] = { 0.0, -1.0, 0.0, -1.0, 0.0, -1.0 };
+  double Tolerance = 0.01;
+  bool ToleranceIsRelative = true;
+  int MaximumDepth = 16;
+  vtkIdType MaximumNumberOfCells = 10000000;
+
+private:
+  vtkTopologyPreservingContour(const vtkTopologyPreservingContour&) = delete;
+  void operator=(const vtkTopologyPreservingContour&) = delete;
+};
+
+#endif

@@ -1,0 +1,59 @@
+// Helpers for tests: build CSG scenes of quadrics directly in the core.
+#pragma once
+
+#include "TopologyPreservingSubdivision.h"
+
+namespace tpctest
+{
+using tpc::CsgTerm;
+using tpc::Quadric;
+using tpc::Vec3;
+
+struct SceneBuilder
+{
+  tpc::ImplicitScene Scene;
+
+  CsgTerm Add(const Quadric& q)
+  {
+    Scene.Primitives.push_back(q);
+    return CsgTerm::Primitive(static_cast<int>(Scene.Primitives.size() - 1));
+  }
+  CsgTerm Sphere(const Vec3& c, double r) { return Add(Quadric::Sphere(c, r)); }
+  CsgTerm Ellipsoid(const Vec3& c, const Vec3& axes) { return Add(Quadric::Ellipsoid(c, axes)); }
+  CsgTerm Cylinder(const Vec3& c, const Vec3& axis, double r)
+  {
+    return Add(Quadric::Cylinder(c, axis, r));
+  }
+  CsgTerm Box(const Vec3& lo, const Vec3& hi)
+  {
+    std::vector<CsgTerm> planes;
+    for (int a = 0; a < 3; ++a)
+    {
+      Vec3 n, o;
+      n[a] = 1.0;
+      o[a] = hi[a];
+      planes.push_back(Add(Quadric::Plane(o, n)));
+      n[a] = -1.0;
+      o[a] = lo[a];
+      planes.push_back(Add(Quadric::Plane(o, n)));
+    }
+    return CsgTerm::Combine(CsgTerm::Op::Intersection, planes);
+  }
+  static CsgTerm Union(std::vector<CsgTerm> t) { return CsgTerm::Combine(CsgTerm::Op::Union, std::move(t)); }
+  static CsgTerm Intersection(std::vector<CsgTerm> t)
+  {
+    return CsgTerm::Combine(CsgTerm::Op::Intersection, std::move(t));
+  }
+  static CsgTerm Difference(std::vector<CsgTerm> t)
+  {
+    return CsgTerm::Combine(CsgTerm::Op::Difference, std::move(t));
+  }
+
+  /// Sets the scene's expression; returns the pruned-free expression.
+  tpc::CsgExpressionPtr Finish(const CsgTerm& t)
+  {
+    Scene.Expression = tpc::CsgExpression::FromTerm(t);
+    return Scene.Expression;
+  }
+};
+} // namespace tpctest

@@ -1,0 +1,184 @@
+// Quadric primitives: every enclosure (value, derivative, star condition)
+// contains sampled values over random boxes; exact signs agree with
+// quad-precision evaluation; composition with transforms and bounds are right.
+#include "Quadric.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using tpc::Box3;
+using tpc::Quadric;
+using tpc::Vec3;
+
+namespace
+{
+Quadric RandomQuadric(std::mt19937_64& rng)
+{
+  std::uniform_real_distribution<double> u(-2.0, 2.0);
+  std::array<double, 10> a;
+  for (double& c : a)
+  {
+    c = u(rng);
+  }
+  return Quadric(a);
+}
+
+Box3 RandomBox(std::mt19937_64& rng, double maxSize)
+{
+  std::uniform_real_distribution<double> u(-1.5, 1.5), s(0.0, 1.0);
+  Box3 b;
+  for (int a = 0; a < 3; ++a)
+  {
+    b.lo[a] = u(rng);
+    // Some boxes are degenerate on an axis (faces and edges).
+    b.hi[a] = b.lo[a] + (s(rng) < 0.2 ? 0.0 : s(rng) * maxSize);
+  }
+  return b;
+}
+
+Vec3 SampleIn(const Box3& b, std::mt19937_64& rng)
+{
+  std::uniform_real_distribution<double> t(0.0, 1.0);
+  Vec3 p;
+  for (int a = 0; a < 3; ++a)
+  {
+    p[a] = b.lo[a] + t(rng) * (b.hi[a] - b.lo[a]);
+  }
+  return b.Clamp(p);
+}
+
+std::vector<Quadric> TestQuadrics(std::mt19937_64& rng)
+{
+  std::vector<Quadric> q{ Quadric::Sphere({ 0.1, 0.2, 0.3 }, 0.5),
+    Quadric::Cylinder({ 0.0, 0.3, 0.0 }, { 1.0, 2.0, 0.5 }, 0.4),
+    Quadric::Plane({ 0.2, 0.0, 0.0 }, { 0.3, -0.4, 0.8 }),
+    Quadric::Ellipsoid({ 0.5, 0.5, 0.5 }, { 0.02, 0.04, 0.2 }) };
+  for (int i = 0; i < 20; ++i)
+  {
+    q.push_back(RandomQuadric(rng));
+  }
+  return q;
+}
+} // namespace
+
+TEST(Quadric, EnclosuresContainSampledValues)
+{
+  std::mt19937_64 rng(3);
+  const std::vector<Quadric> quadrics = TestQuadrics(rng);
+  std::size_t samples = 0;
+  for (const Quadric& q : quadrics)
+  {
+    for (int trial = 0; trial < 300; ++trial)
+    {
+      const Box3 box = RandomBox(rng, trial % 2 ? 0.05 : 1.0);
+      const tpc::Interval value = q.Enclose(box);
+      tpc::Interval derivative[3];
+      for (int a = 0; a < 3; ++a)
+      {
+        derivative[a] = q.EncloseDerivative(box, a);
+      }
+      const tpc::StarWitness finite{ SampleIn(RandomBox(rng, 3.0), rng), 1.0 };
+      const tpc::StarWitness direction{ { 0.3, -0.5, 0.8 }, 0.0 };
+      const tpc::Interval starFinite = q.EncloseStarCondition(box, finite, -1);
+      const tpc::Interval starDirection = q.EncloseStarCondition(box, direction, 1);
+      for (int s = 0; s < 20; ++s)
+      {
+        const Vec3 p = SampleIn(box, rng);
+        const double slack = 1e-12 * (1.0 + std::fabs(q.Value(p)));
+        ASSERT_LE(value.lo, q.Value(p) + slack);
+        ASSERT_GE(value.hi, q.Value(p) - slack);
+        const Vec3 g = q.Gradient(p);
+        for (int a = 0; a < 3; ++a)
+        {
+          ASSERT_LE(derivative[a].lo, g[a] + 1e-12);
+          ASSERT_GE(derivative[a].hi, g[a] - 1e-12);
+        }
+        const double hf = -tpc::Dot(g, p - finite.P);
+        const double hd = -tpc::Dot(g, direction.P);
+        ASSERT_LE(starFinite.lo, hf + 1e-9);
+        ASSERT_GE(starFinite.hi, hf - 1e-9);
+        ASSERT_LE(starDirection.lo, hd + 1e-12);
+        ASSERT_GE(starDirection.hi, hd - 1e-12);
+        ++samples;
+      }
+    }
+  }
+  EXPECT_EQ(samples, quadrics.size() * 300 * 20);
+}
+
+TEST(Quadric, CentredFormIsTightOnSmallBoxes)
+{
+  // The enclosure width shrinks like the box (first order), so refinement
+  // terminates away from tangencies.
+  const Quadric q = Quadric::Sphere({ 0, 0, 0 }, 1.0);
+  double previous = HUGE_VAL;
+  for (double h = 0.1; h > 1e-4; h *= 0.5)
+  {
+    const Box3 b{ { 1.0, 0.0, 0.0 }, { 1.0 + h, h, h } };
+    const double width = q.Enclose(b).Width();
+    EXPECT_LT(width, 4.5 * h * 1.01);
+    EXPECT_LT(width, previous);
+    previous = width;
+  }
+}
+
+TEST(Quadric, ExactSignMatchesQuadPrecision)
+{
+  std::mt19937_64 rng(5);
+  const Quadric sphere = Quadric::Sphere({ 0.0, 0.0, 0.0 }, 0.5);
+  // Lattice points exactly on the sphere are zero, hence outside by convention.
+  EXPECT_EQ(sphere.ExactSign({ 0.5, 0.0, 0.0 }), 0);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 5000; ++trial)
+  {
+    const Quadric q = Quadric({ u(rng), u(rng), u(rng), 0, 0, 0, u(rng), u(rng), u(rng), u(rng) });
+    const Vec3 p{ u(rng), u(rng), u(rng) };
+    __float128 v = q.Coefficients()[9];
+    for (int a = 0; a < 3; ++a)
+    {
+      v += static_cast<__float128>(q.Coefficients()[a]) * p[a] * p[a];
+      v += static_cast<__float128>(q.Coefficients()[6 + a]) * p[a];
+    }
+    const int expected = v > 0 ? 1 : (v < 0 ? -1 : 0);
+    ASSERT_EQ(q.ExactSign(p), expected);
+  }
+}
+
+TEST(Quadric, ComposedEvaluatesAtTheMappedPoint)
+{
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const Quadric q = RandomQuadric(rng);
+  // An affine map (rotation-ish with scale and translation), row-major.
+  const double m[16] = { 0.8, -0.6, 0.1, 0.3, 0.6, 0.8, 0.0, -0.2, 0.0, 0.1, 1.5, 0.7, 0, 0, 0, 1 };
+  const Quadric c = q.Composed(m);
+  for (int trial = 0; trial < 100; ++trial)
+  {
+    const Vec3 x{ u(rng), u(rng), u(rng) };
+    Vec3 y;
+    for (int i = 0; i < 3; ++i)
+    {
+      y[i] = m[4 * i] * x[0] + m[4 * i + 1] * x[1] + m[4 * i + 2] * x[2] + m[4 * i + 3];
+    }
+    EXPECT_NEAR(c.Value(x), q.Value(y), 1e-12);
+  }
+}
+
+TEST(Quadric, BoundsOfEllipsoidsAndHalfSpaces)
+{
+  const tpc::SolidBounds e = Quadric::Ellipsoid({ 1, 2, 3 }, { 0.5, 0.25, 2.0 }).Bounds();
+  ASSERT_TRUE(e.Bounded());
+  EXPECT_NEAR(e.Box.lo[0], 0.5, 1e-9);
+  EXPECT_NEAR(e.Box.hi[1], 2.25, 1e-9);
+  EXPECT_NEAR(e.Box.hi[2], 5.0, 1e-9);
+
+  const tpc::SolidBounds h = Quadric::Plane({ 0.0, 0.0, 0.7 }, { 0, 0, 1 }).Bounds();
+  EXPECT_FALSE(h.Bounded());
+  EXPECT_NEAR(h.Box.hi[2], 0.7, 1e-9);
+  EXPECT_TRUE(std::isinf(h.Box.lo[2]));
+
+  EXPECT_FALSE(Quadric::Cylinder({ 0, 0, 0 }, { 0, 0, 1 }, 1.0).Bounds().Bounded());
+  EXPECT_TRUE(Quadric::Sphere({ 0, 0, 0 }, -0.0).Bounds().Empty);
+}

@@ -1,0 +1,155 @@
+// The whole core pipeline (subdivision + extraction + report) on small
+// scenes: adaptivity, the two-sided Hausdorff bound, closed manifold output,
+// and what happens when a limit stops refinement.
+#include "SceneBuilder.h"
+#include "SurfaceExtraction.h"
+#include "TopologyReport.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using tpc::Box3;
+using tpc::Vec3;
+using tpctest::SceneBuilder;
+
+namespace
+{
+struct ContourRun
+{
+  tpc::SubdivisionResult Subdivision;
+  tpc::ExtractionResult Extraction;
+  tpc::TopologyReport Report;
+  double Tolerance = 0.0;
+};
+
+ContourRun Contour(const tpc::ImplicitScene& scene, const Box3& bounds, double relativeTolerance,
+  int maxDepth = 16)
+{
+  ContourRun r;
+  Box3 domain = bounds;
+  const double d = bounds.Diagonal();
+  for (int a = 0; a < 3; ++a)
+  {
+    domain.lo[a] -= 0.05 * d;
+    domain.hi[a] += 0.05 * d;
+  }
+  tpc::SubdivisionParameters p;
+  p.HausdorffTolerance = relativeTolerance * d;
+  p.MaximumDepth = maxDepth;
+  r.Tolerance = p.HausdorffTolerance;
+  const tpc::RootGrid grid = tpc::MakeRootGrid(domain, p.HausdorffTolerance, p.MaximumDepth);
+  r.Subdivision = tpc::RunTopologyPreservingSubdivision(scene, grid, p);
+  r.Extraction = tpc::ExtractSurface(r.Subdivision.Octree, scene);
+  r.Report = tpc::ComputeTopologyReport(r.Extraction.Mesh);
+  return r;
+}
+} // namespace
+
+TEST(Subdivision, SphereIsAdaptiveClosedAndWithinTolerance)
+{
+  SceneBuilder b;
+  const Vec3 c{ 0.1, 0.2, 0.3 };
+  const double radius = 0.5;
+  b.Finish(b.Sphere(c, radius));
+  const Box3 bounds{ c - Vec3(radius, radius, radius), c + Vec3(radius, radius, radius) };
+  const ContourRun r = Contour(b.Scene, bounds, 0.03);
+
+  EXPECT_EQ(r.Subdivision.UnresolvedCells, 0u);
+  EXPECT_EQ(r.Extraction.InconsistentCells, 0u);
+  EXPECT_TRUE(r.Report.Closed);
+  EXPECT_TRUE(r.Report.Manifold);
+  EXPECT_TRUE(r.Report.Oriented);
+  EXPECT_EQ(r.Report.Components, 1);
+  EXPECT_EQ(r.Report.Genus, 0);
+  EXPECT_EQ(r.Report.EulerCharacteristic, 2);
+  EXPECT_NEAR(r.Report.SignedVolume, 4.0 / 3.0 * M_PI * radius * radius * radius, 0.02);
+
+  // Adaptive: far from the surface cells stay coarse, and the tree is a tiny
+  // fraction of a uniform grid at the finest level.
+  int deepest = 0;
+  bool coarseEmptyLeaf = false;
+  for (const tpc::OctreeNode& n : r.Subdivision.Octree.Nodes)
+  {
+    deepest = std::max(deepest, static_cast<int>(n.Level));
+    coarseEmptyLeaf |= n.IsLeaf() && n.Level <= 3 &&
+      (n.State == tpc::CellState::Inside || n.State == tpc::CellState::Outside);
+  }
+  EXPECT_TRUE(coarseEmptyLeaf);
+  EXPECT_LT(static_cast<double>(r.Subdivision.Octree.Nodes.size()), 0.02 * std::pow(8.0, deepest));
+
+  // Two-sided Hausdorff distance <= tolerance: every vertex is within it of
+  // the sphere, and every sampled sphere point is within it of a vertex.
+  const auto& mesh = r.Extraction.Mesh;
+  for (const Vec3& p : mesh.Points)
+  {
+    ASSERT_LE(std::fabs(tpc::Norm(p - c) - radius), r.Tolerance);
+  }
+  std::mt19937_64 rng(2);
+  std::normal_distribution<double> g;
+  for (int s = 0; s < 300; ++s)
+  {
+    const Vec3 q = c + tpc::Normalized(Vec3(g(rng), g(rng), g(rng))) * radius;
+    double best = HUGE_VAL;
+    for (const Vec3& p : mesh.Points)
+    {
+      best = std::min(best, tpc::Norm(p - q));
+    }
+    ASSERT_LE(best, r.Tolerance);
+  }
+}
+
+TEST(Subdivision, BoxMinusCylinderHasGenusOne)
+{
+  SceneBuilder b;
+  b.Finish(SceneBuilder::Difference({ b.Box({ -0.5, -0.5, -0.3 }, { 0.5, 0.5, 0.3 }),
+    b.Cylinder({ 0.05, 0.02, 0 }, { 0, 0, 1 }, 0.2) }));
+  const ContourRun r = Contour(b.Scene, { { -0.5, -0.5, -0.3 }, { 0.5, 0.5, 0.3 } }, 0.05);
+  EXPECT_EQ(r.Subdivision.UnresolvedCells, 0u);
+  EXPECT_TRUE(r.Report.Manifold);
+  EXPECT_EQ(r.Report.Components, 1);
+  EXPECT_EQ(r.Report.Genus, 1);
+  EXPECT_GT(r.Report.SignedVolume, 0.0);
+}
+
+TEST(Subdivision, DepthLimitMarksCellsAndStillGivesAClosedManifold)
+{
+  // Two spheres 0.2 % of the diagonal apart need deep cells to separate; a
+  // depth limit of 4 stops well before.
+  SceneBuilder b;
+  const double gap = 0.002 * std::sqrt(3.0) * 2.0;
+  b.Finish(SceneBuilder::Union({ b.Sphere({ -0.5 - gap / 2, 0, 0 }, 0.5), b.Sphere({ 0.5 + gap / 2, 0, 0 }, 0.5) }));
+  const Box3 bounds{ { -1 - gap / 2, -0.5, -0.5 }, { 1 + gap / 2, 0.5, 0.5 } };
+  const ContourRun limited = Contour(b.Scene, bounds, 0.05, 4);
+  EXPECT_GT(limited.Subdivision.UnresolvedCells, 0u);
+  EXPECT_TRUE(limited.Subdivision.DepthLimitReached);
+  EXPECT_TRUE(limited.Report.Closed);
+  EXPECT_TRUE(limited.Report.Manifold);
+  std::size_t marked = 0;
+  for (const tpc::OctreeNode& n : limited.Subdivision.Octree.Nodes)
+  {
+    if (n.State == tpc::CellState::Unresolved)
+    {
+      EXPECT_EQ(n.Reason, tpc::SplitReason::LimitReached);
+      EXPECT_NE(n.FailedTest, tpc::SplitReason::None);
+      ++marked;
+    }
+  }
+  EXPECT_EQ(marked, limited.Subdivision.UnresolvedCells);
+
+  const ContourRun full = Contour(b.Scene, bounds, 0.05);
+  EXPECT_EQ(full.Subdivision.UnresolvedCells, 0u);
+  EXPECT_EQ(full.Report.Components, 2);
+}
+
+TEST(Subdivision, TangentialContactEndsAtTheLimitWithoutAGuarantee)
+{
+  // Paper 5.3.3: tangential contact never passes the tests.
+  SceneBuilder b;
+  b.Finish(SceneBuilder::Union({ b.Sphere({ -0.5, 0, 0 }, 0.5), b.Sphere({ 0.5, 0, 0 }, 0.5) }));
+  const ContourRun r = Contour(b.Scene, { { -1, -0.5, -0.5 }, { 1, 0.5, 0.5 } }, 0.05, 9);
+  EXPECT_GT(r.Subdivision.UnresolvedCells, 0u);
+  EXPECT_TRUE(r.Report.Closed);
+  EXPECT_TRUE(r.Report.Manifold);
+}
