@@ -52,6 +52,7 @@ struct Report
   int Closed = 0;
   int Manifold = 0;
   double HausdorffBound = 0.0;
+  double Tolerance = 0.0;
 };
 
 void AddReport(vtkDataObject* output, const Report& r)
@@ -74,6 +75,10 @@ void AddReport(vtkDataObject* output, const Report& r)
   h->SetName("HausdorffBound");
   h->InsertNextValue(r.HausdorffBound);
   fd->AddArray(h);
+  vtkNew<vtkDoubleArray> t;
+  t->SetName("AbsoluteTolerance");
+  t->InsertNextValue(r.Tolerance);
+  fd->AddArray(t);
 }
 } // namespace
 
@@ -341,6 +346,7 @@ int vtkTopologyPreservingContour::RequestData(
       report.HausdorffBound = std::max(report.HausdorffBound, rootGrid.CellDiagonal(n.Level));
     }
   }
+  report.Tolerance = tolerance;
   report.Components = topo.Components;
   report.Genus = topo.Genus;
   report.Euler = topo.EulerCharacteristic;
@@ -364,7 +370,7 @@ int vtkTopologyPreservingContour::RequestData(
         << " surface cell(s) were stopped by";
     if (sub.DepthLimitReached)
     {
-      why << " MaximumDepth (" << rootGrid.MaxDepth << ")";
+      why << " MaximumDepth (" << this->MaximumDepth << ")";
     }
     if (sub.CellLimitReached)
     {

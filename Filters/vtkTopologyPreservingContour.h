@@ -35,7 +35,8 @@
  * - Field data on both: "Components", "Genus", "EulerCharacteristic",
  *   "TopologyGuaranteed" (1 only if every cell on the surface passed every
  *   test), "UnresolvedCells" (surface cells stopped by a limit), "Closed",
- *   "Manifold", "HausdorffBound" (proven bound: largest surface-cell diagonal).
+ *   "Manifold", "HausdorffBound" (the proven two-sided bound: the largest
+ *   surface-cell diagonal) and "AbsoluteTolerance" (epsilon in world units).
  *
  * When the guarantee cannot be reached (tangential contact, depth or cell
  * limit) the filter still outputs a closed manifold surface, sets

@@ -4,12 +4,14 @@
 // CSG expression pruned to it (what the extraction evaluates).
 #pragma once
 
+#include "BoundaryLoops.h"
 #include "CsgExpression.h"
 #include "LatticeSignTable.h"
 #include "RootGrid.h"
 #include "SplitReason.h"
 
 #include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 namespace tpc
@@ -39,6 +41,26 @@ inline void CornerLattice(const RootGrid& grid, const OctreeNode& n, int c, std:
   }
 }
 
+/// A face of a cell: its low corner (lattice), normal axis and cell level.
+struct FaceKey
+{
+  PointKey Low = 0;
+  std::uint8_t Axis = 0;
+  std::uint8_t Level = 0;
+  bool operator==(const FaceKey& o) const { return Low == o.Low && Axis == o.Axis && Level == o.Level; }
+};
+
+struct FaceKeyHash
+{
+  std::size_t operator()(const FaceKey& k) const
+  {
+    return std::hash<std::uint64_t>()(k.Low * 0x9E3779B97F4A7C15ULL ^ (k.Axis * 64u + k.Level));
+  }
+};
+
+/// Face f (see CubeTopology.h) of node n.
+FaceKey FaceOf(const RootGrid& grid, const OctreeNode& n, int f);
+
 class AdaptiveOctree
 {
 public:
@@ -49,6 +71,20 @@ public:
   std::vector<CsgExpressionPtr> Expressions;
   /// Exact inside/outside at lattice corners of cells that met the surface.
   LatticeSignTable Signs;
+
+  /// Tiles of faces that were refined (FaceRefinement.h), for leaves that
+  /// passed the tests; faces not listed are a single tile.
+  std::unordered_map<FaceKey, std::vector<FaceTile>, FaceKeyHash> FaceRefinements;
+  /// Positions of face-refinement sample points on each lattice line (see
+  /// LineKey), sorted: the points every cell touching the line must use.
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> RefinementLines;
+
+  /// Fills RefinementLines from FaceRefinements.
+  void IndexRefinementPoints();
+  /// Refinement points strictly inside the lattice segment from `p` along
+  /// `axis` to coordinate `end`.
+  void RefinementPointsOn(const std::uint32_t p[3], int axis, std::uint32_t end,
+    std::vector<PointKey>& out) const;
 
   /// Index of the node at (level, ijk) if it exists, otherwise of the deepest
   /// existing ancestor (a leaf containing that position), or -1 outside the grid.

@@ -2,6 +2,7 @@
 
 #include "CubeTopology.h"
 #include "EdgeCrossings.h"
+#include "StarShapedTest.h"
 
 namespace tpc
 {
@@ -21,11 +22,13 @@ Box3 FaceBox(const Box3& cell, int face)
   return b;
 }
 
-RegionSign ProveConstantSign(const CsgExpressionPtr& expression,
-  const std::vector<Quadric>& primitives, const Box3& box, int depth)
+namespace
+{
+RegionSign ProveConstant(const CsgExpressionPtr& expression, const std::vector<Quadric>& primitives,
+  const Box3& box, int depth, int& budget)
 {
   const auto pruned = CsgExpression::Prune(expression, box, primitives);
-  if (pruned.Sign != RegionSign::Mixed || depth == 0)
+  if (pruned.Sign != RegionSign::Mixed || depth == 0 || --budget < 0)
   {
     return pruned.Sign;
   }
@@ -45,16 +48,9 @@ RegionSign ProveConstantSign(const CsgExpressionPtr& expression,
     {
       const int a = axes[k];
       const double mid = 0.5 * (box.lo[a] + box.hi[a]);
-      if ((piece >> k) & 1)
-      {
-        sub.lo[a] = mid;
-      }
-      else
-      {
-        sub.hi[a] = mid;
-      }
+      ((piece >> k) & 1 ? sub.lo[a] : sub.hi[a]) = mid;
     }
-    const RegionSign s = ProveConstantSign(pruned.Expression, primitives, sub, depth - 1);
+    const RegionSign s = ProveConstant(pruned.Expression, primitives, sub, depth - 1, budget);
     if (s == RegionSign::Mixed || (piece > 0 && s != common))
     {
       return RegionSign::Mixed;
@@ -63,49 +59,57 @@ RegionSign ProveConstantSign(const CsgExpressionPtr& expression,
   }
   return common;
 }
+} // namespace
 
-SplitReason SignAmbiguityTest(unsigned insideMask)
+RegionSign ProveConstantSign(const CsgExpressionPtr& expression,
+  const std::vector<Quadric>& primitives, const Box3& box, int depth, int budget)
 {
-  if (cube::HasFaceAmbiguity(insideMask))
+  return ProveConstant(expression, primitives, box, depth, budget);
+}
+
+SplitReason FaceCompatibilityTest(const CsgExpressionPtr& expression,
+  const std::vector<Quadric>& primitives, const Box3& face, int axis, const bool inside[4],
+  int* failingEdge)
+{
+  const bool change = inside[0] != inside[1] || inside[1] != inside[2] || inside[2] != inside[3];
+  if (!change)
+  {
+    return ProveConstantSign(expression, primitives, face, ConstantProofDepth, ConstantProofBudget) ==
+        RegionSign::Mixed
+      ? SplitReason::ComplexFace
+      : SplitReason::None;
+  }
+  if (inside[0] == inside[2] && inside[1] == inside[3])
   {
     return SplitReason::FaceAmbiguity;
   }
-  if (cube::HasVoxelAmbiguity(insideMask))
+  const int U = (axis + 1) % 3, V = (axis + 2) % 3;
+  const double u[4] = { face.lo[U], face.hi[U], face.hi[U], face.lo[U] };
+  const double v[4] = { face.lo[V], face.lo[V], face.hi[V], face.hi[V] };
+  for (int k = 0; k < 4; ++k)
   {
-    return SplitReason::VoxelAmbiguity;
-  }
-  return SplitReason::None;
-}
-
-SplitReason ComplexVoxelOrFaceTest(const ComplexCellQuery& q)
-{
-  if (q.InsideMask == 0 || q.InsideMask == 0xFF)
-  {
-    return SplitReason::ComplexVoxel;
-  }
-  for (int f = 0; f < 6; ++f)
-  {
-    if (!cube::FaceHasSignChange(q.InsideMask, f) &&
-      ProveConstantSign(q.Expression, q.Primitives, FaceBox(q.Cell, f), 1) == RegionSign::Mixed)
-    {
-      return SplitReason::ComplexFace;
-    }
-  }
-  return SplitReason::None;
-}
-
-SplitReason ComplexEdgeTest(const ComplexCellQuery& q)
-{
-  for (int e = 0; e < 12; ++e)
-  {
-    const int c0 = cube::EdgeCorner(e, 0), c1 = cube::EdgeCorner(e, 1);
-    const EdgeCrossingCount n = CountEdgeCrossings(q.Expression, q.Primitives, q.Cell.Corner(c0),
-      q.Cell.Corner(c1), cube::EdgeAxis(e), cube::Inside(q.InsideMask, c0),
-      cube::Inside(q.InsideMask, c1));
+    const int l = (k + 1) % 4;
+    Vec3 a = face.lo, b = face.lo;
+    a[U] = u[k];
+    a[V] = v[k];
+    b[U] = u[l];
+    b[V] = v[l];
+    const int along = u[k] != u[l] ? U : V;
+    const bool lowerIsA = a[along] < b[along];
+    const EdgeCrossingCount n = CountEdgeCrossings(expression, primitives, lowerIsA ? a : b,
+      lowerIsA ? b : a, along, lowerIsA ? inside[k] : inside[l], lowerIsA ? inside[l] : inside[k]);
     if (!n.Proven || n.Count >= 2)
     {
+      if (failingEdge)
+      {
+        *failingEdge = k;
+      }
       return SplitReason::ComplexEdge;
     }
+  }
+  if (!IsStarShapedWithRespectToFace(expression, primitives, face, axis))
+  {
+    return SplitReason::NotStarShapedFace;
   }
   return SplitReason::None;
 }

@@ -1,14 +1,15 @@
-// The complex-cell test (paper 4.2 and 5.3.1).
+// The complex-cell test (paper 4.2 and 5.3.1), face by face.
 //
-// A cell is complex if the surface meets its voxel or a face whose corners show
-// no sign change (complex voxel / face), crosses an edge more than once
-// (complex edge), or its corner signs are ambiguous for Marching Cubes (face or
-// voxel ambiguity). For polyhedra the paper answers "does the surface meet this
-// voxel/face" with max-norm distances; for our implicit primitives the same
-// question is answered conservatively by interval enclosures of the pruned CSG
-// expression: a box is free of the surface only if the enclosure proves a
-// single sign on it. Overestimation can only cause extra subdivision, never a
-// missed intersection.
+// A face is complex if the surface meets it but its corners show no sign
+// change, if an edge is crossed more than once, or if its corner signs
+// alternate (face ambiguity). For polyhedra the paper answers "does the
+// surface meet this face/voxel" with max-norm distances; for our implicit
+// primitives it is answered conservatively by interval enclosures of the
+// pruned CSG expression: a box is free of the surface only if a single sign is
+// proven on it. Overestimation can only cause extra refinement, never a missed
+// intersection. The voxel-level conditions (complex voxel, voxel ambiguity)
+// are decided from the loops the surface draws on the cell boundary
+// (BoundaryLoops.h).
 #pragma once
 
 #include "CsgExpression.h"
@@ -17,31 +18,32 @@
 namespace tpc
 {
 
-/// Sign of the field on a closed box, refining the box `depth` times (2^k
-/// pieces per refinement along its k non-degenerate axes) before giving up.
+/// Sign of the field on a closed box. Where the enclosure is not conclusive
+/// the box is split (along its non-degenerate axes) up to `depth` times,
+/// visiting at most `budget` pieces: near a CSG crease each primitive alone
+/// straddles zero although their union or intersection does not, and only
+/// smaller pieces separate them.
 RegionSign ProveConstantSign(const CsgExpressionPtr& expression,
-  const std::vector<Quadric>& primitives, const Box3& box, int depth);
+  const std::vector<Quadric>& primitives, const Box3& box, int depth, int budget = 1 << 30);
+
+/// Depth and budget used for "does the surface meet this voxel/face" proofs.
+constexpr int ConstantProofDepth = 6;
+constexpr int ConstantProofBudget = 64;
 
 /// Box of face f of a cell box.
 Box3 FaceBox(const Box3& cell, int face);
 
-struct ComplexCellQuery
-{
-  const CsgExpressionPtr& Expression; ///< pruned to the cell
-  const std::vector<Quadric>& Primitives;
-  Box3 Cell;
-  unsigned InsideMask = 0; ///< bit c: corner c inside
-};
-
-/// Ambiguous sign configurations: FaceAmbiguity, VoxelAmbiguity or None.
-SplitReason SignAmbiguityTest(unsigned insideMask);
-
-/// ComplexVoxel (no sign change at corners; the caller has already failed to
-/// prove the cell free of the surface), ComplexFace, or None.
-SplitReason ComplexVoxelOrFaceTest(const ComplexCellQuery& q);
-
-/// ComplexEdge if some edge is crossed more than once (or cannot be proven
-/// simple), else None.
-SplitReason ComplexEdgeTest(const ComplexCellQuery& q);
+/// The complex-cell and ambiguity tests of one (sub)face of a cell
+/// (paper 5.3.1, Lemma 1): returns ComplexFace (no sign change at its corners
+/// but the surface may meet it), FaceAmbiguity (alternating corners),
+/// ComplexEdge (an edge crossed more than once or not provably once),
+/// NotStarShapedFace (no verified 2-D witness), or None. `inside` gives the
+/// corner signs in the cyclic order (u0,v0), (u1,v0), (u1,v1), (u0,v1) with
+/// u = axis + 1, v = axis + 2 (mod 3). The expression must be valid on the face.
+/// For ComplexEdge, `failingEdge` (if given) receives k: the edge from corner
+/// k to corner k + 1 in that order.
+SplitReason FaceCompatibilityTest(const CsgExpressionPtr& expression,
+  const std::vector<Quadric>& primitives, const Box3& face, int axis, const bool inside[4],
+  int* failingEdge = nullptr);
 
 } // namespace tpc

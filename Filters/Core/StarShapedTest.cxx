@@ -80,9 +80,14 @@ void SampleNormals(const std::vector<CsgLeaf>& leaves, const std::vector<Quadric
     {
       Vec3 x = s == 0 ? c : (box.Corner(s - 1) + c) * 0.5;
       bool ok = true;
-      for (int it = 0; it < 4; ++it)
+      for (int it = 0; it < 6; ++it)
       {
-        const Vec3 g = q.Gradient(x);
+        // Newton step toward the zero set, within the face plane for a face.
+        Vec3 g = q.Gradient(x);
+        if (planeAxis >= 0)
+        {
+          g[planeAxis] = 0.0;
+        }
         const double gg = Dot(g, g);
         if (gg <= 0.0)
         {
@@ -90,10 +95,6 @@ void SampleNormals(const std::vector<CsgLeaf>& leaves, const std::vector<Quadric
           break;
         }
         x = x - g * (q.Value(x) / gg);
-        if (planeAxis >= 0)
-        {
-          x[planeAxis] = box.lo[planeAxis];
-        }
       }
       if (!ok || !grown.Contains(x))
       {
@@ -112,8 +113,10 @@ void SampleNormals(const std::vector<CsgLeaf>& leaves, const std::vector<Quadric
   }
 }
 
-/// Direction u maximizing min_k n_k . u, approximately (a few steps of moving
-/// toward the worst normal). Exactness is not needed: the result is verified.
+/// Direction u maximizing min_k n_k . u: the centre of the smallest cap of
+/// the sphere of directions holding all normals (Badoiu-Clarkson iteration:
+/// step toward the farthest normal with a shrinking step). Only a candidate;
+/// it is verified afterwards.
 Vec3 MaximinDirection(const std::vector<Vec3>& normals)
 {
   Vec3 u;
@@ -122,24 +125,33 @@ Vec3 MaximinDirection(const std::vector<Vec3>& normals)
     u += n;
   }
   u = Normalized(u);
-  for (int it = 0; it < 12; ++it)
+  if (Norm(u) == 0.0)
   {
-    double worst = 2.0;
-    const Vec3* w = nullptr;
+    u = normals.front();
+  }
+  for (int it = 1; it <= 100; ++it)
+  {
+    const Vec3* worst = &normals.front();
+    double lowest = 2.0;
     for (const Vec3& n : normals)
     {
       const double d = Dot(n, u);
-      if (d < worst)
+      if (d < lowest)
       {
-        worst = d;
-        w = &n;
+        lowest = d;
+        worst = &n;
       }
     }
-    if (!w || worst > 0.5)
+    if (it == 1 && lowest > 0.3)
+    {
+      break; // the mean is comfortably inside the cone: good enough
+    }
+    const Vec3 next = Normalized(u + (*worst - u) * (1.0 / (it + 1.0)));
+    if (Norm(next) == 0.0)
     {
       break;
     }
-    u = Normalized(u + *w * 0.5);
+    u = next;
   }
   return u;
 }

@@ -10,67 +10,86 @@ namespace tpc
 {
 namespace
 {
-/// A crossing is identified by the finest lattice sub-edge containing it:
-/// its lower endpoint and axis. `Upper` is the other endpoint's coordinate on
-/// that axis.
-using EdgeKey = std::uint64_t;
-
-struct Crossing
-{
-  EdgeKey Key = 0;
-  std::uint32_t Upper = 0;
-  bool LowerInside = false;
-};
-
-struct CellLoops
-{
-  std::vector<Crossing> Crossings; // loops, concatenated, in order
-  std::vector<std::uint32_t> LoopSizes;
-  bool Consistent = true;
-};
-
-struct FacePoint
-{
-  std::uint32_t U, V;
-  bool Inside;
-};
-
-/// Walks the boundary of one leaf cell and returns its surface loops.
-class CellBoundaryWalker
+/// Gathers the final samples on the boundary of one leaf: the tiles of each
+/// face from whichever side is finer (with their face refinements), every
+/// leaf corner and refinement point on its faces and edges - the same points
+/// every other cell touching them gathers.
+class CellBoundaryBuilder
 {
 public:
-  CellBoundaryWalker(const AdaptiveOctree& tree, std::size_t cell)
+  CellBoundaryBuilder(const AdaptiveOctree& tree, std::size_t cell)
     : Tree(tree)
     , Cell(cell)
     , Node(tree.Nodes[cell])
   {
-    this->Depth = tree.Grid.MaxDepth;
-    this->Shift = this->Depth - this->Node.Level;
-    this->Size = 1u << this->Shift;
-    for (int a = 0; a < 3; ++a)
-    {
-      this->Base[a] = this->Node.Ijk[a] << this->Shift;
-    }
   }
 
-  CellLoops Run()
+  CellBoundary Build()
   {
-    this->CollectPoints();
-    std::vector<std::pair<Crossing, Crossing>> segments;
+    CellBoundary b;
+    const int depth = this->Tree.Grid.MaxDepth;
+    const int shift = depth - this->Node.Level;
+    b.Size = 1u << shift;
+    for (int a = 0; a < 3; ++a)
+    {
+      b.Base[a] = this->Node.Ijk[a] << shift;
+    }
+    for (int c = 0; c < 8; ++c)
+    {
+      this->AddLeafCorner(b, this->Cell, c);
+    }
     for (int f = 0; f < 6; ++f)
     {
-      this->FaceSegments(f, segments);
+      this->FaceTiles(b, f);
     }
-    return AssembleLoops(segments);
+    this->EdgeNeighborPoints(b);
+    // Face-refinement points on every tile edge (T-junctions from refined
+    // faces anywhere around this cell).
+    std::vector<PointKey> extra;
+    for (int f = 0; f < 6; ++f)
+    {
+      const int axis = f / 2;
+      const int U = (axis + 1) % 3, V = (axis + 2) % 3;
+      const std::uint32_t plane = b.Base[axis] + (f % 2 ? b.Size : 0);
+      for (const FaceTile& t : b.Tiles[f])
+      {
+        // Bottom and top edges run along U, left and right along V.
+        const std::uint32_t starts[4][2] = { { t.U0, t.V0 }, { t.U0, t.V1 }, { t.U0, t.V0 },
+          { t.U1, t.V0 } };
+        for (int k = 0; k < 4; ++k)
+        {
+          std::uint32_t p[3];
+          p[axis] = plane;
+          p[U] = starts[k][0];
+          p[V] = starts[k][1];
+          const int along = k < 2 ? U : V;
+          this->Tree.RefinementPointsOn(p, along, k < 2 ? t.U1 : t.V1, extra);
+        }
+      }
+    }
+    for (const PointKey k : extra)
+    {
+      b.Points.emplace_back(k, this->Tree.Signs.Find(k) == 1);
+    }
+    return b;
   }
 
 private:
-  void AddLeafCorner(std::size_t leaf, int corner)
+  void AddLeafCorner(CellBoundary& b, std::size_t leaf, int corner) const
   {
     std::uint32_t p[3];
     CornerLattice(this->Tree.Grid, this->Tree.Nodes[leaf], corner, p);
     const PointKey key = MakePointKey(p[0], p[1], p[2]);
-    this->Points.emplace_back(key, this->Tree.PointInside(leaf, key));
+    b.Points.emplace_back(key, this->Tree.PointInside(leaf, key));
+  }
+
+  void AddTileCorners(CellBoundary& b, int axis, std::uint32_t plane, const FaceTile& t) const
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      const PointKey key = TileCorner(axis, plane, t, c);
+      b.Points.emplace_back(key, this->Tree.Signs.Find(key) == 1);
+    }
   }
 
   void CollectAdjacentLeaves(std::size_t node, int axisU, int bitU, int axisV, int bitV,
@@ -91,8 +110,8 @@ private:
     }
   }
 
-  /// The neighbour of this cell displaced by `offset` at the same level, if it
-  /// exists there and is refined (only then does it bring finer points).
+  /// The neighbour displaced by `offset` at this cell's level, if it exists
+  /// there and is refined (only then does it bring finer samples).
   std::int64_t RefinedNeighbor(const int offset[3]) const
   {
     std::int64_t ijk[3];
@@ -109,39 +128,57 @@ private:
     return (nn.Level == this->Node.Level && !nn.IsLeaf()) ? n : -1;
   }
 
-  void CollectPoints()
+  /// Tiles of the face of `leaf` on face f's side, refined if it was.
+  void AddFaceOfLeaf(CellBoundary& b, int f, std::size_t leaf, int leafFace) const
   {
+    const int axis = f / 2;
+    const std::uint32_t plane = b.Base[axis] + (f % 2 ? b.Size : 0);
+    const OctreeNode& q = this->Tree.Nodes[leaf];
+    const auto it = this->Tree.FaceRefinements.find(FaceOf(this->Tree.Grid, q, leafFace));
+    if (it != this->Tree.FaceRefinements.end())
+    {
+      for (const FaceTile& t : it->second)
+      {
+        b.Tiles[f].push_back(t);
+        this->AddTileCorners(b, axis, plane, t);
+      }
+      return;
+    }
+    const int shift = this->Tree.Grid.MaxDepth - q.Level;
+    const std::uint32_t u0 = q.Ijk[(axis + 1) % 3] << shift, v0 = q.Ijk[(axis + 2) % 3] << shift;
+    const FaceTile t{ u0, v0, u0 + (1u << shift), v0 + (1u << shift) };
+    b.Tiles[f].push_back(t);
     for (int c = 0; c < 8; ++c)
     {
-      this->AddLeafCorner(this->Cell, c);
+      if (((c >> axis) & 1) == leafFace % 2)
+      {
+        this->AddLeafCorner(b, leaf, c);
+      }
     }
-    // Tiles of each face: the face itself, or the leaves of the refined
-    // neighbour that touch it.
-    for (int f = 0; f < 6; ++f)
+  }
+
+  void FaceTiles(CellBoundary& b, int f) const
+  {
+    const int axis = f / 2, side = f % 2;
+    int offset[3] = { 0, 0, 0 };
+    offset[axis] = side ? 1 : -1;
+    const std::int64_t n = this->RefinedNeighbor(offset);
+    if (n < 0)
     {
-      const int axis = f / 2, side = f % 2;
-      int offset[3] = { 0, 0, 0 };
-      offset[axis] = side ? 1 : -1;
-      this->Tiles[f].clear();
-      const std::int64_t n = this->RefinedNeighbor(offset);
-      if (n < 0)
-      {
-        this->Tiles[f].push_back(this->Cell);
-        continue;
-      }
-      this->CollectAdjacentLeaves(static_cast<std::size_t>(n), axis, side ? 0 : 1, -1, 0, this->Tiles[f]);
-      for (const std::size_t leaf : this->Tiles[f])
-      {
-        for (int c = 0; c < 8; ++c)
-        {
-          if (((c >> axis) & 1) == (side ? 0 : 1))
-          {
-            this->AddLeafCorner(leaf, c);
-          }
-        }
-      }
+      this->AddFaceOfLeaf(b, f, this->Cell, f);
+      return;
     }
-    // Edges: leaves of the refined diagonal neighbour that touch the edge line.
+    std::vector<std::size_t> leaves;
+    this->CollectAdjacentLeaves(static_cast<std::size_t>(n), axis, side ? 0 : 1, -1, 0, leaves);
+    for (const std::size_t leaf : leaves)
+    {
+      this->AddFaceOfLeaf(b, f, leaf, 2 * axis + (side ? 0 : 1));
+    }
+  }
+
+  /// Corners of the finer leaves of the diagonal neighbours on this cell's edges.
+  void EdgeNeighborPoints(CellBoundary& b) const
+  {
     for (int e = 0; e < 12; ++e)
     {
       const int axis = e / 4, r = e % 4;
@@ -161,183 +198,15 @@ private:
       {
         for (int end = 0; end < 2; ++end)
         {
-          this->AddLeafCorner(leaf, ((du ? 0 : 1) << u) | ((dv ? 0 : 1) << v) | (end << axis));
+          this->AddLeafCorner(b, leaf, ((du ? 0 : 1) << u) | ((dv ? 0 : 1) << v) | (end << axis));
         }
       }
     }
-    std::sort(this->Points.begin(), this->Points.end());
-    this->Points.erase(std::unique(this->Points.begin(), this->Points.end(),
-                         [](const auto& a, const auto& b) { return a.first == b.first; }),
-      this->Points.end());
-  }
-
-  void FaceSegments(int f, std::vector<std::pair<Crossing, Crossing>>& segments) const
-  {
-    const int axis = f / 2, side = f % 2;
-    const int U = (axis + 1) % 3, V = (axis + 2) % 3;
-    const std::uint32_t plane = this->Base[axis] + (side ? this->Size : 0);
-    std::vector<FacePoint> byV, byU;
-    for (const auto& pk : this->Points)
-    {
-      std::uint32_t p[3];
-      SplitPointKey(pk.first, p);
-      if (p[axis] == plane)
-      {
-        byV.push_back({ p[U], p[V], pk.second });
-      }
-    }
-    byU = byV;
-    std::sort(byV.begin(), byV.end(),
-      [](const FacePoint& a, const FacePoint& b) { return a.V != b.V ? a.V < b.V : a.U < b.U; });
-    std::sort(byU.begin(), byU.end(),
-      [](const FacePoint& a, const FacePoint& b) { return a.U != b.U ? a.U < b.U : a.V < b.V; });
-
-    std::vector<FacePoint> polygon;
-    for (const std::size_t leaf : this->Tiles[f])
-    {
-      const OctreeNode& t = this->Tree.Nodes[leaf];
-      const int tshift = this->Depth - t.Level;
-      const std::uint32_t u0 = t.Ijk[U] << tshift, v0 = t.Ijk[V] << tshift;
-      const std::uint32_t u1 = u0 + (1u << tshift), v1 = v0 + (1u << tshift);
-      polygon.clear();
-      // Counter-clockwise in (U, V): bottom, right, top, left; each side's
-      // first point included, last excluded.
-      auto rowRange = [&](std::uint32_t v, std::uint32_t ua, std::uint32_t ub) {
-        auto lo = std::lower_bound(byV.begin(), byV.end(), FacePoint{ ua, v, false },
-          [](const FacePoint& a, const FacePoint& b) { return a.V != b.V ? a.V < b.V : a.U < b.U; });
-        auto hi = std::lower_bound(lo, byV.end(), FacePoint{ ub, v, false },
-          [](const FacePoint& a, const FacePoint& b) { return a.V != b.V ? a.V < b.V : a.U < b.U; });
-        return std::make_pair(lo, hi);
-      };
-      auto colRange = [&](std::uint32_t u, std::uint32_t va, std::uint32_t vb) {
-        auto lo = std::lower_bound(byU.begin(), byU.end(), FacePoint{ u, va, false },
-          [](const FacePoint& a, const FacePoint& b) { return a.U != b.U ? a.U < b.U : a.V < b.V; });
-        auto hi = std::lower_bound(lo, byU.end(), FacePoint{ u, vb, false },
-          [](const FacePoint& a, const FacePoint& b) { return a.U != b.U ? a.U < b.U : a.V < b.V; });
-        return std::make_pair(lo, hi);
-      };
-      {
-        auto r = rowRange(v0, u0, u1); // [u0, u1)
-        polygon.insert(polygon.end(), r.first, r.second);
-      }
-      {
-        auto r = colRange(u1, v0, v1); // [v0, v1)
-        polygon.insert(polygon.end(), r.first, r.second);
-      }
-      {
-        auto r = rowRange(v1, u0 + 1, u1 + 1); // (u0, u1], descending
-        polygon.insert(polygon.end(), std::make_reverse_iterator(r.second), std::make_reverse_iterator(r.first));
-      }
-      {
-        auto r = colRange(u0, v0 + 1, v1 + 1); // (v0, v1], descending
-        polygon.insert(polygon.end(), std::make_reverse_iterator(r.second), std::make_reverse_iterator(r.first));
-      }
-      if (side == 0)
-      {
-        // Seen from outside the cell the low face is traversed the other way.
-        std::reverse(polygon.begin(), polygon.end());
-      }
-      this->TileSegments(polygon, axis, plane, segments);
-    }
-  }
-
-  /// One segment per run of inside points along the tile boundary, from the
-  /// crossing entering the run to the crossing leaving it.
-  static void TileSegments(const std::vector<FacePoint>& poly, int axis, std::uint32_t plane,
-    std::vector<std::pair<Crossing, Crossing>>& segments)
-  {
-    const std::size_t m = poly.size();
-    const int U = (axis + 1) % 3, V = (axis + 2) % 3;
-    auto crossing = [&](std::size_t i) {
-      const FacePoint& p = poly[i];
-      const FacePoint& q = poly[(i + 1) % m];
-      const int along = p.V == q.V ? U : V;
-      const FacePoint& lower = (along == U ? p.U < q.U : p.V < q.V) ? p : q;
-      const FacePoint& upper = &lower == &p ? q : p;
-      std::uint32_t x[3];
-      x[axis] = plane;
-      x[U] = lower.U;
-      x[V] = lower.V;
-      Crossing c;
-      c.Key = (MakePointKey(x[0], x[1], x[2]) << 2) | static_cast<EdgeKey>(along);
-      c.Upper = along == U ? upper.U : upper.V;
-      c.LowerInside = lower.Inside;
-      return c;
-    };
-    for (std::size_t k = 0; k < m; ++k)
-    {
-      if (poly[k].Inside || !poly[(k + 1) % m].Inside)
-      {
-        continue;
-      }
-      std::size_t j = (k + 1) % m;
-      while (poly[(j + 1) % m].Inside)
-      {
-        j = (j + 1) % m;
-      }
-      segments.emplace_back(crossing(k), crossing(j));
-    }
-  }
-
-  static CellLoops AssembleLoops(std::vector<std::pair<Crossing, Crossing>>& segments)
-  {
-    CellLoops loops;
-    std::sort(segments.begin(), segments.end(),
-      [](const auto& a, const auto& b) { return a.first.Key < b.first.Key; });
-    std::vector<bool> used(segments.size(), false);
-    auto find = [&](EdgeKey k) -> std::size_t {
-      auto it = std::lower_bound(segments.begin(), segments.end(), k,
-        [](const auto& s, EdgeKey key) { return s.first.Key < key; });
-      if (it == segments.end() || it->first.Key != k)
-      {
-        return segments.size();
-      }
-      return static_cast<std::size_t>(it - segments.begin());
-    };
-    for (std::size_t s = 0; s < segments.size(); ++s)
-    {
-      if (s > 0 && segments[s].first.Key == segments[s - 1].first.Key)
-      {
-        loops.Consistent = false; // a crossing starting two segments
-      }
-    }
-    for (std::size_t s0 = 0; s0 < segments.size(); ++s0)
-    {
-      if (used[s0])
-      {
-        continue;
-      }
-      std::uint32_t size = 0;
-      std::size_t s = s0;
-      while (!used[s])
-      {
-        used[s] = true;
-        loops.Crossings.push_back(segments[s].first);
-        ++size;
-        s = find(segments[s].second.Key);
-        if (s == segments.size())
-        {
-          loops.Consistent = false;
-          break;
-        }
-      }
-      if (s != s0)
-      {
-        loops.Consistent = false;
-      }
-      loops.LoopSizes.push_back(size);
-    }
-    return loops;
   }
 
   const AdaptiveOctree& Tree;
   std::size_t Cell;
   const OctreeNode& Node;
-  int Depth = 0, Shift = 0;
-  std::uint32_t Size = 1;
-  std::uint32_t Base[3] = { 0, 0, 0 };
-  std::vector<std::pair<PointKey, bool>> Points;
-  std::vector<std::size_t> Tiles[6];
 };
 
 // --- vertex placement ------------------------------------------------------
@@ -432,15 +301,17 @@ ExtractionResult ExtractSurface(
   }
 
   // 1. Loops of every cell.
-  std::vector<CellLoops> loops(cells.size());
+  std::vector<BoundaryLoopSet> loops(cells.size());
   parallelFor(cells.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i)
     {
-      loops[i] = CellBoundaryWalker(tree, cells[i]).Run();
+      CellBoundary boundary = CellBoundaryBuilder(tree, cells[i]).Build();
+      loops[i] = TraceBoundaryLoops(boundary);
     }
   });
 
   // 2. One vertex per distinct crossing.
+  using EdgeKey = std::uint64_t;
   struct Record
   {
     EdgeKey Key;

@@ -1,8 +1,6 @@
 #include "TopologyPreservingSubdivision.h"
 
-#include "ComplexCellTest.h"
-#include "CubeTopology.h"
-#include "StarShapedTest.h"
+#include "McCompatibilityTest.h"
 
 #include <algorithm>
 #include <cmath>
@@ -71,83 +69,14 @@ RootGrid MakeRootGrid(const Box3& domain, double tolerance, int maximumDepth)
       grid.Origin[a] -= offset;
     }
   }
-  grid.MaxDepth = std::min(maximumDepth, MaximumSupportedDepth(grid.Dims));
+  // The lattice is always as fine as supported: face refinement samples
+  // below the deepest cells.
+  grid.MaxDepth = MaximumSupportedDepth(grid.Dims);
   return grid;
 }
 
 namespace
 {
-/// Outcome of the tests for one cell.
-enum class Verdict : std::uint8_t
-{
-  Pass,
-  Constant, // proven free of the surface after local refinement
-  Split
-};
-
-struct CellVerdict
-{
-  Verdict Kind = Verdict::Pass;
-  SplitReason Reason = SplitReason::None;
-  RegionSign Sign = RegionSign::Mixed;
-};
-
-CellVerdict Classify(const CsgExpressionPtr& expression, const std::vector<Quadric>& prims,
-  const Box3& box, unsigned mask, double cellDiagonal, double tolerance)
-{
-  CellVerdict v;
-  v.Kind = Verdict::Split;
-  if (mask == 0 || mask == 0xFF)
-  {
-    // Corners agree: either the surface misses the voxel or it is complex.
-    const RegionSign s = ProveConstantSign(expression, prims, box, 1);
-    if (s != RegionSign::Mixed)
-    {
-      v.Kind = Verdict::Constant;
-      v.Sign = s;
-      return v;
-    }
-    v.Reason = SplitReason::ComplexVoxel;
-    return v;
-  }
-  if ((v.Reason = SignAmbiguityTest(mask)) != SplitReason::None)
-  {
-    return v;
-  }
-  const ComplexCellQuery q{ expression, prims, box, mask };
-  if ((v.Reason = ComplexVoxelOrFaceTest(q)) != SplitReason::None)
-  {
-    return v;
-  }
-  // Cells that must shrink anyway skip the costlier edge and star tests.
-  if (cellDiagonal > tolerance * (1.0 + 1e-9))
-  {
-    v.Reason = SplitReason::HausdorffSize;
-    return v;
-  }
-  if ((v.Reason = ComplexEdgeTest(q)) != SplitReason::None)
-  {
-    return v;
-  }
-  if (!IsStarShapedWithRespectToVoxel(expression, prims, box))
-  {
-    v.Reason = SplitReason::NotStarShapedVoxel;
-    return v;
-  }
-  for (int f = 0; f < 6; ++f)
-  {
-    if (cube::FaceHasSignChange(mask, f) &&
-      !IsStarShapedWithRespectToFace(expression, prims, FaceBox(box, f), cube::FaceAxis(f)))
-    {
-      v.Reason = SplitReason::NotStarShapedFace;
-      return v;
-    }
-  }
-  v.Kind = Verdict::Pass;
-  v.Reason = SplitReason::None;
-  return v;
-}
-
 CellState StateOf(RegionSign s)
 {
   return s == RegionSign::Inside ? CellState::Inside : CellState::Outside;
@@ -236,29 +165,21 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
     }
 
     // 2. The paper's tests on every cell of this level.
-    std::vector<CellVerdict> verdicts(active.size());
-    const double diagonal = grid.CellDiagonal(level);
+    std::vector<McCompatibility> verdicts(active.size());
     parallelFor(active.size(), [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i)
       {
-        const std::uint32_t n = active[i];
-        unsigned mask = 0;
-        for (int c = 0; c < 8; ++c)
-        {
-          mask |= tree.CornerInside(n, c) ? (1u << c) : 0u;
-        }
-        verdicts[i] = Classify(tree.Expressions[n], prims,
-          grid.CellBox(level, tree.Nodes[n].Ijk), mask, diagonal, params.HausdorffTolerance);
+        verdicts[i] = TestMcCompatibility(tree, active[i], prims, params.HausdorffTolerance);
       }
     });
 
     // 3. Apply verdicts; limits turn splits into unresolved leaves.
     std::size_t splits = 0;
-    for (const CellVerdict& v : verdicts)
+    for (const McCompatibility& v : verdicts)
     {
-      splits += v.Kind == Verdict::Split ? 1 : 0;
+      splits += v.Kind == McVerdict::Split ? 1 : 0;
     }
-    const bool atDepthLimit = level >= grid.MaxDepth;
+    const bool atDepthLimit = level >= std::min(params.MaximumDepth, grid.MaxDepth);
     const bool atCellLimit =
       !atDepthLimit && tree.Nodes.size() + 8 * splits > params.MaximumNumberOfCells;
     result.DepthLimitReached |= atDepthLimit && splits > 0;
@@ -269,13 +190,22 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
     {
       const std::uint32_t n = active[i];
       OctreeNode& node = tree.Nodes[n];
-      const CellVerdict& v = verdicts[i];
-      if (v.Kind == Verdict::Pass)
+      const McCompatibility& v = verdicts[i];
+      if (v.Kind == McVerdict::Pass)
       {
         node.State = CellState::Surface;
         ++result.SurfaceCells;
+        for (const auto& s : v.NewSigns)
+        {
+          tree.Signs.Insert(s.first, s.second);
+        }
+        for (const auto& r : v.Refinements)
+        {
+          tree.FaceRefinements.emplace(r.first, r.second); // the first one stays
+        }
+        result.RefinedFaces += v.Refinements.size();
       }
-      else if (v.Kind == Verdict::Constant)
+      else if (v.Kind == McVerdict::Constant)
       {
         node.State = StateOf(v.Sign);
         tree.Expressions[n].reset();
@@ -347,6 +277,7 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
       }
     }
   }
+  tree.IndexRefinementPoints();
   if (progress)
   {
     progress(1.0);

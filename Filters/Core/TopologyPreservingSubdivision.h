@@ -45,6 +45,7 @@ struct SubdivisionResult
   bool CellLimitReached = false;
   std::size_t SurfaceCells = 0;
   std::size_t UnresolvedCells = 0;
+  std::size_t RefinedFaces = 0; ///< faces sampled finer than their cell (FaceRefinement.h)
   /// Number of cells split for each SplitReason (and leaves left unresolved
   /// with that failing test, in UnresolvedByReason).
   std::array<std::size_t, 10> SplitsByReason{};
@@ -53,7 +54,7 @@ struct SubdivisionResult
 
 /// Chooses the root grid: cubic root cells covering `domain`, sized so that
 /// some level has cells whose diagonal is exactly the tolerance (no finer
-/// than needed), and the lattice depth MaximumDepth.
+/// than needed), and the finest lattice the keys support.
 RootGrid MakeRootGrid(const Box3& domain, double hausdorffTolerance, int maximumDepth);
 
 /// Largest MaximumDepth the lattice supports for a root grid of `dims`.

@@ -1,0 +1,182 @@
+#include "BoundaryLoops.h"
+
+#include <algorithm>
+#include <iterator>
+
+namespace tpc
+{
+namespace
+{
+struct FacePoint
+{
+  std::uint32_t U, V;
+  bool Inside;
+};
+
+bool ByVU(const FacePoint& a, const FacePoint& b)
+{
+  return a.V != b.V ? a.V < b.V : a.U < b.U;
+}
+
+bool ByUV(const FacePoint& a, const FacePoint& b)
+{
+  return a.U != b.U ? a.U < b.U : a.V < b.V;
+}
+
+using Segment = std::pair<Crossing, Crossing>;
+
+/// One segment per run of inside points along the tile polygon, from the
+/// crossing entering the run to the crossing leaving it.
+void TileSegments(const std::vector<FacePoint>& poly, int axis, std::uint32_t plane,
+  std::vector<Segment>& segments)
+{
+  const std::size_t m = poly.size();
+  const int U = (axis + 1) % 3, V = (axis + 2) % 3;
+  auto crossing = [&](std::size_t i) {
+    const FacePoint& p = poly[i];
+    const FacePoint& q = poly[(i + 1) % m];
+    const int along = p.V == q.V ? U : V;
+    const bool pLower = along == U ? p.U < q.U : p.V < q.V;
+    const FacePoint& lower = pLower ? p : q;
+    const FacePoint& upper = pLower ? q : p;
+    std::uint32_t x[3];
+    x[axis] = plane;
+    x[U] = lower.U;
+    x[V] = lower.V;
+    Crossing c;
+    c.Key = (MakePointKey(x[0], x[1], x[2]) << 2) | static_cast<std::uint64_t>(along);
+    c.Upper = along == U ? upper.U : upper.V;
+    c.LowerInside = lower.Inside;
+    return c;
+  };
+  for (std::size_t k = 0; k < m; ++k)
+  {
+    if (poly[k].Inside || !poly[(k + 1) % m].Inside)
+    {
+      continue;
+    }
+    std::size_t j = (k + 1) % m;
+    while (poly[(j + 1) % m].Inside)
+    {
+      j = (j + 1) % m;
+    }
+    segments.emplace_back(crossing(k), crossing(j));
+  }
+}
+
+void FaceSegments(const CellBoundary& b, int f, std::vector<Segment>& segments)
+{
+  const int axis = f / 2, side = f % 2;
+  const int U = (axis + 1) % 3, V = (axis + 2) % 3;
+  const std::uint32_t plane = b.Base[axis] + (side ? b.Size : 0);
+  std::vector<FacePoint> byV;
+  for (const auto& pk : b.Points)
+  {
+    std::uint32_t p[3];
+    SplitPointKey(pk.first, p);
+    if (p[axis] == plane)
+    {
+      byV.push_back({ p[U], p[V], pk.second });
+    }
+  }
+  std::vector<FacePoint> byU = byV;
+  std::sort(byV.begin(), byV.end(), ByVU);
+  std::sort(byU.begin(), byU.end(), ByUV);
+  auto row = [&](std::uint32_t v, std::uint32_t ua, std::uint32_t ub) { // u in [ua, ub)
+    auto lo = std::lower_bound(byV.begin(), byV.end(), FacePoint{ ua, v, false }, ByVU);
+    auto hi = std::lower_bound(lo, byV.end(), FacePoint{ ub, v, false }, ByVU);
+    return std::make_pair(lo, hi);
+  };
+  auto col = [&](std::uint32_t u, std::uint32_t va, std::uint32_t vb) { // v in [va, vb)
+    auto lo = std::lower_bound(byU.begin(), byU.end(), FacePoint{ u, va, false }, ByUV);
+    auto hi = std::lower_bound(lo, byU.end(), FacePoint{ u, vb, false }, ByUV);
+    return std::make_pair(lo, hi);
+  };
+
+  std::vector<FacePoint> polygon;
+  for (const FaceTile& t : b.Tiles[f])
+  {
+    const std::uint32_t u0 = t.U0, v0 = t.V0, u1 = t.U1, v1 = t.V1;
+    polygon.clear();
+    // Counter-clockwise in (u, v): bottom, right, top, left; each side's first
+    // point included, its last excluded.
+    auto r = row(v0, u0, u1);
+    polygon.insert(polygon.end(), r.first, r.second);
+    r = col(u1, v0, v1);
+    polygon.insert(polygon.end(), r.first, r.second);
+    r = row(v1, u0 + 1, u1 + 1);
+    polygon.insert(polygon.end(), std::make_reverse_iterator(r.second), std::make_reverse_iterator(r.first));
+    r = col(u0, v0 + 1, v1 + 1);
+    polygon.insert(polygon.end(), std::make_reverse_iterator(r.second), std::make_reverse_iterator(r.first));
+    if (side == 0)
+    {
+      // Seen from outside the cell the low face is traversed the other way.
+      std::reverse(polygon.begin(), polygon.end());
+    }
+    if (polygon.size() >= 3)
+    {
+      TileSegments(polygon, axis, plane, segments);
+    }
+  }
+}
+} // namespace
+
+BoundaryLoopSet TraceBoundaryLoops(CellBoundary& b)
+{
+  std::sort(b.Points.begin(), b.Points.end());
+  b.Points.erase(std::unique(b.Points.begin(), b.Points.end(),
+                   [](const auto& x, const auto& y) { return x.first == y.first; }),
+    b.Points.end());
+  std::vector<Segment> segments;
+  for (int f = 0; f < 6; ++f)
+  {
+    FaceSegments(b, f, segments);
+  }
+
+  BoundaryLoopSet loops;
+  std::sort(segments.begin(), segments.end(),
+    [](const Segment& x, const Segment& y) { return x.first.Key < y.first.Key; });
+  for (std::size_t s = 1; s < segments.size(); ++s)
+  {
+    if (segments[s].first.Key == segments[s - 1].first.Key)
+    {
+      loops.Consistent = false; // a crossing starting two segments
+    }
+  }
+  auto find = [&](std::uint64_t k) {
+    auto it = std::lower_bound(segments.begin(), segments.end(), k,
+      [](const Segment& s, std::uint64_t key) { return s.first.Key < key; });
+    return (it == segments.end() || it->first.Key != k) ? segments.size()
+                                                        : static_cast<std::size_t>(it - segments.begin());
+  };
+  std::vector<bool> used(segments.size(), false);
+  for (std::size_t s0 = 0; s0 < segments.size(); ++s0)
+  {
+    if (used[s0])
+    {
+      continue;
+    }
+    std::uint32_t size = 0;
+    std::size_t s = s0;
+    while (!used[s])
+    {
+      used[s] = true;
+      loops.Crossings.push_back(segments[s].first);
+      ++size;
+      s = find(segments[s].second.Key);
+      if (s == segments.size())
+      {
+        loops.Consistent = false;
+        break;
+      }
+    }
+    if (s != s0)
+    {
+      loops.Consistent = false;
+    }
+    loops.LoopSizes.push_back(size);
+  }
+  return loops;
+}
+
+} // namespace tpc

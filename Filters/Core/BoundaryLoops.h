@@ -1,0 +1,71 @@
+// The closed curves that the surface draws on a cell's boundary, traced from
+// exact signs at sample points (paper 4.2-4.3, generalized to sampled faces).
+//
+// A cell's six faces are tiled by rectangles (the faces of finer neighbours,
+// or of a face refinement). Each tile's boundary polygon holds every sample
+// point lying on it, in counter-clockwise order as seen from outside the cell.
+// Every run of inside points along a tile's polygon is cut off by one segment
+// from the crossing entering the run to the crossing leaving it; the
+// segments chain into loops. When every tile is MC-compatible (the surface
+// meets it in at most one arc whose ends are the sign changes), the loops are
+// exactly the curves of E on the cell boundary. A crossing is identified by
+// the lattice sub-edge that holds it; the same rule on both sides of a face
+// gives both cells the same segments, which is what makes the extraction
+// crack-free.
+#pragma once
+
+#include "RootGrid.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace tpc
+{
+
+/// A rectangular tile [U0, U1] x [V0, V1] of a face, in lattice units of the
+/// face's (u, v) axes, u = axis + 1, v = axis + 2 (mod 3).
+struct FaceTile
+{
+  std::uint32_t U0 = 0, V0 = 0, U1 = 1, V1 = 1;
+};
+
+/// Corner c (bit 0: U1, bit 1: V1) of a tile lying in the plane axis = plane.
+inline PointKey TileCorner(int axis, std::uint32_t plane, const FaceTile& t, int c)
+{
+  std::uint32_t p[3];
+  p[axis] = plane;
+  p[(axis + 1) % 3] = (c & 1) ? t.U1 : t.U0;
+  p[(axis + 2) % 3] = (c & 2) ? t.V1 : t.V0;
+  return MakePointKey(p[0], p[1], p[2]);
+}
+
+/// A surface crossing on the lattice sub-edge from `Key >> 2` along axis
+/// `Key & 3` to coordinate `Upper` on that axis.
+struct Crossing
+{
+  std::uint64_t Key = 0;
+  std::uint32_t Upper = 0;
+  bool LowerInside = false;
+};
+
+/// The samples on a cell's boundary.
+struct CellBoundary
+{
+  std::uint32_t Base[3] = { 0, 0, 0 }; ///< low corner, lattice units
+  std::uint32_t Size = 1;              ///< edge length, lattice units
+  std::vector<FaceTile> Tiles[6];      ///< tiles of face f (see CubeTopology.h)
+  /// Every sample point on the boundary with its exact sign (any order,
+  /// duplicates allowed; Trace sorts them).
+  std::vector<std::pair<PointKey, bool>> Points;
+};
+
+struct BoundaryLoopSet
+{
+  std::vector<Crossing> Crossings; ///< the loops, concatenated, in order
+  std::vector<std::uint32_t> LoopSizes;
+  bool Consistent = true; ///< every crossing starts and ends exactly one segment
+};
+
+BoundaryLoopSet TraceBoundaryLoops(CellBoundary& boundary);
+
+} // namespace tpc

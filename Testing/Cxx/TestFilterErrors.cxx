@@ -1,0 +1,150 @@
+// Bad input gets a clear error (and empty outputs), never a crash; limits
+// give a warning, marked cells and TopologyGuaranteed = 0; Bounds clip and
+// cap unbounded solids.
+#include "FilterTestHelpers.h"
+
+#include "vtkCellData.h"
+#include "vtkCylinder.h"
+#include "vtkImplicitBoolean.h"
+#include "vtkPlane.h"
+#include "vtkSphere.h"
+#include "vtkSphereSource.h"
+#include "vtkSuperquadric.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <gtest/gtest.h>
+
+using tpctest::FilterResult;
+using tpctest::MessageRecorder;
+
+TEST(FilterErrors, NoSolidAtAll)
+{
+  vtkNew<vtkTopologyPreservingContour> f;
+  MessageRecorder messages(f);
+  f->Update();
+  EXPECT_NE(messages.Errors.find("ImplicitFunction"), std::string::npos) << messages.Errors;
+  EXPECT_EQ(f->GetSurfaceOutput()->GetNumberOfPoints(), 0);
+}
+
+TEST(FilterErrors, MeshInputIsRefusedClearly)
+{
+  vtkNew<vtkSphereSource> mesh;
+  vtkNew<vtkSphere> sphere;
+  vtkNew<vtkTopologyPreservingContour> f;
+  f->AddInputConnection(mesh->GetOutputPort());
+  f->SetImplicitFunction(sphere);
+  MessageRecorder messages(f);
+  f->Update();
+  EXPECT_NE(messages.Errors.find("not supported yet"), std::string::npos) << messages.Errors;
+  EXPECT_EQ(f->GetSurfaceOutput()->GetNumberOfPoints(), 0);
+}
+
+TEST(FilterErrors, UnsupportedFunctionsAreRefused)
+{
+  vtkNew<vtkSuperquadric> superquadric;
+  vtkNew<vtkTopologyPreservingContour> f;
+  f->SetImplicitFunction(superquadric);
+  MessageRecorder messages(f);
+  f->Update();
+  EXPECT_NE(messages.Errors.find("vtkSuperquadric"), std::string::npos) << messages.Errors;
+
+  vtkNew<vtkImplicitBoolean> magnitudes;
+  vtkNew<vtkSphere> s;
+  magnitudes->AddFunction(s);
+  magnitudes->SetOperationTypeToUnionOfMagnitudes();
+  f->SetImplicitFunction(magnitudes);
+  MessageRecorder more(f);
+  f->Update();
+  EXPECT_NE(more.Errors.find("UnionOfMagnitudes"), std::string::npos) << more.Errors;
+}
+
+TEST(FilterErrors, UnboundedSolidNeedsBoundsThenIsCapped)
+{
+  vtkNew<vtkPlane> plane;
+  plane->SetOrigin(0, 0, 0.1);
+  plane->SetNormal(0, 0, 1);
+  vtkNew<vtkTopologyPreservingContour> f;
+  f->SetImplicitFunction(plane);
+  MessageRecorder messages(f);
+  f->Update();
+  EXPECT_NE(messages.Errors.find("Bounds"), std::string::npos) << messages.Errors;
+
+  // With Bounds the half-space becomes a capped box: one closed sphere-like surface.
+  f->SetBounds(-1, 1, -1, 1, -1, 1);
+  const FilterResult r = tpctest::Run(f);
+  EXPECT_EQ(r.Guaranteed, 1);
+  EXPECT_EQ(r.Components, 1);
+  EXPECT_EQ(r.Genus, 0);
+  double b[6];
+  r.Surface->GetBounds(b);
+  EXPECT_NEAR(b[5], 0.1, r.Tolerance);
+  EXPECT_NEAR(b[0], -1.0, r.Tolerance);
+
+  // A cylinder clipped by Bounds is a closed rod.
+  vtkNew<vtkCylinder> cylinder;
+  cylinder->SetRadius(0.3);
+  f->SetImplicitFunction(cylinder);
+  const FilterResult rod = tpctest::Run(f);
+  EXPECT_EQ(rod.Guaranteed, 1);
+  EXPECT_EQ(rod.Components, 1);
+  EXPECT_EQ(rod.Genus, 0);
+}
+
+TEST(FilterErrors, NonPositiveToleranceIsRefused)
+{
+  vtkNew<vtkSphere> sphere;
+  vtkNew<vtkTopologyPreservingContour> f;
+  f->SetImplicitFunction(sphere);
+  f->SetTolerance(0.0);
+  MessageRecorder messages(f);
+  f->Update();
+  EXPECT_NE(messages.Errors.find("Tolerance"), std::string::npos) << messages.Errors;
+  EXPECT_EQ(f->GetSurfaceOutput()->GetNumberOfPoints(), 0);
+}
+
+TEST(FilterErrors, DepthLimitWarnsMarksCellsAndKeepsAClosedManifold)
+{
+  // Two spheres 0.001 apart cannot be separated at depth 5.
+  vtkNew<vtkSphere> a, b;
+  a->SetCenter(-0.5005, 0, 0);
+  a->SetRadius(0.5);
+  b->SetCenter(0.5005, 0, 0);
+  b->SetRadius(0.5);
+  vtkNew<vtkImplicitBoolean> u;
+  u->AddFunction(a);
+  u->AddFunction(b);
+  vtkNew<vtkTopologyPreservingContour> f;
+  f->SetImplicitFunction(u);
+  f->SetTolerance(0.05);
+  f->SetMaximumDepth(5);
+  MessageRecorder messages(f);
+  const FilterResult r = tpctest::Run(f);
+  EXPECT_NE(messages.Warnings.find("guarantee does not hold"), std::string::npos) << messages.Warnings;
+  EXPECT_EQ(r.Guaranteed, 0);
+  EXPECT_GT(r.Unresolved, 0);
+  const tpctest::IndependentTopology t = tpctest::Measure(r.Surface);
+  EXPECT_EQ(t.BoundaryEdges, 0);
+  EXPECT_EQ(t.NonManifoldEdges, 0);
+
+  // The stopped cells are marked in the grid.
+  auto* state = vtkUnsignedCharArray::SafeDownCast(r.Grid->GetCellData()->GetArray("CellState"));
+  auto* reason = vtkUnsignedCharArray::SafeDownCast(r.Grid->GetCellData()->GetArray("SplitReason"));
+  ASSERT_NE(state, nullptr);
+  ASSERT_NE(reason, nullptr);
+  int marked = 0;
+  for (vtkIdType i = 0; i < state->GetNumberOfTuples(); ++i)
+  {
+    if (state->GetValue(i) == 3)
+    {
+      EXPECT_EQ(reason->GetValue(i), vtkTopologyPreservingContour::LIMIT_REACHED);
+      ++marked;
+    }
+  }
+  EXPECT_EQ(marked, r.Unresolved);
+
+  // Raising the limit resolves it.
+  f->SetMaximumDepth(16);
+  const FilterResult full = tpctest::Run(f);
+  EXPECT_EQ(full.Guaranteed, 1);
+  EXPECT_EQ(full.Components, 2);
+}
