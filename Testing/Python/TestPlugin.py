@@ -1,0 +1,54 @@
+"""The ParaView plugin: load it in pvpython, run the proxy, compare with the wrapped class.
+
+Usage: pvpython TestPlugin.py <plugin .so> <build>/lib/python3/site-packages
+"""
+import os
+import sys
+
+sys.path.insert(0, sys.argv[2])
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+
+from paraview import servermanager  # noqa: E402
+from paraview.simple import LoadPlugin  # noqa: E402
+from TopologyChecks import check, field, measure  # noqa: E402
+
+failures = []
+LoadPlugin(sys.argv[1], ns=globals())
+
+proxy = TopologyPreservingContour(ImplicitFunction="Sphere")  # noqa: F821 (from the plugin)
+proxy.ImplicitFunction.Center = [0.1, 0.2, 0.3]
+proxy.ImplicitFunction.Radius = 0.5
+proxy.Tolerance = 0.02
+proxy.UpdatePipeline()
+
+check(proxy.GetDataInformation(0).GetDataSetTypeAsString() == "vtkHyperTreeGrid",
+      "output port 0 is the adaptive grid", failures)
+check(proxy.GetDataInformation(1).GetDataSetTypeAsString() == "vtkPolyData",
+      "output port 1 is the surface", failures)
+check(proxy.GetDataInformation(1).GetNumberOfCells() > 0, "surface has triangles", failures)
+
+surface = servermanager.Fetch(proxy, idx=1)
+m = measure(surface)
+check(field(surface, "TopologyGuaranteed") == 1, "guarantee holds", failures)
+check(field(surface, "Components") == 1 and m["components"] == 1, "one component", failures)
+check(field(surface, "Genus") == 0 and m["genus"] == 0, "genus 0", failures)
+check(m["boundary"] == 0 and m["nonmanifold"] == 0, "closed and manifold", failures)
+
+# The same scene with the Python-wrapped class gives the same surface.
+from topologypreserving import vtkTopologyPreservingContour  # noqa: E402
+from vtkmodules.vtkCommonDataModel import vtkSphere  # noqa: E402
+
+sphere = vtkSphere()
+sphere.SetCenter(0.1, 0.2, 0.3)
+sphere.SetRadius(0.5)
+f = vtkTopologyPreservingContour()
+f.SetImplicitFunction(sphere)
+f.SetTolerance(0.02)
+f.Update()
+direct = f.GetOutputDataObject(1)
+check(direct.GetNumberOfPolys() == surface.GetNumberOfPolys()
+      and direct.GetNumberOfPoints() == surface.GetNumberOfPoints(),
+      "plugin and wrapped class give the same surface", failures)
+
+print("plugin:", "OK" if not failures else failures)
+sys.exit(1 if failures else 0)
