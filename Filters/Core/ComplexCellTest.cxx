@@ -32,25 +32,12 @@ RegionSign ProveConstant(const CsgExpressionPtr& expression, const std::vector<Q
   {
     return pruned.Sign;
   }
-  int axes[3], count = 0;
-  for (int a = 0; a < 3; ++a)
-  {
-    if (box.hi[a] > box.lo[a])
-    {
-      axes[count++] = a;
-    }
-  }
+  Box3 pieces[8];
+  const int count = SplitBox(box, pieces);
   RegionSign common = RegionSign::Mixed;
-  for (int piece = 0; piece < (1 << count); ++piece)
+  for (int piece = 0; piece < count; ++piece)
   {
-    Box3 sub = box;
-    for (int k = 0; k < count; ++k)
-    {
-      const int a = axes[k];
-      const double mid = 0.5 * (box.lo[a] + box.hi[a]);
-      ((piece >> k) & 1 ? sub.lo[a] : sub.hi[a]) = mid;
-    }
-    const RegionSign s = ProveConstant(pruned.Expression, primitives, sub, depth - 1, budget);
+    const RegionSign s = ProveConstant(pruned.Expression, primitives, pieces[piece], depth - 1, budget);
     if (s == RegionSign::Mixed || (piece > 0 && s != common))
     {
       return RegionSign::Mixed;

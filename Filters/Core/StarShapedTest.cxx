@@ -35,24 +35,11 @@ bool VerifyLeaf(
   {
     return false;
   }
-  int axes[3], count = 0;
-  for (int a = 0; a < 3; ++a)
+  Box3 pieces[8];
+  const int count = SplitBox(box, pieces);
+  for (int piece = 0; piece < count; ++piece)
   {
-    if (box.hi[a] > box.lo[a])
-    {
-      axes[count++] = a;
-    }
-  }
-  for (int piece = 0; piece < (1 << count); ++piece)
-  {
-    Box3 sub = box;
-    for (int k = 0; k < count; ++k)
-    {
-      const int a = axes[k];
-      const double mid = 0.5 * (box.lo[a] + box.hi[a]);
-      ((piece >> k) & 1 ? sub.lo[a] : sub.hi[a]) = mid;
-    }
-    if (!VerifyLeaf(q, sigma, w, sub, depth - 1, budget))
+    if (!VerifyLeaf(q, sigma, w, pieces[piece], depth - 1, budget))
     {
       return false;
     }

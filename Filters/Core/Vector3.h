@@ -87,6 +87,32 @@ struct Box3
   }
 };
 
+/// Splits a box at its midpoint along its non-degenerate axes (8 pieces for a
+/// voxel, 4 for a face, 2 for an edge); returns how many pieces were written.
+inline int SplitBox(const Box3& box, Box3 pieces[8])
+{
+  int axes[3], count = 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (box.hi[a] > box.lo[a])
+    {
+      axes[count++] = a;
+    }
+  }
+  for (int piece = 0; piece < (1 << count); ++piece)
+  {
+    Box3& sub = pieces[piece];
+    sub = box;
+    for (int k = 0; k < count; ++k)
+    {
+      const int a = axes[k];
+      const double mid = 0.5 * (box.lo[a] + box.hi[a]);
+      ((piece >> k) & 1 ? sub.lo[a] : sub.hi[a]) = mid;
+    }
+  }
+  return 1 << count;
+}
+
 /// Bounding box of a solid. Unbounded directions hold -inf/+inf.
 struct SolidBounds
 {
