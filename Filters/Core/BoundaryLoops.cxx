@@ -28,7 +28,7 @@ using Segment = std::pair<Crossing, Crossing>;
 /// One segment per run of inside points along the tile polygon, from the
 /// crossing entering the run to the crossing leaving it.
 void TileSegments(const std::vector<FacePoint>& poly, int axis, std::uint32_t plane,
-  std::vector<Segment>& segments)
+  const FaceTile& tile, std::vector<Segment>& segments)
 {
   const std::size_t m = poly.size();
   const int U = (axis + 1) % 3, V = (axis + 2) % 3;
@@ -60,7 +60,26 @@ void TileSegments(const std::vector<FacePoint>& poly, int axis, std::uint32_t pl
     {
       j = (j + 1) % m;
     }
-    segments.emplace_back(crossing(k), crossing(j));
+    const Crossing in = crossing(k), out = crossing(j);
+    const int along = static_cast<int>(in.Key & 3);
+    std::uint32_t a[3], b[3];
+    SplitPointKey(in.Key >> 2, a);
+    SplitPointKey(out.Key >> 2, b);
+    const bool sameLine = (in.Key & 3) == (out.Key & 3) && a[(along + 1) % 3] == b[(along + 1) % 3] &&
+      a[(along + 2) % 3] == b[(along + 2) % 3];
+    if (!sameLine)
+    {
+      segments.emplace_back(in, out);
+      continue;
+    }
+    // Both cells sharing the tile must name the bend alike, and they walk the
+    // tile in opposite directions: use the ordered pair of crossings.
+    Crossing bend;
+    bend.Key = std::min(in.Key, out.Key);
+    bend.Tile = ((TileCorner(axis, plane, tile, 0) << 2) | static_cast<std::uint64_t>(axis)) + 1;
+    bend.Partner = std::max(in.Key, out.Key);
+    segments.emplace_back(in, bend);
+    segments.emplace_back(bend, out);
   }
 }
 
@@ -115,7 +134,7 @@ void FaceSegments(const CellBoundary& b, int f, std::vector<Segment>& segments)
     }
     if (polygon.size() >= 3)
     {
-      TileSegments(polygon, axis, plane, segments);
+      TileSegments(polygon, axis, plane, t, segments);
     }
   }
 }
@@ -135,19 +154,19 @@ BoundaryLoopSet TraceBoundaryLoops(CellBoundary& b)
 
   BoundaryLoopSet loops;
   std::sort(segments.begin(), segments.end(),
-    [](const Segment& x, const Segment& y) { return x.first.Key < y.first.Key; });
+    [](const Segment& x, const Segment& y) { return x.first < y.first; });
   for (std::size_t s = 1; s < segments.size(); ++s)
   {
-    if (segments[s].first.Key == segments[s - 1].first.Key)
+    if (segments[s].first.SameVertex(segments[s - 1].first))
     {
       loops.Consistent = false; // a crossing starting two segments
     }
   }
-  auto find = [&](std::uint64_t k) {
-    auto it = std::lower_bound(segments.begin(), segments.end(), k,
-      [](const Segment& s, std::uint64_t key) { return s.first.Key < key; });
-    return (it == segments.end() || it->first.Key != k) ? segments.size()
-                                                        : static_cast<std::size_t>(it - segments.begin());
+  auto find = [&](const Crossing& c) {
+    auto it = std::lower_bound(segments.begin(), segments.end(), c,
+      [](const Segment& s, const Crossing& key) { return s.first < key; });
+    return (it == segments.end() || !it->first.SameVertex(c)) ? segments.size()
+                                                              : static_cast<std::size_t>(it - segments.begin());
   };
   std::vector<bool> used(segments.size(), false);
   for (std::size_t s0 = 0; s0 < segments.size(); ++s0)
@@ -163,7 +182,7 @@ BoundaryLoopSet TraceBoundaryLoops(CellBoundary& b)
       used[s] = true;
       loops.Crossings.push_back(segments[s].first);
       ++size;
-      s = find(segments[s].second.Key);
+      s = find(segments[s].second);
       if (s == segments.size())
       {
         loops.Consistent = false;

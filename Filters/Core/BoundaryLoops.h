@@ -39,13 +39,26 @@ inline PointKey TileCorner(int axis, std::uint32_t plane, const FaceTile& t, int
   return MakePointKey(p[0], p[1], p[2]);
 }
 
-/// A surface crossing on the lattice sub-edge from `Key >> 2` along axis
-/// `Key & 3` to coordinate `Upper` on that axis.
+/// A vertex of the extracted surface on a cell boundary. Normally a surface
+/// crossing on the lattice sub-edge from `Key >> 2` along axis `Key & 3` to
+/// coordinate `Upper` on that axis (Tile = 0).
+///
+/// In a cell stopped by a limit a tile side can hold a whole run of inside
+/// samples (crossed twice); the segment cutting that run off would lie on the
+/// side's line, shared by every tile around it, and the mesh would stop being
+/// manifold. Such a segment is bent through a vertex of its own tile instead:
+/// Tile != 0 identifies the tile, Key and Partner are the run's two crossings
+/// (smaller key first). Cells that passed the tests never have one.
 struct Crossing
 {
   std::uint64_t Key = 0;
+  std::uint64_t Tile = 0;
+  std::uint64_t Partner = 0;
   std::uint32_t Upper = 0;
   bool LowerInside = false;
+
+  bool SameVertex(const Crossing& o) const { return Key == o.Key && Tile == o.Tile; }
+  bool operator<(const Crossing& o) const { return Key != o.Key ? Key < o.Key : Tile < o.Tile; }
 };
 
 /// The samples on a cell's boundary.

@@ -311,13 +311,10 @@ ExtractionResult ExtractSurface(
   });
 
   // 2. One vertex per distinct crossing.
-  using EdgeKey = std::uint64_t;
   struct Record
   {
-    EdgeKey Key;
+    Crossing Vertex;
     std::uint32_t CellIndex;
-    std::uint32_t Upper;
-    bool LowerInside;
   };
   std::vector<Record> records;
   for (std::size_t i = 0; i < cells.size(); ++i)
@@ -325,15 +322,20 @@ ExtractionResult ExtractSurface(
     result.InconsistentCells += loops[i].Consistent ? 0 : 1;
     for (const Crossing& c : loops[i].Crossings)
     {
-      records.push_back({ c.Key, static_cast<std::uint32_t>(i), c.Upper, c.LowerInside });
+      records.push_back({ c, static_cast<std::uint32_t>(i) });
     }
   }
   std::sort(records.begin(), records.end(), [](const Record& a, const Record& b) {
-    return a.Key != b.Key ? a.Key < b.Key : a.CellIndex < b.CellIndex;
+    return !a.Vertex.SameVertex(b.Vertex) ? a.Vertex < b.Vertex : a.CellIndex < b.CellIndex;
   });
   records.erase(std::unique(records.begin(), records.end(),
-                  [](const Record& a, const Record& b) { return a.Key == b.Key; }),
+                  [](const Record& a, const Record& b) { return a.Vertex.SameVertex(b.Vertex); }),
     records.end());
+  auto vertexOf = [&](const Crossing& c) {
+    auto it = std::lower_bound(records.begin(), records.end(), c,
+      [](const Record& r, const Crossing& key) { return r.Vertex < key; });
+    return static_cast<std::uint32_t>(it - records.begin());
+  };
 
   TriangleMesh& mesh = result.Mesh;
   mesh.Points.resize(records.size());
@@ -341,23 +343,45 @@ ExtractionResult ExtractSurface(
   parallelFor(records.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i)
     {
-      const Record& r = records[i];
-      const int axis = static_cast<int>(r.Key & 3);
+      const Crossing& c = records[i].Vertex;
+      if (c.Tile != 0)
+      {
+        continue; // bend vertices are placed from their crossings below
+      }
+      const int axis = static_cast<int>(c.Key & 3);
       std::uint32_t lo[3], hi[3];
-      SplitPointKey(r.Key >> 2, lo);
+      SplitPointKey(c.Key >> 2, lo);
       std::copy(lo, lo + 3, hi);
-      hi[axis] = r.Upper;
-      const CsgExpression& e = *tree.Expressions[cells[r.CellIndex]];
-      const Vec3 p = FindEdgeCrossing(e, prims, grid.Point(lo), grid.Point(hi), r.LowerInside);
+      hi[axis] = c.Upper;
+      const CsgExpression& e = *tree.Expressions[cells[records[i].CellIndex]];
+      const Vec3 p = FindEdgeCrossing(e, prims, grid.Point(lo), grid.Point(hi), c.LowerInside);
       mesh.Points[i] = p;
       mesh.Normals[i] = Normalized(e.Gradient(p, prims));
     }
   });
-  auto vertexOf = [&](EdgeKey k) {
-    auto it = std::lower_bound(records.begin(), records.end(), k,
-      [](const Record& r, EdgeKey key) { return r.Key < key; });
-    return static_cast<std::uint32_t>(it - records.begin());
-  };
+  for (std::size_t i = 0; i < records.size(); ++i)
+  {
+    const Crossing& c = records[i].Vertex;
+    if (c.Tile == 0)
+    {
+      continue;
+    }
+    // Between the run's two crossings, nudged off their line into its tile so
+    // that bends of different tiles around the line do not coincide.
+    Crossing first, last;
+    first.Key = c.Key;
+    last.Key = c.Partner;
+    const Vec3 a = mesh.Points[vertexOf(first)], b = mesh.Points[vertexOf(last)];
+    std::uint32_t corner[3], on[3];
+    SplitPointKey((c.Tile - 1) >> 2, corner);
+    SplitPointKey(c.Key >> 2, on);
+    const int plane = static_cast<int>((c.Tile - 1) & 3), along = static_cast<int>(c.Key & 3);
+    const int across = 3 - plane - along;
+    Vec3 p = (a + b) * 0.5;
+    p[across] += (on[across] == corner[across] ? 1e-3 : -1e-3) * Norm(b - a);
+    mesh.Points[i] = p;
+    mesh.Normals[i] = Normalized(mesh.Normals[vertexOf(first)] + mesh.Normals[vertexOf(last)]);
+  }
 
   // 3. Triangulate each loop: a single triangle, or a fan around a vertex on
   // the surface inside the cell.
@@ -383,7 +407,7 @@ ExtractionResult ExtractSurface(
         normals.clear();
         for (std::uint32_t k = 0; k < size; ++k)
         {
-          const std::uint32_t id = vertexOf(loops[i].Crossings[offset + k].Key);
+          const std::uint32_t id = vertexOf(loops[i].Crossings[offset + k]);
           ids.push_back(id);
           pts.push_back(mesh.Points[id]);
           normals.push_back(mesh.Normals[id]);
