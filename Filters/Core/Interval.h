@@ -2,9 +2,9 @@
 //
 // Every operation returns an interval that contains the exact real result for
 // all real operands in the input intervals. Rounding is emulated with
-// error-free transformations (TwoSum, FMA-based TwoProduct): a bound is moved
-// one ulp outward only when the floating-point operation was inexact, so exact
-// results (frequent on dyadic lattices: a plane through lattice points gives
+// error-free transformations (TwoSum; FMA TwoProduct where the compiler
+// targets FMA): a bound is moved one ulp outward only when the operation may
+// have been inexact, so exact results (a plane through lattice points gives
 // exactly [0, 0]) stay exact. Hand-written rather than taken from Boost.Interval
 // because that library switches the FPU rounding mode, which is slow, not
 // thread-friendly, and fragile under optimizing compilers; this version is
@@ -15,12 +15,34 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 
 namespace tpc
 {
 namespace rounding
 {
+/// The neighbouring doubles of a finite x, by stepping its bit pattern
+/// (std::nextafter is a library call, too slow for the inner loops).
+inline double NextUp(double x)
+{
+  if (x == 0.0)
+  {
+    return std::numeric_limits<double>::denorm_min();
+  }
+  std::uint64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  bits = x > 0.0 ? bits + 1 : bits - 1;
+  std::memcpy(&x, &bits, sizeof bits);
+  return x;
+}
+
+inline double NextDown(double x)
+{
+  return -NextUp(-x);
+}
+
 /// Exact error of a + b (a + b == s + err), Knuth's TwoSum.
 inline double SumError(double a, double b, double s)
 {
@@ -35,7 +57,7 @@ inline double AddDown(double a, double b)
   {
     return std::isnan(s) ? -std::numeric_limits<double>::infinity() : s;
   }
-  return SumError(a, b, s) < 0.0 ? std::nextafter(s, -HUGE_VAL) : s;
+  return SumError(a, b, s) < 0.0 ? NextDown(s) : s;
 }
 
 inline double AddUp(double a, double b)
@@ -45,7 +67,26 @@ inline double AddUp(double a, double b)
   {
     return std::isnan(s) ? std::numeric_limits<double>::infinity() : s;
   }
-  return SumError(a, b, s) > 0.0 ? std::nextafter(s, HUGE_VAL) : s;
+  return SumError(a, b, s) > 0.0 ? NextUp(s) : s;
+}
+
+/// Sign of the rounding error of p = fl(a * b): +1 if the exact product is
+/// larger, -1 if smaller, 0 if exact; 2 when it cannot be told cheaply (then
+/// both bounds are widened). With FMA hardware this is exact; otherwise
+/// products by a power of two (axis-aligned planes, halvings) are known exact.
+inline int ProductError(double a, double b, double p)
+{
+#if defined(__FMA__)
+  const double e = __builtin_fma(a, b, -p);
+  return e > 0.0 ? 1 : (e < 0.0 ? -1 : 0);
+#else
+  (void)p;
+  std::uint64_t ba, bb;
+  std::memcpy(&ba, &a, sizeof ba);
+  std::memcpy(&bb, &b, sizeof bb);
+  const std::uint64_t mantissa = (std::uint64_t(1) << 52) - 1;
+  return ((ba & mantissa) == 0 || (bb & mantissa) == 0) ? 0 : 2;
+#endif
 }
 
 inline double MulDown(double a, double b)
@@ -61,10 +102,11 @@ inline double MulDown(double a, double b)
   }
   if (std::fabs(p) < 1e-290)
   {
-    // Near underflow the FMA residual is unreliable; widen conservatively.
-    return std::nextafter(std::nextafter(p, -HUGE_VAL), -HUGE_VAL);
+    // Near underflow the error terms are unreliable; widen conservatively.
+    return NextDown(NextDown(p));
   }
-  return std::fma(a, b, -p) < 0.0 ? std::nextafter(p, -HUGE_VAL) : p;
+  const int e = ProductError(a, b, p);
+  return e == -1 || e == 2 ? NextDown(p) : p;
 }
 
 inline double MulUp(double a, double b)
@@ -80,9 +122,10 @@ inline double MulUp(double a, double b)
   }
   if (std::fabs(p) < 1e-290)
   {
-    return std::nextafter(std::nextafter(p, HUGE_VAL), HUGE_VAL);
+    return NextUp(NextUp(p));
   }
-  return std::fma(a, b, -p) > 0.0 ? std::nextafter(p, HUGE_VAL) : p;
+  const int e = ProductError(a, b, p);
+  return e == 1 || e == 2 ? NextUp(p) : p;
 }
 } // namespace rounding
 
@@ -127,14 +170,43 @@ inline Interval operator-(const Interval& a, const Interval& b)
 
 inline Interval operator*(const Interval& a, const Interval& b)
 {
-  // Fast paths for the frequent sign-definite cases would save little here;
-  // the four-product form is simple and always correct.
-  const double l1 = rounding::MulDown(a.lo, b.lo), l2 = rounding::MulDown(a.lo, b.hi);
-  const double l3 = rounding::MulDown(a.hi, b.lo), l4 = rounding::MulDown(a.hi, b.hi);
-  const double h1 = rounding::MulUp(a.lo, b.lo), h2 = rounding::MulUp(a.lo, b.hi);
-  const double h3 = rounding::MulUp(a.hi, b.lo), h4 = rounding::MulUp(a.hi, b.hi);
-  return { std::min(std::min(l1, l2), std::min(l3, l4)),
-    std::max(std::max(h1, h2), std::max(h3, h4)) };
+  using rounding::MulDown;
+  using rounding::MulUp;
+  // The nine sign cases: two rounded products each, except when both straddle zero.
+  if (a.lo >= 0.0)
+  {
+    if (b.lo >= 0.0)
+    {
+      return { MulDown(a.lo, b.lo), MulUp(a.hi, b.hi) };
+    }
+    if (b.hi <= 0.0)
+    {
+      return { MulDown(a.hi, b.lo), MulUp(a.lo, b.hi) };
+    }
+    return { MulDown(a.hi, b.lo), MulUp(a.hi, b.hi) };
+  }
+  if (a.hi <= 0.0)
+  {
+    if (b.lo >= 0.0)
+    {
+      return { MulDown(a.lo, b.hi), MulUp(a.hi, b.lo) };
+    }
+    if (b.hi <= 0.0)
+    {
+      return { MulDown(a.hi, b.hi), MulUp(a.lo, b.lo) };
+    }
+    return { MulDown(a.lo, b.hi), MulUp(a.lo, b.lo) };
+  }
+  if (b.lo >= 0.0)
+  {
+    return { MulDown(a.lo, b.hi), MulUp(a.hi, b.hi) };
+  }
+  if (b.hi <= 0.0)
+  {
+    return { MulDown(a.hi, b.lo), MulUp(a.lo, b.lo) };
+  }
+  return { std::min(MulDown(a.lo, b.hi), MulDown(a.hi, b.lo)),
+    std::max(MulUp(a.lo, b.lo), MulUp(a.hi, b.hi)) };
 }
 
 inline Interval& operator+=(Interval& a, const Interval& b)

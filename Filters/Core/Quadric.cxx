@@ -105,6 +105,10 @@ Interval IntervalQuadric::Enclose(const Box3& box) const
   const Interval taylor = this->EncloseAt(c) + g0 * d0 + g1 * d1 + g2 * d2 + A[0] * Square(d0) +
     A[1] * Square(d1) + A[2] * Square(d2) + A[3] * (d0 * d1) + A[4] * (d1 * d2) + A[5] * (d0 * d2);
 
+  if (taylor.lo >= 0.0 || taylor.hi < 0.0)
+  {
+    return taylor; // decides the sign already: the only question callers ask
+  }
   // Natural extension: better than the centred form on large boxes.
   const Interval x(box.lo[0], box.hi[0]), y(box.lo[1], box.hi[1]), z(box.lo[2], box.hi[2]);
   const Interval natural = A[0] * Square(x) + A[1] * Square(y) + A[2] * Square(z) +

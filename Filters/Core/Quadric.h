@@ -28,8 +28,9 @@ struct IntervalQuadric
 {
   std::array<Interval, 10> A{};
 
-  /// Enclosure of the polynomial over a closed box: the intersection of a
-  /// second-order Taylor (centred) form and the natural interval extension.
+  /// Enclosure of the polynomial over a closed box: a second-order Taylor
+  /// (centred) form, intersected with the natural interval extension when the
+  /// former does not decide the sign.
   Interval Enclose(const Box3& box) const;
   /// Enclosure of the polynomial at a single point.
   Interval EncloseAt(const Vec3& p) const;

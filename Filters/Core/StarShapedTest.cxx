@@ -176,6 +176,25 @@ bool IsStarShaped(const CsgExpressionPtr& expression, const std::vector<Quadric>
   {
     return true;
   }
+  // Cheap first guess, enough for most cells (small against the curvature):
+  // the sum of the leaves' unit normals at the box centre.
+  {
+    const Vec3 c = box.Center();
+    Vec3 u;
+    for (const CsgLeaf& leaf : leaves)
+    {
+      Vec3 n = prims[leaf.Primitive].Gradient(c) * static_cast<double>(leaf.Sigma);
+      if (planeAxis >= 0)
+      {
+        n[planeAxis] = 0.0;
+      }
+      u += Normalized(n);
+    }
+    if (Norm(u) > 0.0 && VerifyStarWitness(*expression, prims, box, { u * -1.0, 0.0 }, 0))
+    {
+      return true;
+    }
+  }
   std::vector<StarWitness> candidates;
   std::vector<Vec3> normals;
   SampleNormals(leaves, prims, box, planeAxis, normals);
