@@ -54,13 +54,13 @@ bool IsIdentity(const Matrix& m)
 class Converter
 {
 public:
-  std::vector<Quadric>& Primitives;
+  PrimitiveSet& Primitives;
   std::string& Error;
 
   int Add(const Quadric& q, const Matrix& toLocal)
   {
-    this->Primitives.push_back(IsIdentity(toLocal) ? q : q.Composed(toLocal.data()));
-    return static_cast<int>(this->Primitives.size() - 1);
+    this->Primitives.Quadrics.push_back(IsIdentity(toLocal) ? q : q.Composed(toLocal.data()));
+    return static_cast<int>(this->Primitives.Quadrics.size() - 1);
   }
 
   /// `toParent` maps world points to the input space of this function's parent.
@@ -241,14 +241,14 @@ public:
 };
 } // namespace
 
-bool ConvertImplicitFunction(vtkImplicitFunction* function, std::vector<Quadric>& primitives,
+bool ConvertImplicitFunction(vtkImplicitFunction* function, PrimitiveSet& primitives,
   CsgTerm& term, std::string& error)
 {
   Converter c{ primitives, error };
   return c.Convert(function, Identity(), term);
 }
 
-int CountSignDisagreements(vtkImplicitFunction* function, const std::vector<Quadric>& primitives,
+int CountSignDisagreements(vtkImplicitFunction* function, const PrimitiveSet& primitives,
   const CsgTerm& term, const Box3& box, int samples)
 {
   const CsgExpressionPtr expression = CsgExpression::FromTerm(term);

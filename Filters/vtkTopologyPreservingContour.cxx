@@ -257,12 +257,12 @@ int vtkTopologyPreservingContour::RequestData(
       tpc::Vec3 n, o;
       n[a] = 1.0;
       o[a] = domain.hi[a];
-      scene.Primitives.push_back(tpc::Quadric::Plane(o, n));
-      operands.push_back(tpc::CsgTerm::Primitive(static_cast<int>(scene.Primitives.size() - 1)));
+      scene.Primitives.Quadrics.push_back(tpc::Quadric::Plane(o, n));
+      operands.push_back(tpc::CsgTerm::Primitive(static_cast<int>(scene.Primitives.Quadrics.size() - 1)));
       n[a] = -1.0;
       o[a] = domain.lo[a];
-      scene.Primitives.push_back(tpc::Quadric::Plane(o, n));
-      operands.push_back(tpc::CsgTerm::Primitive(static_cast<int>(scene.Primitives.size() - 1)));
+      scene.Primitives.Quadrics.push_back(tpc::Quadric::Plane(o, n));
+      operands.push_back(tpc::CsgTerm::Primitive(static_cast<int>(scene.Primitives.Quadrics.size() - 1)));
     }
     term = tpc::CsgTerm::Combine(tpc::CsgTerm::Op::Intersection, std::move(operands));
     for (int a = 0; a < 3; ++a)

@@ -24,7 +24,7 @@ Box3 FaceBox(const Box3& cell, int face)
 
 namespace
 {
-RegionSign ProveConstant(const CsgExpressionPtr& expression, const std::vector<Quadric>& primitives,
+RegionSign ProveConstant(const CsgExpressionPtr& expression, const PrimitiveSet& primitives,
   const Box3& box, int depth, int& budget)
 {
   const auto pruned = CsgExpression::Prune(expression, box, primitives);
@@ -49,13 +49,13 @@ RegionSign ProveConstant(const CsgExpressionPtr& expression, const std::vector<Q
 } // namespace
 
 RegionSign ProveConstantSign(const CsgExpressionPtr& expression,
-  const std::vector<Quadric>& primitives, const Box3& box, int depth, int budget)
+  const PrimitiveSet& primitives, const Box3& box, int depth, int budget)
 {
   return ProveConstant(expression, primitives, box, depth, budget);
 }
 
 SplitReason FaceCompatibilityTest(const CsgExpressionPtr& expression,
-  const std::vector<Quadric>& primitives, const Box3& face, int axis, const bool inside[4],
+  const PrimitiveSet& primitives, const Box3& face, int axis, const bool inside[4],
   int* failingEdge)
 {
   const bool change = inside[0] != inside[1] || inside[1] != inside[2] || inside[2] != inside[3];

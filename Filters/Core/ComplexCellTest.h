@@ -24,7 +24,7 @@ namespace tpc
 /// straddles zero although their union or intersection does not, and only
 /// smaller pieces separate them.
 RegionSign ProveConstantSign(const CsgExpressionPtr& expression,
-  const std::vector<Quadric>& primitives, const Box3& box, int depth, int budget = 1 << 30);
+  const PrimitiveSet& primitives, const Box3& box, int depth, int budget = 1 << 30);
 
 /// Depth and budget used for "does the surface meet this voxel/face" proofs.
 constexpr int ConstantProofDepth = 6;
@@ -43,7 +43,7 @@ Box3 FaceBox(const Box3& cell, int face);
 /// For ComplexEdge, `failingEdge` (if given) receives k: the edge from corner
 /// k to corner k + 1 in that order.
 SplitReason FaceCompatibilityTest(const CsgExpressionPtr& expression,
-  const std::vector<Quadric>& primitives, const Box3& face, int axis, const bool inside[4],
+  const PrimitiveSet& primitives, const Box3& face, int axis, const bool inside[4],
   int* failingEdge = nullptr);
 
 } // namespace tpc

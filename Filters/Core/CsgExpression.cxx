@@ -15,6 +15,13 @@ CsgTerm CsgTerm::Primitive(int index)
   return t;
 }
 
+CsgTerm CsgTerm::Mesh(int index)
+{
+  CsgTerm t = CsgTerm::Primitive(index);
+  t.Kind = PrimitiveKind::Mesh;
+  return t;
+}
+
 CsgTerm CsgTerm::Combine(Op op, std::vector<CsgTerm> operands)
 {
   CsgTerm t;
@@ -23,14 +30,25 @@ CsgTerm CsgTerm::Combine(Op op, std::vector<CsgTerm> operands)
   return t;
 }
 
-SolidBounds CsgTerm::Bounds(const std::vector<Quadric>& primitives) const
+SolidBounds CsgTerm::Bounds(const PrimitiveSet& primitives) const
 {
   SolidBounds b;
   switch (this->Operation)
   {
     case Op::Primitive:
-      b = this->PrimitiveIndex >= 0 ? primitives[static_cast<std::size_t>(this->PrimitiveIndex)].Bounds()
-                                    : SolidBounds::Nothing();
+      if (this->PrimitiveIndex < 0)
+      {
+        b = SolidBounds::Nothing();
+      }
+      else if (this->Kind == PrimitiveKind::Quadric)
+      {
+        b = primitives.Quadrics[static_cast<std::size_t>(this->PrimitiveIndex)].Bounds();
+      }
+      else
+      {
+        const MeshSolid& m = primitives.Meshes[static_cast<std::size_t>(this->PrimitiveIndex)];
+        b = m.TriangleCount() == 0 ? SolidBounds::Nothing() : SolidBounds{ false, m.Bounds() };
+      }
       break;
     case Op::Complement:
       b = SolidBounds::Everything();
@@ -69,12 +87,14 @@ struct CsgExpressionBuilder
     Out.Children.resize(mark.second);
   }
 
-  std::uint32_t AddLeaf(CsgLeaf leaf)
+  std::uint32_t AddLeaf(CsgLeaf leaf, std::shared_ptr<const TriangleList> triangles = nullptr)
   {
     CsgExpression::Node n;
     n.NodeKind = CsgExpression::Node::Kind::Leaf;
     n.LeafData = leaf;
-    Out.Nodes.push_back(n);
+    n.LeafData.Triangles = triangles.get();
+    n.Triangles = std::move(triangles);
+    Out.Nodes.push_back(std::move(n));
     return static_cast<std::uint32_t>(Out.Nodes.size() - 1);
   }
 
@@ -97,10 +117,17 @@ struct CsgExpressionBuilder
     switch (t.Operation)
     {
       case Op::Primitive:
-        return t.PrimitiveIndex < 0
-          ? -1
-          : static_cast<long>(this->AddLeaf(
-              { static_cast<std::uint32_t>(t.PrimitiveIndex), static_cast<std::int8_t>(neg ? -1 : 1) }));
+      {
+        if (t.PrimitiveIndex < 0)
+        {
+          return -1;
+        }
+        CsgLeaf leaf;
+        leaf.Primitive = static_cast<std::uint32_t>(t.PrimitiveIndex);
+        leaf.Sigma = static_cast<std::int8_t>(neg ? -1 : 1);
+        leaf.Kind = t.Kind;
+        return static_cast<long>(this->AddLeaf(leaf));
+      }
       case Op::Complement:
         return t.Operands.empty() ? -1 : this->Build(t.Operands[0], !neg);
       default:
@@ -173,20 +200,87 @@ CsgExpressionPtr CsgExpression::FromTerm(const CsgTerm& term)
 }
 
 // ---------------------------------------------------------------------------
+bool LeafIsInside(const CsgLeaf& leaf, const PrimitiveSet& prims, const Vec3& p)
+{
+  if (leaf.Kind == PrimitiveKind::Quadric)
+  {
+    return prims.Quadrics[leaf.Primitive].ExactSign(p) * leaf.Sigma < 0;
+  }
+  return prims.Meshes[leaf.Primitive].IsInside(p) == (leaf.Sigma > 0);
+}
+
+double LeafValue(const CsgLeaf& leaf, const PrimitiveSet& prims, const Vec3& p)
+{
+  if (leaf.Kind == PrimitiveKind::Quadric)
+  {
+    return leaf.Sigma * prims.Quadrics[leaf.Primitive].Value(p);
+  }
+  const MeshSolid& m = prims.Meshes[leaf.Primitive];
+  if (!leaf.Triangles)
+  {
+    return leaf.Sigma * (m.IsInside(p) ? -1.0 : 1.0) * HUGE_VAL;
+  }
+  return leaf.Sigma * m.ApproximateSignedDistance(p, *leaf.Triangles);
+}
+
+Vec3 LeafGradient(const CsgLeaf& leaf, const PrimitiveSet& prims, const Vec3& p)
+{
+  if (leaf.Kind == PrimitiveKind::Quadric)
+  {
+    return prims.Quadrics[leaf.Primitive].Gradient(p) * static_cast<double>(leaf.Sigma);
+  }
+  const MeshSolid& m = prims.Meshes[leaf.Primitive];
+  if (!leaf.Triangles || leaf.Triangles->empty())
+  {
+    return Vec3();
+  }
+  std::uint32_t nearest = 0;
+  m.ApproximateSignedDistance(p, *leaf.Triangles, &nearest);
+  return m.Normal(nearest) * static_cast<double>(leaf.Sigma);
+}
+
 namespace
 {
-Interval LeafEnclosure(const CsgLeaf& leaf, const Box3& box, const std::vector<Quadric>& prims)
+/// Sign of a leaf over a closed box; for a mesh leaf that stays mixed, the
+/// triangles meeting the box.
+RegionSign LeafOverBox(const CsgLeaf& leaf, const Box3& box, const PrimitiveSet& prims,
+  std::shared_ptr<const TriangleList>& narrowed)
 {
-  const Interval v = prims[leaf.Primitive].Enclose(box);
-  return leaf.Sigma > 0 ? v : -v;
+  if (leaf.Kind == PrimitiveKind::Quadric)
+  {
+    Interval v = prims.Quadrics[leaf.Primitive].Enclose(box);
+    if (leaf.Sigma < 0)
+    {
+      v = -v;
+    }
+    return v.hi < 0.0 ? RegionSign::Inside : (v.lo >= 0.0 ? RegionSign::Outside : RegionSign::Mixed);
+  }
+  const MeshSolid& m = prims.Meshes[leaf.Primitive];
+  auto list = std::make_shared<TriangleList>();
+  if (leaf.Triangles)
+  {
+    m.Overlapping(box, *leaf.Triangles, *list);
+  }
+  else
+  {
+    *list = m.Overlapping(box);
+  }
+  if (list->empty())
+  {
+    // No triangle meets the closed box: one sign on all of it.
+    return LeafIsInside(leaf, prims, box.Center()) ? RegionSign::Inside : RegionSign::Outside;
+  }
+  narrowed = std::move(list);
+  return RegionSign::Mixed;
 }
 
 struct Pruner
 {
   const CsgExpression& Src;
   const Box3& Box;
-  const std::vector<Quadric>& Prims;
+  const PrimitiveSet& Prims;
   CsgExpressionBuilder Dst;
+  bool Narrowed = false;
 
   std::pair<RegionSign, std::uint32_t> Run(std::uint32_t i)
   {
@@ -194,18 +288,19 @@ struct Pruner
     const auto& n = Src.NodeAt(i);
     if (n.NodeKind == Kind::Leaf)
     {
-      const Interval v = LeafEnclosure(n.LeafData, Box, Prims);
-      if (v.hi < 0.0)
+      std::shared_ptr<const TriangleList> narrowed;
+      const RegionSign s = LeafOverBox(n.LeafData, Box, Prims, narrowed);
+      if (s != RegionSign::Mixed)
       {
-        return { RegionSign::Inside, 0 };
+        return { s, 0 };
       }
-      if (v.lo >= 0.0)
+      if (narrowed && (!n.Triangles || narrowed->size() < n.Triangles->size()))
       {
-        return { RegionSign::Outside, 0 };
+        this->Narrowed = true;
+        return { RegionSign::Mixed, Dst.AddLeaf(n.LeafData, std::move(narrowed)) };
       }
-      return { RegionSign::Mixed, Dst.AddLeaf(n.LeafData) };
-    }
-    // Union: any inside child makes it inside, outside children drop out.
+      return { RegionSign::Mixed, Dst.AddLeaf(n.LeafData, n.Triangles) };
+    }    // Union: any inside child makes it inside, outside children drop out.
     // Intersection: the dual.
     const RegionSign absorbing = n.NodeKind == Kind::Union ? RegionSign::Inside : RegionSign::Outside;
     const RegionSign neutral = n.NodeKind == Kind::Union ? RegionSign::Outside : RegionSign::Inside;
@@ -238,9 +333,9 @@ struct Pruner
 } // namespace
 
 CsgExpression::Pruned CsgExpression::Prune(
-  const CsgExpressionPtr& self, const Box3& box, const std::vector<Quadric>& primitives)
+  const CsgExpressionPtr& self, const Box3& box, const PrimitiveSet& primitives)
 {
-  Pruner p{ *self, box, primitives, {} };
+  Pruner p{ *self, box, primitives, {}, false };
   const auto r = p.Run(self->RootIndex);
   Pruned result;
   result.Sign = r.first;
@@ -248,9 +343,9 @@ CsgExpression::Pruned CsgExpression::Prune(
   {
     return result;
   }
-  if (p.Dst.Out.Nodes.size() == self->Nodes.size())
+  if (p.Dst.Out.Nodes.size() == self->Nodes.size() && !p.Narrowed)
   {
-    result.Expression = self; // nothing removed
+    result.Expression = self; // nothing removed or narrowed
     return result;
   }
   p.Dst.Out.RootIndex = r.second;
@@ -259,20 +354,20 @@ CsgExpression::Pruned CsgExpression::Prune(
 }
 
 // ---------------------------------------------------------------------------
-bool CsgExpression::IsInside(const Vec3& p, const std::vector<Quadric>& prims) const
+bool CsgExpression::IsInside(const Vec3& p, const PrimitiveSet& prims) const
 {
   // Recursive with short-circuit: exact leaf signs are the costly part.
   struct Eval
   {
     const CsgExpression& E;
     const Vec3& P;
-    const std::vector<Quadric>& Prims;
+    const PrimitiveSet& Prims;
     bool Run(std::uint32_t i) const
     {
       const auto& n = E.NodeAt(i);
       if (n.NodeKind == Node::Kind::Leaf)
       {
-        return Prims[n.LeafData.Primitive].ExactSign(P) * n.LeafData.Sigma < 0;
+        return LeafIsInside(n.LeafData, Prims, P);
       }
       const bool isUnion = n.NodeKind == Node::Kind::Union;
       for (std::uint32_t c = 0; c < n.ChildCount; ++c)
@@ -289,20 +384,20 @@ bool CsgExpression::IsInside(const Vec3& p, const std::vector<Quadric>& prims) c
   return Eval{ *this, p, prims }.Run(this->RootIndex);
 }
 
-double CsgExpression::Value(const Vec3& p, const std::vector<Quadric>& prims, int* leafNode) const
+double CsgExpression::Value(const Vec3& p, const PrimitiveSet& prims, int* leafNode) const
 {
   struct Eval
   {
     const CsgExpression& E;
     const Vec3& P;
-    const std::vector<Quadric>& Prims;
+    const PrimitiveSet& Prims;
     double Run(std::uint32_t i, std::uint32_t& leaf) const
     {
       const auto& n = E.NodeAt(i);
       if (n.NodeKind == Node::Kind::Leaf)
       {
         leaf = i;
-        return n.LeafData.Sigma * Prims[n.LeafData.Primitive].Value(P);
+        return LeafValue(n.LeafData, Prims, P);
       }
       double best = this->Run(E.ChildIndex(n.FirstChild), leaf);
       for (std::uint32_t c = 1; c < n.ChildCount; ++c)
@@ -327,38 +422,11 @@ double CsgExpression::Value(const Vec3& p, const std::vector<Quadric>& prims, in
   return v;
 }
 
-Vec3 CsgExpression::Gradient(const Vec3& p, const std::vector<Quadric>& prims) const
+Vec3 CsgExpression::Gradient(const Vec3& p, const PrimitiveSet& prims) const
 {
   int leaf = 0;
   this->Value(p, prims, &leaf);
-  const CsgLeaf& l = this->Nodes[static_cast<std::size_t>(leaf)].LeafData;
-  return prims[l.Primitive].Gradient(p) * static_cast<double>(l.Sigma);
-}
-
-Interval CsgExpression::Enclose(const Box3& box, const std::vector<Quadric>& prims) const
-{
-  struct Eval
-  {
-    const CsgExpression& E;
-    const Box3& B;
-    const std::vector<Quadric>& Prims;
-    Interval Run(std::uint32_t i) const
-    {
-      const auto& n = E.NodeAt(i);
-      if (n.NodeKind == Node::Kind::Leaf)
-      {
-        return LeafEnclosure(n.LeafData, B, Prims);
-      }
-      Interval acc = this->Run(E.ChildIndex(n.FirstChild));
-      for (std::uint32_t c = 1; c < n.ChildCount; ++c)
-      {
-        const Interval v = this->Run(E.ChildIndex(n.FirstChild + c));
-        acc = n.NodeKind == Node::Kind::Union ? Min(acc, v) : Max(acc, v);
-      }
-      return acc;
-    }
-  };
-  return Eval{ *this, box, prims }.Run(this->RootIndex);
+  return LeafGradient(this->Nodes[static_cast<std::size_t>(leaf)].LeafData, prims, p);
 }
 
 std::vector<CsgLeaf> CsgExpression::Leaves() const
@@ -373,6 +441,18 @@ std::vector<CsgLeaf> CsgExpression::Leaves() const
     }
   }
   return leaves;
+}
+
+bool CsgExpression::HasMeshLeaves() const
+{
+  for (const Node& n : this->Nodes)
+  {
+    if (n.NodeKind == Node::Kind::Leaf && n.LeafData.Kind == PrimitiveKind::Mesh)
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 } // namespace tpc

@@ -6,12 +6,8 @@ namespace tpc
 {
 namespace
 {
-bool LeafInside(const CsgLeaf& leaf, const std::vector<Quadric>& prims, const Vec3& p)
-{
-  return prims[leaf.Primitive].ExactSign(p) * leaf.Sigma < 0;
-}
 
-EdgeCrossingCount Count(const CsgExpressionPtr& expression, const std::vector<Quadric>& prims,
+EdgeCrossingCount Count(const CsgExpressionPtr& expression, const PrimitiveSet& prims,
   const Vec3& a, const Vec3& b, int axis, bool inA, bool inB, int budget)
 {
   Box3 seg{ a, b };
@@ -24,14 +20,29 @@ EdgeCrossingCount Count(const CsgExpressionPtr& expression, const std::vector<Qu
   int changing = 0;
   for (const CsgLeaf& leaf : pruned.Expression->Leaves())
   {
-    if (prims[leaf.Primitive].EncloseDerivative(seg, axis).ContainsZero())
+    // Each leaf must change sign at most once on the piece: a quadric whose
+    // derivative keeps one sign, a mesh crossed at most once.
+    if (leaf.Kind == PrimitiveKind::Quadric)
     {
-      decided = false;
-      break;
+      if (prims.Quadrics[leaf.Primitive].EncloseDerivative(seg, axis).ContainsZero())
+      {
+        decided = false;
+        break;
+      }
+      if (LeafIsInside(leaf, prims, a) != LeafIsInside(leaf, prims, b))
+      {
+        ++changing;
+      }
     }
-    if (LeafInside(leaf, prims, a) != LeafInside(leaf, prims, b))
+    else
     {
-      ++changing;
+      const int crossings = prims.Meshes[leaf.Primitive].CountCrossings(a, b, axis, *leaf.Triangles);
+      if (crossings > 1)
+      {
+        decided = false;
+        break;
+      }
+      changing += crossings;
     }
   }
   if (decided && changing <= 1)
@@ -62,13 +73,13 @@ EdgeCrossingCount Count(const CsgExpressionPtr& expression, const std::vector<Qu
 } // namespace
 
 EdgeCrossingCount CountEdgeCrossings(const CsgExpressionPtr& expression,
-  const std::vector<Quadric>& primitives, const Vec3& a, const Vec3& b, int axis, bool insideA,
+  const PrimitiveSet& primitives, const Vec3& a, const Vec3& b, int axis, bool insideA,
   bool insideB, int maxBisections)
 {
   return Count(expression, primitives, a, b, axis, insideA, insideB, maxBisections);
 }
 
-Vec3 FindEdgeCrossing(const CsgExpression& expression, const std::vector<Quadric>& primitives,
+Vec3 FindEdgeCrossing(const CsgExpression& expression, const PrimitiveSet& primitives,
   const Vec3& a, const Vec3& b, bool insideA)
 {
   // Illinois (modified regula falsi) on the floating-point field, bracketed by
@@ -79,7 +90,9 @@ Vec3 FindEdgeCrossing(const CsgExpression& expression, const std::vector<Quadric
   auto at = [&](double t) { return a + d * t; };
   double fa = expression.Value(a, primitives);
   double fb = expression.Value(b, primitives);
-  const bool usable = insideA ? (fa < 0.0 && fb >= 0.0) : (fa >= 0.0 && fb < 0.0);
+  // Mesh leaves only have an approximate value: bisect on exact signs.
+  const bool usable = !expression.HasMeshLeaves() &&
+    (insideA ? (fa < 0.0 && fb >= 0.0) : (fa >= 0.0 && fb < 0.0));
   if (usable)
   {
     int side = 0;

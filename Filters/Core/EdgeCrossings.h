@@ -26,12 +26,12 @@ struct EdgeCrossingCount
 /// `axis`); `insideA`/`insideB` are the exact signs at the endpoints. Stops
 /// early once two crossings are found.
 EdgeCrossingCount CountEdgeCrossings(const CsgExpressionPtr& expression,
-  const std::vector<Quadric>& primitives, const Vec3& a, const Vec3& b, int axis, bool insideA,
+  const PrimitiveSet& primitives, const Vec3& a, const Vec3& b, int axis, bool insideA,
   bool insideB, int maxBisections = 24);
 
 /// A point of the surface on a segment whose endpoint signs differ (root
 /// finding on the exact field, paper 4.3), with `insideA` the sign at a.
-Vec3 FindEdgeCrossing(const CsgExpression& expression, const std::vector<Quadric>& primitives,
+Vec3 FindEdgeCrossing(const CsgExpression& expression, const PrimitiveSet& primitives,
   const Vec3& a, const Vec3& b, bool insideA);
 
 } // namespace tpc

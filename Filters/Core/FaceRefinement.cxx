@@ -29,7 +29,7 @@ namespace
 struct FaceRefiner
 {
   const CsgExpressionPtr& Expression;
-  const std::vector<Quadric>& Primitives;
+  const PrimitiveSet& Primitives;
   const RootGrid& Grid;
   int Axis;
   std::uint32_t Plane;
@@ -126,7 +126,7 @@ struct FaceRefiner
 } // namespace
 
 FaceRefinementResult RefineFace(const CsgExpressionPtr& expression,
-  const std::vector<Quadric>& primitives, const RootGrid& grid, int axis, std::uint32_t plane,
+  const PrimitiveSet& primitives, const RootGrid& grid, int axis, std::uint32_t plane,
   const FaceTile& face, int maxLevels, CellSignCache& signs)
 {
   FaceRefiner r{ expression, primitives, grid, axis, plane, signs, {} };

@@ -36,7 +36,7 @@ class CellSignCache
 {
 public:
   CellSignCache(const LatticeSignTable& global, const RootGrid& grid,
-    const CsgExpression& expression, const std::vector<Quadric>& primitives)
+    const CsgExpression& expression, const PrimitiveSet& primitives)
     : Global(global)
     , Grid(grid)
     , Expression(expression)
@@ -52,7 +52,7 @@ private:
   const LatticeSignTable& Global;
   const RootGrid& Grid;
   const CsgExpression& Expression;
-  const std::vector<Quadric>& Primitives;
+  const PrimitiveSet& Primitives;
   std::vector<std::pair<PointKey, bool>> Fresh;
 };
 
@@ -65,7 +65,7 @@ struct FaceRefinementResult
 /// Refines the face `face` of a cell, lying in the plane `axis` = `plane`,
 /// into at most `maxLevels` levels of tiles.
 FaceRefinementResult RefineFace(const CsgExpressionPtr& expression,
-  const std::vector<Quadric>& primitives, const RootGrid& grid, int axis, std::uint32_t plane,
+  const PrimitiveSet& primitives, const RootGrid& grid, int axis, std::uint32_t plane,
   const FaceTile& face, int maxLevels, CellSignCache& signs);
 
 } // namespace tpc

@@ -11,7 +11,7 @@ namespace tpc
 {
 
 McCompatibility TestMcCompatibility(
-  const AdaptiveOctree& tree, std::uint32_t n, const std::vector<Quadric>& prims, double tolerance)
+  const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& prims, double tolerance)
 {
   McCompatibility v;
   v.Kind = McVerdict::Split;

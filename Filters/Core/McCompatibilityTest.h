@@ -45,6 +45,6 @@ constexpr int FaceRefinementLevels = 10;
 ///   argument of Lemma 2 this makes the surface in the cell a single disk
 ///   (Lemma 3) bounded by that loop.
 McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
-  const std::vector<Quadric>& primitives, double tolerance);
+  const PrimitiveSet& primitives, double tolerance);
 
 } // namespace tpc

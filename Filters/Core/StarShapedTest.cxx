@@ -1,5 +1,6 @@
 #include "StarShapedTest.h"
 
+#include "ExactPredicates.h"
 #include "SymmetricEigen.h"
 
 #include <cmath>
@@ -11,7 +12,7 @@ namespace
 constexpr int VerificationDepth = 4;
 constexpr int VerificationBudget = 200; // sub-boxes per leaf and witness
 
-bool VerifyLeaf(
+bool VerifyQuadricLeaf(
   const Quadric& q, int sigma, const StarWitness& w, const Box3& box, int depth, int& budget)
 {
   if (--budget < 0)
@@ -39,7 +40,7 @@ bool VerifyLeaf(
   const int count = SplitBox(box, pieces);
   for (int piece = 0; piece < count; ++piece)
   {
-    if (!VerifyLeaf(q, sigma, w, pieces[piece], depth - 1, budget))
+    if (!VerifyQuadricLeaf(q, sigma, w, pieces[piece], depth - 1, budget))
     {
       return false;
     }
@@ -47,9 +48,35 @@ bool VerifyLeaf(
   return true;
 }
 
-/// Unit outward normals of each leaf sampled near the box: box points pulled
-/// onto the leaf surface by a few Newton steps.
-void SampleNormals(const std::vector<CsgLeaf>& leaves, const std::vector<Quadric>& prims,
+/// For a mesh leaf the condition is exact and needs no refinement: on the
+/// plane of triangle abc, n . (x - p) = n . (a - p), whose sign is
+/// Orient3D(a, b, c, p) (a finite witness) or FacingSign(a, b, c, u) (a
+/// direction u = -P). Every triangle that may meet the box is checked.
+bool VerifyMeshLeaf(const MeshSolid& m, const CsgLeaf& leaf, const StarWitness& w)
+{
+  if (!leaf.Triangles)
+  {
+    return false;
+  }
+  const Vec3 u = w.P * -1.0;
+  for (const std::uint32_t t : *leaf.Triangles)
+  {
+    const Vec3& a = m.Vertex(t, 0);
+    const Vec3& b = m.Vertex(t, 1);
+    const Vec3& c = m.Vertex(t, 2);
+    const int s = w.W != 0.0 ? Orient3D(a, b, c, w.P) : FacingSign(a, b, c, u);
+    if (s * leaf.Sigma <= 0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Unit outward normals of each leaf sampled near the box: for a quadric, box
+/// points pulled onto its surface by a few Newton steps; for a mesh, the
+/// normals of its triangles meeting the box.
+void SampleNormals(const std::vector<CsgLeaf>& leaves, const PrimitiveSet& prims,
   const Box3& box, int planeAxis, std::vector<Vec3>& normals)
 {
   const Vec3 c = box.Center();
@@ -62,7 +89,26 @@ void SampleNormals(const std::vector<CsgLeaf>& leaves, const std::vector<Quadric
   }
   for (const CsgLeaf& leaf : leaves)
   {
-    const Quadric& q = prims[leaf.Primitive];
+    if (leaf.Kind == PrimitiveKind::Mesh)
+    {
+      if (leaf.Triangles)
+      {
+        for (const std::uint32_t t : *leaf.Triangles)
+        {
+          Vec3 n = prims.Meshes[leaf.Primitive].Normal(t) * static_cast<double>(leaf.Sigma);
+          if (planeAxis >= 0)
+          {
+            n[planeAxis] = 0.0;
+          }
+          if (Norm(n) > 0.0)
+          {
+            normals.push_back(Normalized(n));
+          }
+        }
+      }
+      continue;
+    }
+    const Quadric& q = prims.Quadrics[leaf.Primitive];
     for (int s = 0; s < 9; ++s)
     {
       Vec3 x = s == 0 ? c : (box.Corner(s - 1) + c) * 0.5;
@@ -168,7 +214,7 @@ bool CriticalPoint(const Quadric& q, const Box3& box, int planeAxis, Vec3& point
     Norm(Vec3(delta[0], delta[1], delta[2])) > 0.0;
 }
 
-bool IsStarShaped(const CsgExpressionPtr& expression, const std::vector<Quadric>& prims,
+bool IsStarShaped(const CsgExpressionPtr& expression, const PrimitiveSet& prims,
   const Box3& box, int planeAxis)
 {
   const std::vector<CsgLeaf> leaves = expression->Leaves();
@@ -183,7 +229,18 @@ bool IsStarShaped(const CsgExpressionPtr& expression, const std::vector<Quadric>
     Vec3 u;
     for (const CsgLeaf& leaf : leaves)
     {
-      Vec3 n = prims[leaf.Primitive].Gradient(c) * static_cast<double>(leaf.Sigma);
+      Vec3 n;
+      if (leaf.Kind == PrimitiveKind::Quadric)
+      {
+        n = prims.Quadrics[leaf.Primitive].Gradient(c) * static_cast<double>(leaf.Sigma);
+      }
+      else if (leaf.Triangles)
+      {
+        for (const std::uint32_t t : *leaf.Triangles)
+        {
+          n += prims.Meshes[leaf.Primitive].Normal(t) * static_cast<double>(leaf.Sigma);
+        }
+      }
       if (planeAxis >= 0)
       {
         n[planeAxis] = 0.0;
@@ -210,8 +267,9 @@ bool IsStarShaped(const CsgExpressionPtr& expression, const std::vector<Quadric>
     // Solids convex around a centre (spheres, ellipsoids, rods) are seen
     // whole from it; holes (sigma < 0) are seen from behind their wall.
     Vec3 center;
-    if (leaf.Sigma > 0 && !prims[leaf.Primitive].IsLinear() &&
-      CriticalPoint(prims[leaf.Primitive], box, planeAxis, center))
+    if (leaf.Kind == PrimitiveKind::Quadric && leaf.Sigma > 0 &&
+      !prims.Quadrics[leaf.Primitive].IsLinear() &&
+      CriticalPoint(prims.Quadrics[leaf.Primitive], box, planeAxis, center))
     {
       candidates.push_back({ center, 1.0 });
     }
@@ -240,13 +298,17 @@ bool IsStarShaped(const CsgExpressionPtr& expression, const std::vector<Quadric>
 }
 } // namespace
 
-bool VerifyStarWitness(const CsgExpression& expression, const std::vector<Quadric>& primitives,
+bool VerifyStarWitness(const CsgExpression& expression, const PrimitiveSet& primitives,
   const Box3& box, const StarWitness& witness, int refinementDepth)
 {
   for (const CsgLeaf& leaf : expression.Leaves())
   {
     int budget = VerificationBudget;
-    if (!VerifyLeaf(primitives[leaf.Primitive], leaf.Sigma, witness, box, refinementDepth, budget))
+    const bool ok = leaf.Kind == PrimitiveKind::Mesh
+      ? VerifyMeshLeaf(primitives.Meshes[leaf.Primitive], leaf, witness)
+      : VerifyQuadricLeaf(primitives.Quadrics[leaf.Primitive], leaf.Sigma, witness, box,
+          refinementDepth, budget);
+    if (!ok)
     {
       return false;
     }
@@ -255,13 +317,13 @@ bool VerifyStarWitness(const CsgExpression& expression, const std::vector<Quadri
 }
 
 bool IsStarShapedWithRespectToVoxel(
-  const CsgExpressionPtr& expression, const std::vector<Quadric>& primitives, const Box3& cell)
+  const CsgExpressionPtr& expression, const PrimitiveSet& primitives, const Box3& cell)
 {
   return IsStarShaped(expression, primitives, cell, -1);
 }
 
 bool IsStarShapedWithRespectToFace(const CsgExpressionPtr& expression,
-  const std::vector<Quadric>& primitives, const Box3& face, int axis)
+  const PrimitiveSet& primitives, const Box3& face, int axis)
 {
   const auto pruned = CsgExpression::Prune(expression, face, primitives);
   if (pruned.Sign != RegionSign::Mixed)

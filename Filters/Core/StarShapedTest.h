@@ -42,14 +42,14 @@ namespace tpc
 /// True if a witness was found and verified for the solid restricted to the
 /// voxel `cell` (expression pruned to the cell).
 bool IsStarShapedWithRespectToVoxel(
-  const CsgExpressionPtr& expression, const std::vector<Quadric>& primitives, const Box3& cell);
+  const CsgExpressionPtr& expression, const PrimitiveSet& primitives, const Box3& cell);
 
 /// Same for a face (a box degenerate along `axis`).
 bool IsStarShapedWithRespectToFace(const CsgExpressionPtr& expression,
-  const std::vector<Quadric>& primitives, const Box3& face, int axis);
+  const PrimitiveSet& primitives, const Box3& face, int axis);
 
 /// Verifies (*) for one witness; exposed for tests.
-bool VerifyStarWitness(const CsgExpression& expression, const std::vector<Quadric>& primitives,
+bool VerifyStarWitness(const CsgExpression& expression, const PrimitiveSet& primitives,
   const Box3& box, const StarWitness& witness, int refinementDepth);
 
 } // namespace tpc

@@ -232,7 +232,7 @@ bool FanIsConsistent(const std::vector<Vec3>& pts, const std::vector<Vec3>& norm
 /// in Extended Marching Cubes), kept inside the cell; if its fan would fold,
 /// the loop centroid pulled onto the surface, then the centroid itself.
 Vec3 PlaceLoopVertex(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals,
-  const Box3& cell, const CsgExpression& expression, const std::vector<Quadric>& prims)
+  const Box3& cell, const CsgExpression& expression, const PrimitiveSet& prims)
 {
   Vec3 m;
   for (const Vec3& p : pts)

@@ -25,7 +25,7 @@ namespace tpc
 /// The solid to contour: primitives combined by a CSG expression.
 struct ImplicitScene
 {
-  std::vector<Quadric> Primitives;
+  PrimitiveSet Primitives;
   CsgExpressionPtr Expression;
 };
 

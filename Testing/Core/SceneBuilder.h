@@ -15,8 +15,13 @@ struct SceneBuilder
 
   CsgTerm Add(const Quadric& q)
   {
-    Scene.Primitives.push_back(q);
-    return CsgTerm::Primitive(static_cast<int>(Scene.Primitives.size() - 1));
+    Scene.Primitives.Quadrics.push_back(q);
+    return CsgTerm::Primitive(static_cast<int>(Scene.Primitives.Quadrics.size() - 1));
+  }
+  CsgTerm Mesh(tpc::MeshSolid m)
+  {
+    Scene.Primitives.Meshes.push_back(std::move(m));
+    return CsgTerm::Mesh(static_cast<int>(Scene.Primitives.Meshes.size() - 1));
   }
   CsgTerm Sphere(const Vec3& c, double r) { return Add(Quadric::Sphere(c, r)); }
   CsgTerm Ellipsoid(const Vec3& c, const Vec3& axes) { return Add(Quadric::Ellipsoid(c, axes)); }

@@ -1,0 +1,112 @@
+#include "ExactPredicates.h"
+
+#include "ExactSum.h"
+#include "Interval.h"
+
+namespace tpc
+{
+namespace
+{
+/// A matrix entry x - y (y = 0 for a plain value).
+struct Difference
+{
+  double X, Y;
+};
+
+/// Exact sign of the 3x3 determinant of differences, after an interval filter.
+int SignOfDeterminant(const Difference m[3][3])
+{
+  static const int perms[6][3] = { { 0, 1, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 0, 2, 1 }, { 2, 1, 0 },
+    { 1, 0, 2 } };
+  static const int parity[6] = { 1, 1, 1, -1, -1, -1 };
+  Interval det(0.0);
+  for (int p = 0; p < 6; ++p)
+  {
+    Interval term(static_cast<double>(parity[p]));
+    for (int r = 0; r < 3; ++r)
+    {
+      const Difference& d = m[r][perms[p][r]];
+      term = term * (Interval(d.X) - Interval(d.Y));
+    }
+    det += term;
+  }
+  if (det.lo > 0.0)
+  {
+    return 1;
+  }
+  if (det.hi < 0.0)
+  {
+    return -1;
+  }
+  if (det.lo == 0.0 && det.hi == 0.0)
+  {
+    return 0;
+  }
+  // Expand each product of three differences into eight products of raw
+  // coordinates; every one of them is summed exactly.
+  ExactSum sum;
+  for (int p = 0; p < 6; ++p)
+  {
+    const Difference& d0 = m[0][perms[p][0]];
+    const Difference& d1 = m[1][perms[p][1]];
+    const Difference& d2 = m[2][perms[p][2]];
+    for (int choice = 0; choice < 8; ++choice)
+    {
+      const double f0 = (choice & 1) ? -d0.Y : d0.X;
+      const double f1 = (choice & 2) ? -d1.Y : d1.X;
+      const double f2 = (choice & 4) ? -d2.Y : d2.X;
+      if (f0 != 0.0 && f1 != 0.0 && f2 != 0.0)
+      {
+        sum.AddProduct(parity[p] * f0, f1, f2);
+      }
+    }
+  }
+  return sum.Sign();
+}
+} // namespace
+
+int Orient2D(double au, double av, double bu, double bv, double cu, double cv)
+{
+  const Interval det = (Interval(bu) - Interval(au)) * (Interval(cv) - Interval(av)) -
+    (Interval(bv) - Interval(av)) * (Interval(cu) - Interval(au));
+  if (det.lo > 0.0)
+  {
+    return 1;
+  }
+  if (det.hi < 0.0)
+  {
+    return -1;
+  }
+  if (det.lo == 0.0 && det.hi == 0.0)
+  {
+    return 0;
+  }
+  // (bu - au)(cv - av) - (bv - av)(cu - au); the au*av terms cancel.
+  ExactSum sum;
+  sum.AddProduct(bu, cv);
+  sum.AddProduct(-bu, av);
+  sum.AddProduct(-au, cv);
+  sum.AddProduct(-bv, cu);
+  sum.AddProduct(bv, au);
+  sum.AddProduct(av, cu);
+  return sum.Sign();
+}
+
+int Orient3D(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
+{
+  const Difference m[3][3] = { { { a[0], d[0] }, { a[1], d[1] }, { a[2], d[2] } },
+    { { b[0], d[0] }, { b[1], d[1] }, { b[2], d[2] } },
+    { { c[0], d[0] }, { c[1], d[1] }, { c[2], d[2] } } };
+  return SignOfDeterminant(m);
+}
+
+int FacingSign(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& u)
+{
+  // n . u = det[b - a, c - a, u]
+  const Difference m[3][3] = { { { b[0], a[0] }, { b[1], a[1] }, { b[2], a[2] } },
+    { { c[0], a[0] }, { c[1], a[1] }, { c[2], a[2] } },
+    { { u[0], 0.0 }, { u[1], 0.0 }, { u[2], 0.0 } } };
+  return SignOfDeterminant(m);
+}
+
+} // namespace tpc

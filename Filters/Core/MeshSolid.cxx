@@ -1,0 +1,341 @@
+#include "MeshSolid.h"
+
+#include "ExactPredicates.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tpc
+{
+
+MeshSolid::MeshSolid(std::vector<Vec3> points, std::vector<std::array<std::uint32_t, 3>> triangles)
+  : Vertices(std::move(points))
+  , Faces(std::move(triangles))
+{
+  this->Box = { { HUGE_VAL, HUGE_VAL, HUGE_VAL }, { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL } };
+  this->FaceBoxes.resize(this->Faces.size());
+  for (std::size_t t = 0; t < this->Faces.size(); ++t)
+  {
+    Box3& b = this->FaceBoxes[t];
+    b = { this->Vertex(static_cast<std::uint32_t>(t), 0), this->Vertex(static_cast<std::uint32_t>(t), 0) };
+    for (int k = 1; k < 3; ++k)
+    {
+      const Vec3& p = this->Vertex(static_cast<std::uint32_t>(t), k);
+      for (int a = 0; a < 3; ++a)
+      {
+        b.lo[a] = std::min(b.lo[a], p[a]);
+        b.hi[a] = std::max(b.hi[a], p[a]);
+      }
+    }
+    for (int a = 0; a < 3; ++a)
+    {
+      this->Box.lo[a] = std::min(this->Box.lo[a], b.lo[a]);
+      this->Box.hi[a] = std::max(this->Box.hi[a], b.hi[a]);
+    }
+  }
+  if (this->Faces.empty())
+  {
+    this->Box = {};
+    return;
+  }
+  // Ray-casting grid over (y, z): about two triangles per cell.
+  const int n = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(this->Faces.size()) / 2.0)));
+  for (int k = 0; k < 2; ++k)
+  {
+    const int axis = k + 1;
+    this->GridSize[k] = n;
+    this->GridOrigin[k] = this->Box.lo[axis];
+    const double extent = this->Box.hi[axis] - this->Box.lo[axis];
+    this->GridStep[k] = extent > 0.0 ? extent / n : 1.0;
+  }
+  auto cellRange = [&](int k, double lo, double hi, int& c0, int& c1) {
+    c0 = std::clamp(static_cast<int>(std::floor((lo - this->GridOrigin[k]) / this->GridStep[k])), 0, this->GridSize[k] - 1);
+    c1 = std::clamp(static_cast<int>(std::floor((hi - this->GridOrigin[k]) / this->GridStep[k])), 0, this->GridSize[k] - 1);
+  };
+  std::vector<std::uint32_t> counts(static_cast<std::size_t>(n) * n + 1, 0);
+  for (int pass = 0; pass < 2; ++pass)
+  {
+    for (std::size_t t = 0; t < this->Faces.size(); ++t)
+    {
+      int y0, y1, z0, z1;
+      // Slightly widened: a point on a cell border must find the triangle.
+      const Box3& b = this->FaceBoxes[t];
+      const double wy = 1e-9 * this->GridStep[0], wz = 1e-9 * this->GridStep[1];
+      cellRange(0, b.lo[1] - wy, b.hi[1] + wy, y0, y1);
+      cellRange(1, b.lo[2] - wz, b.hi[2] + wz, z0, z1);
+      for (int y = y0; y <= y1; ++y)
+      {
+        for (int z = z0; z <= z1; ++z)
+        {
+          const std::size_t cell = static_cast<std::size_t>(y) * n + z;
+          if (pass == 0)
+          {
+            ++counts[cell + 1];
+          }
+          else
+          {
+            this->GridTriangles[counts[cell]++] = static_cast<std::uint32_t>(t);
+          }
+        }
+      }
+    }
+    if (pass == 0)
+    {
+      for (std::size_t c = 1; c < counts.size(); ++c)
+      {
+        counts[c] += counts[c - 1];
+      }
+      this->GridStart = counts;
+      this->GridTriangles.resize(counts.back());
+    }
+  }
+}
+
+bool MeshSolid::Crosses(std::uint32_t t, const Vec3& a, const Vec3* b, int axis) const
+{
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  const Vec3& A = this->Vertex(t, 0);
+  const Vec3& B = this->Vertex(t, 1);
+  const Vec3& C = this->Vertex(t, 2);
+  const int o = Orient2D(A[u], A[v], B[u], B[v], C[u], C[v]);
+  if (o == 0)
+  {
+    return false; // parallel to the segment: the perturbed segment misses it
+  }
+  // Which side of edge e0-e1 the segment's trace (a[u], a[v]) shifted by
+  // (eps, eps^2) lies on; never 0.
+  auto side = [&](const Vec3& e0, const Vec3& e1) {
+    const int s = Orient2D(e0[u], e0[v], e1[u], e1[v], a[u], a[v]);
+    if (s != 0)
+    {
+      return s;
+    }
+    if (e1[v] != e0[v])
+    {
+      return e1[v] > e0[v] ? -1 : 1;
+    }
+    return e1[u] > e0[u] ? 1 : -1;
+  };
+  if (side(A, B) != o || side(B, C) != o || side(C, A) != o)
+  {
+    return false;
+  }
+  // Behind the triangle (inner side) iff Orient3D > 0; far along +axis the
+  // inner side is where the normal's axis component is negative.
+  const bool innerA = Orient3D(A, B, C, a) > 0;
+  const bool innerB = b ? Orient3D(A, B, C, *b) > 0 : o < 0;
+  return innerA != innerB;
+}
+
+bool MeshSolid::IsInside(const Vec3& p) const
+{
+  if (this->Faces.empty() || !(p[0] <= this->Box.hi[0]) || p[1] < this->Box.lo[1] || p[1] > this->Box.hi[1] ||
+    p[2] < this->Box.lo[2] || p[2] > this->Box.hi[2])
+  {
+    return false;
+  }
+  const int y = std::clamp(static_cast<int>(std::floor((p[1] - this->GridOrigin[0]) / this->GridStep[0])), 0, this->GridSize[0] - 1);
+  const int z = std::clamp(static_cast<int>(std::floor((p[2] - this->GridOrigin[1]) / this->GridStep[1])), 0, this->GridSize[1] - 1);
+  const std::size_t cell = static_cast<std::size_t>(y) * this->GridSize[1] + z;
+  int crossings = 0;
+  for (std::uint32_t i = this->GridStart[cell]; i < this->GridStart[cell + 1]; ++i)
+  {
+    const std::uint32_t t = this->GridTriangles[i];
+    const Box3& b = this->FaceBoxes[t];
+    if (b.hi[0] < p[0] || p[1] < b.lo[1] || p[1] > b.hi[1] || p[2] < b.lo[2] || p[2] > b.hi[2])
+    {
+      continue;
+    }
+    crossings += this->Crosses(t, p, nullptr, 0) ? 1 : 0;
+  }
+  return (crossings & 1) != 0;
+}
+
+int MeshSolid::CountCrossings(
+  const Vec3& a, const Vec3& b, int axis, const TriangleList& triangles) const
+{
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  int crossings = 0;
+  for (const std::uint32_t t : triangles)
+  {
+    const Box3& box = this->FaceBoxes[t];
+    if (box.hi[axis] < a[axis] || box.lo[axis] > b[axis] || a[u] < box.lo[u] || a[u] > box.hi[u] ||
+      a[v] < box.lo[v] || a[v] > box.hi[v])
+    {
+      continue;
+    }
+    crossings += this->Crosses(t, a, &b, axis) ? 1 : 0;
+  }
+  return crossings;
+}
+
+namespace
+{
+/// Conservative separating-axis test: reports overlap unless a separating
+/// axis is found with a margin well above rounding error.
+bool TriangleBoxOverlap(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Box3& box)
+{
+  const Vec3 c = box.Center();
+  Vec3 h;
+  double scale = 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    h[a] = 0.5 * (box.hi[a] - box.lo[a]);
+    scale = std::max({ scale, std::fabs(c[a]) + h[a], std::fabs(p0[a]), std::fabs(p1[a]), std::fabs(p2[a]) });
+  }
+  const double slack = 1e-12 * scale;
+  const Vec3 v[3] = { p0 - c, p1 - c, p2 - c };
+  // Box axes.
+  for (int a = 0; a < 3; ++a)
+  {
+    const double lo = std::min({ v[0][a], v[1][a], v[2][a] });
+    const double hi = std::max({ v[0][a], v[1][a], v[2][a] });
+    if (lo > h[a] + slack || hi < -h[a] - slack)
+    {
+      return false;
+    }
+  }
+  const Vec3 e[3] = { v[1] - v[0], v[2] - v[1], v[0] - v[2] };
+  auto separated = [&](const Vec3& axis) {
+    const double len = std::fabs(axis[0]) + std::fabs(axis[1]) + std::fabs(axis[2]);
+    if (len == 0.0)
+    {
+      return false;
+    }
+    const double d0 = Dot(axis, v[0]), d1 = Dot(axis, v[1]), d2 = Dot(axis, v[2]);
+    const double r = h[0] * std::fabs(axis[0]) + h[1] * std::fabs(axis[1]) + h[2] * std::fabs(axis[2]);
+    const double margin = r + 1e-9 * (r + len * scale) + slack * len;
+    return std::min({ d0, d1, d2 }) > margin || std::max({ d0, d1, d2 }) < -margin;
+  };
+  // Triangle plane.
+  if (separated(Cross(e[0], e[1])))
+  {
+    return false;
+  }
+  // Edge cross products.
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      Vec3 unit;
+      unit[a] = 1.0;
+      if (separated(Cross(unit, e[i])))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+} // namespace
+
+void MeshSolid::Overlapping(const Box3& box, const TriangleList& candidates, TriangleList& out) const
+{
+  out.clear();
+  for (const std::uint32_t t : candidates)
+  {
+    const Box3& b = this->FaceBoxes[t];
+    bool apart = false;
+    for (int a = 0; a < 3 && !apart; ++a)
+    {
+      apart = b.lo[a] > box.hi[a] || b.hi[a] < box.lo[a];
+    }
+    if (!apart && TriangleBoxOverlap(this->Vertex(t, 0), this->Vertex(t, 1), this->Vertex(t, 2), box))
+    {
+      out.push_back(t);
+    }
+  }
+}
+
+TriangleList MeshSolid::Overlapping(const Box3& box) const
+{
+  TriangleList all(this->Faces.size()), out;
+  for (std::size_t t = 0; t < all.size(); ++t)
+  {
+    all[t] = static_cast<std::uint32_t>(t);
+  }
+  this->Overlapping(box, all, out);
+  return out;
+}
+
+Vec3 MeshSolid::Normal(std::uint32_t t) const
+{
+  return Normalized(Cross(this->Vertex(t, 1) - this->Vertex(t, 0), this->Vertex(t, 2) - this->Vertex(t, 0)));
+}
+
+namespace
+{
+/// Closest point of triangle abc to p (Ericson, Real-Time Collision Detection 5.1.5).
+Vec3 ClosestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = Dot(ab, ap), d2 = Dot(ac, ap);
+  if (d1 <= 0 && d2 <= 0)
+  {
+    return a;
+  }
+  const Vec3 bp = p - b;
+  const double d3 = Dot(ab, bp), d4 = Dot(ac, bp);
+  if (d3 >= 0 && d4 <= d3)
+  {
+    return b;
+  }
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0)
+  {
+    return a + ab * (d1 / (d1 - d3));
+  }
+  const Vec3 cp = p - c;
+  const double d5 = Dot(ab, cp), d6 = Dot(ac, cp);
+  if (d6 >= 0 && d5 <= d6)
+  {
+    return c;
+  }
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0)
+  {
+    return a + ac * (d2 / (d2 - d6));
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+  {
+    return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
+  }
+  const double denom = 1.0 / (va + vb + vc);
+  return a + ab * (vb * denom) + ac * (vc * denom);
+}
+} // namespace
+
+double MeshSolid::ApproximateSignedDistance(
+  const Vec3& p, const TriangleList& triangles, std::uint32_t* nearest) const
+{
+  double best = HUGE_VAL;
+  std::uint32_t bestT = triangles.empty() ? 0 : triangles.front();
+  Vec3 bestQ;
+  for (const std::uint32_t t : triangles)
+  {
+    const Vec3 q = ClosestPointOnTriangle(p, this->Vertex(t, 0), this->Vertex(t, 1), this->Vertex(t, 2));
+    const double d = Dot(p - q, p - q);
+    if (d < best)
+    {
+      best = d;
+      bestT = t;
+      bestQ = q;
+    }
+  }
+  if (nearest)
+  {
+    *nearest = bestT;
+  }
+  if (triangles.empty())
+  {
+    return HUGE_VAL;
+  }
+  const double d = std::sqrt(best);
+  return Dot(p - bestQ, Cross(this->Vertex(bestT, 1) - this->Vertex(bestT, 0),
+                          this->Vertex(bestT, 2) - this->Vertex(bestT, 0))) < 0.0
+    ? -d
+    : d;
+}
+
+} // namespace tpc
