@@ -93,6 +93,9 @@ MeshSolid::MeshSolid(std::vector<Vec3> points, std::vector<std::array<std::uint3
 
 bool MeshSolid::Crosses(std::uint32_t t, const Vec3& a, const Vec3* b, int axis) const
 {
+  // Every query point q stands for q + (eps, eps^2, eps^3), one symbolic
+  // perturbation shared by all queries, so every answer is about the same
+  // perturbed solid and no query point lies on the surface.
   const int u = (axis + 1) % 3, v = (axis + 2) % 3;
   const Vec3& A = this->Vertex(t, 0);
   const Vec3& B = this->Vertex(t, 1);
@@ -102,29 +105,44 @@ bool MeshSolid::Crosses(std::uint32_t t, const Vec3& a, const Vec3* b, int axis)
   {
     return false; // parallel to the segment: the perturbed segment misses it
   }
-  // Which side of edge e0-e1 the segment's trace (a[u], a[v]) shifted by
-  // (eps, eps^2) lies on; never 0.
+  // Side of edge e0-e1 on which the perturbed trace of the segment lies:
+  // Orient2D(e0, e1, q + d) = s + (e1_u - e0_u) d_v - (e1_v - e0_v) d_u,
+  // decided by the lowest power of eps when s = 0. Never 0.
   auto side = [&](const Vec3& e0, const Vec3& e1) {
     const int s = Orient2D(e0[u], e0[v], e1[u], e1[v], a[u], a[v]);
     if (s != 0)
     {
       return s;
     }
-    if (e1[v] != e0[v])
-    {
-      return e1[v] > e0[v] ? -1 : 1;
-    }
-    return e1[u] > e0[u] ? 1 : -1;
+    const double du = e1[u] - e0[u], dv = e1[v] - e0[v];
+    const double first = u < v ? -dv : du, second = u < v ? du : -dv;
+    return first != 0.0 ? (first > 0.0 ? 1 : -1) : (second > 0.0 ? 1 : -1);
   };
   if (side(A, B) != o || side(B, C) != o || side(C, A) != o)
   {
     return false;
   }
-  // Behind the triangle (inner side) iff Orient3D > 0; far along +axis the
-  // inner side is where the normal's axis component is negative.
-  const bool innerA = Orient3D(A, B, C, a) > 0;
-  const bool innerB = b ? Orient3D(A, B, C, *b) > 0 : o < 0;
-  return innerA != innerB;
+  // Inner side (behind the triangle): Orient3D > 0. For a point on the
+  // plane, n . (A - q - d) = -(n_x eps + n_y eps^2 + n_z eps^3) decides.
+  auto inner = [&](const Vec3& q) {
+    const int s = Orient3D(A, B, C, q);
+    if (s != 0)
+    {
+      return s > 0;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      const int uk = (k + 1) % 3, vk = (k + 2) % 3;
+      const int nk = Orient2D(A[uk], A[vk], B[uk], B[vk], C[uk], C[vk]); // sign of n_k
+      if (nk != 0)
+      {
+        return nk < 0;
+      }
+    }
+    return false;
+  };
+  // Far along +axis the inner side is where the normal's axis component is negative.
+  return inner(a) != (b ? inner(*b) : o < 0);
 }
 
 bool MeshSolid::IsInside(const Vec3& p) const

@@ -1,11 +1,11 @@
 // A closed, outward-oriented triangle mesh as a solid (paper 5.1-5.3, 6.4).
 //
 // Inside/outside is decided exactly: the parity of crossings of a ray from
-// the point, with the exact predicates of ExactPredicates.h and a symbolic
-// perturbation of the ray (it is shifted by (eps, eps^2) across its axis), so
-// rays through edges and vertices are counted once and consistently. Points
-// on the surface are outside, as everywhere in the core. This is guaranteed
-// correct for closed meshes - unlike signs from closest features, which fail
+// the point, with the exact predicates of ExactPredicates.h. Every query
+// point q stands for q + (eps, eps^2, eps^3) (one symbolic perturbation for
+// all queries), so rays through edges and vertices are counted once and
+// consistently, and a point on the surface is classified like the points just
+// beside it in that direction. This is guaranteed correct for closed meshes - unlike signs from closest features, which fail
 // on real parts (vtkImplicitPolyDataDistance finds hundreds of spurious
 // components on a genus-11 mesh). Crossings of axis-aligned segments use the
 // same rule, so "how many times does this lattice edge cross the surface" is
@@ -38,7 +38,7 @@ public:
   std::size_t TriangleCount() const { return this->Faces.size(); }
   const Box3& Bounds() const { return this->Box; }
 
-  /// Exact: strictly inside the solid (on the surface counts as outside).
+  /// Exact: inside the (symbolically perturbed) solid.
   bool IsInside(const Vec3& p) const;
 
   /// Exact number of crossings of the surface by the segment from `a` to `b`,

@@ -2,9 +2,8 @@
 // whatever happens (including cells stopped by a low depth limit), the output
 // is a closed, manifold, consistently oriented surface; and when two runs at
 // different tolerances are both guaranteed they agree on the topology.
+#include "CoreContour.h"
 #include "SceneBuilder.h"
-#include "SurfaceExtraction.h"
-#include "TopologyReport.h"
 
 #include <gtest/gtest.h>
 
@@ -27,20 +26,9 @@ struct Outcome
 
 Outcome Contour(const tpc::ImplicitScene& scene, double tolerance, int depth)
 {
-  const Box3 bounds{ { -0.8, -0.8, -0.8 }, { 0.8, 0.8, 0.8 } };
-  Box3 domain = bounds;
-  for (int a = 0; a < 3; ++a)
-  {
-    domain.lo[a] -= 0.1;
-    domain.hi[a] += 0.1;
-  }
-  tpc::SubdivisionParameters p;
-  p.HausdorffTolerance = tolerance * bounds.Diagonal();
-  p.MaximumDepth = depth;
-  const tpc::RootGrid grid = tpc::MakeRootGrid(domain, p.HausdorffTolerance, p.MaximumDepth);
-  const tpc::SubdivisionResult s = tpc::RunTopologyPreservingSubdivision(scene, grid, p);
-  const tpc::ExtractionResult e = tpc::ExtractSurface(s.Octree, scene);
-  return { tpc::ComputeTopologyReport(e.Mesh), s.UnresolvedCells, e.InconsistentCells };
+  const tpctest::ContourRun r =
+    tpctest::Contour(scene, { { -0.8, -0.8, -0.8 }, { 0.8, 0.8, 0.8 } }, tolerance, depth);
+  return { r.Report, r.Subdivision.UnresolvedCells, r.Extraction.InconsistentCells };
 }
 
 /// A random solid: primitives folded with random operations, clipped to a box.

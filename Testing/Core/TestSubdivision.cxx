@@ -1,9 +1,8 @@
 // The whole core pipeline (subdivision + extraction + report) on small
 // scenes: adaptivity, the two-sided Hausdorff bound, closed manifold output,
 // and what happens when a limit stops refinement.
+#include "CoreContour.h"
 #include "SceneBuilder.h"
-#include "SurfaceExtraction.h"
-#include "TopologyReport.h"
 
 #include <gtest/gtest.h>
 
@@ -14,38 +13,8 @@ using tpc::Box3;
 using tpc::Vec3;
 using tpctest::SceneBuilder;
 
-namespace
-{
-struct ContourRun
-{
-  tpc::SubdivisionResult Subdivision;
-  tpc::ExtractionResult Extraction;
-  tpc::TopologyReport Report;
-  double Tolerance = 0.0;
-};
-
-ContourRun Contour(const tpc::ImplicitScene& scene, const Box3& bounds, double relativeTolerance,
-  int maxDepth = 16)
-{
-  ContourRun r;
-  Box3 domain = bounds;
-  const double d = bounds.Diagonal();
-  for (int a = 0; a < 3; ++a)
-  {
-    domain.lo[a] -= 0.05 * d;
-    domain.hi[a] += 0.05 * d;
-  }
-  tpc::SubdivisionParameters p;
-  p.HausdorffTolerance = relativeTolerance * d;
-  p.MaximumDepth = maxDepth;
-  r.Tolerance = p.HausdorffTolerance;
-  const tpc::RootGrid grid = tpc::MakeRootGrid(domain, p.HausdorffTolerance, p.MaximumDepth);
-  r.Subdivision = tpc::RunTopologyPreservingSubdivision(scene, grid, p);
-  r.Extraction = tpc::ExtractSurface(r.Subdivision.Octree, scene);
-  r.Report = tpc::ComputeTopologyReport(r.Extraction.Mesh);
-  return r;
-}
-} // namespace
+using tpctest::Contour;
+using tpctest::ContourRun;
 
 TEST(Subdivision, SphereIsAdaptiveClosedAndWithinTolerance)
 {

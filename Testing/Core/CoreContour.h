@@ -1,0 +1,42 @@
+// Runs the whole core pipeline (subdivision, extraction, report) on a scene,
+// for the tests.
+#pragma once
+
+#include "SurfaceExtraction.h"
+#include "TopologyPreservingSubdivision.h"
+#include "TopologyReport.h"
+
+namespace tpctest
+{
+struct ContourRun
+{
+  tpc::SubdivisionResult Subdivision;
+  tpc::ExtractionResult Extraction;
+  tpc::TopologyReport Report;
+  double Tolerance = 0.0; ///< absolute
+};
+
+/// Contours `scene` over `bounds` grown by 5 % of its diagonal, with the
+/// tolerance relative to the diagonal of `bounds`.
+inline ContourRun Contour(const tpc::ImplicitScene& scene, const tpc::Box3& bounds,
+  double relativeTolerance, int maxDepth = 16)
+{
+  ContourRun r;
+  tpc::Box3 domain = bounds;
+  const double d = bounds.Diagonal();
+  for (int a = 0; a < 3; ++a)
+  {
+    domain.lo[a] -= 0.05 * d;
+    domain.hi[a] += 0.05 * d;
+  }
+  tpc::SubdivisionParameters p;
+  p.HausdorffTolerance = relativeTolerance * d;
+  p.MaximumDepth = maxDepth;
+  r.Tolerance = p.HausdorffTolerance;
+  const tpc::RootGrid grid = tpc::MakeRootGrid(domain, p.HausdorffTolerance, p.MaximumDepth);
+  r.Subdivision = tpc::RunTopologyPreservingSubdivision(scene, grid, p);
+  r.Extraction = tpc::ExtractSurface(r.Subdivision.Octree, scene);
+  r.Report = tpc::ComputeTopologyReport(r.Extraction.Mesh);
+  return r;
+}
+} // namespace tpctest

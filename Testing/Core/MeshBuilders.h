@@ -1,0 +1,97 @@
+// Closed triangle meshes with known topology, generated for the core tests
+// (no files, no VTK): a cube, a UV torus and a subdivided icosahedron.
+#pragma once
+
+#include "MeshSolid.h"
+
+#include <array>
+#include <cmath>
+#include <map>
+#include <vector>
+
+namespace tpctest
+{
+using tpc::MeshSolid;
+using tpc::Vec3;
+using Triangles = std::vector<std::array<std::uint32_t, 3>>;
+
+/// Axis-aligned box [lo, hi], outward oriented, 12 triangles.
+inline MeshSolid CubeMesh(const Vec3& lo, const Vec3& hi)
+{
+  std::vector<Vec3> p;
+  for (int c = 0; c < 8; ++c)
+  {
+    p.push_back({ (c & 1) ? hi[0] : lo[0], (c & 2) ? hi[1] : lo[1], (c & 4) ? hi[2] : lo[2] });
+  }
+  const Triangles t = { { 0, 2, 1 }, { 1, 2, 3 }, { 4, 5, 6 }, { 5, 7, 6 }, { 0, 1, 4 }, { 1, 5, 4 },
+    { 2, 6, 3 }, { 3, 6, 7 }, { 0, 4, 2 }, { 2, 4, 6 }, { 1, 3, 5 }, { 3, 7, 5 } };
+  return MeshSolid(p, t);
+}
+
+/// Torus around the z axis (radii R > r), n x m quads split in triangles.
+inline MeshSolid TorusMesh(const Vec3& c, double R, double r, int n, int m)
+{
+  std::vector<Vec3> p;
+  Triangles t;
+  for (int i = 0; i < n; ++i)
+  {
+    const double u = 2 * M_PI * i / n;
+    for (int j = 0; j < m; ++j)
+    {
+      const double v = 2 * M_PI * j / m;
+      p.push_back({ c[0] + (R + r * std::cos(v)) * std::cos(u), c[1] + (R + r * std::cos(v)) * std::sin(u),
+        c[2] + r * std::sin(v) });
+    }
+  }
+  auto id = [&](int i, int j) { return static_cast<std::uint32_t>((i % n) * m + (j % m)); };
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < m; ++j)
+    {
+      t.push_back({ id(i, j), id(i + 1, j), id(i + 1, j + 1) });
+      t.push_back({ id(i, j), id(i + 1, j + 1), id(i, j + 1) });
+    }
+  }
+  return MeshSolid(p, t);
+}
+
+/// Icosahedron subdivided `levels` times, projected on a sphere.
+inline MeshSolid SphereMesh(const Vec3& c, double radius, int levels)
+{
+  const double g = (1 + std::sqrt(5.0)) / 2;
+  std::vector<Vec3> p = { { -1, g, 0 }, { 1, g, 0 }, { -1, -g, 0 }, { 1, -g, 0 }, { 0, -1, g }, { 0, 1, g },
+    { 0, -1, -g }, { 0, 1, -g }, { g, 0, -1 }, { g, 0, 1 }, { -g, 0, -1 }, { -g, 0, 1 } };
+  Triangles t = { { 0, 11, 5 }, { 0, 5, 1 }, { 0, 1, 7 }, { 0, 7, 10 }, { 0, 10, 11 }, { 1, 5, 9 },
+    { 5, 11, 4 }, { 11, 10, 2 }, { 10, 7, 6 }, { 7, 1, 8 }, { 3, 9, 4 }, { 3, 4, 2 }, { 3, 2, 6 },
+    { 3, 6, 8 }, { 3, 8, 9 }, { 4, 9, 5 }, { 2, 4, 11 }, { 6, 2, 10 }, { 8, 6, 7 }, { 9, 8, 1 } };
+  for (int l = 0; l < levels; ++l)
+  {
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> mid;
+    auto midpoint = [&](std::uint32_t a, std::uint32_t b) {
+      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+      const auto it = mid.find(key);
+      if (it != mid.end())
+      {
+        return it->second;
+      }
+      p.push_back((p[a] + p[b]) * 0.5);
+      return mid[key] = static_cast<std::uint32_t>(p.size() - 1);
+    };
+    Triangles next;
+    for (const auto& f : t)
+    {
+      const std::uint32_t ab = midpoint(f[0], f[1]), bc = midpoint(f[1], f[2]), ca = midpoint(f[2], f[0]);
+      next.push_back({ f[0], ab, ca });
+      next.push_back({ f[1], bc, ab });
+      next.push_back({ f[2], ca, bc });
+      next.push_back({ ab, bc, ca });
+    }
+    t.swap(next);
+  }
+  for (Vec3& q : p)
+  {
+    q = c + tpc::Normalized(q) * radius;
+  }
+  return MeshSolid(p, t);
+}
+} // namespace tpctest
