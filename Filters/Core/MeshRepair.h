@@ -1,0 +1,60 @@
+// Preparing an input triangle mesh to be a solid, and saying what was wrong.
+//
+// The paper assumes (3) closed manifold primitives without self-intersections.
+// This checks each of those on the input and repairs what can be repaired
+// without guessing: exactly coincident vertices are merged, triangles that
+// repeat a vertex or have no area are dropped, duplicate triangles are
+// dropped, and each connected component is oriented consistently and
+// outward (an inner shell of a hollow solid facing into its cavity).
+// What cannot be repaired (open boundary, non-manifold edges, a
+// non-orientable surface, self-intersections) is reported; the caller
+// decides whether the mesh is still usable.
+#pragma once
+
+#include "Vector3.h"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace tpc
+{
+
+struct MeshRepairReport
+{
+  std::size_t InputTriangles = 0;
+  std::size_t MergedVertices = 0;       ///< vertices equal to an earlier one
+  std::size_t DegenerateTriangles = 0;  ///< dropped: repeated vertex or zero area
+  std::size_t DuplicateTriangles = 0;   ///< dropped: same three vertices
+  std::size_t BoundaryEdges = 0;        ///< edges with one triangle (open mesh)
+  std::size_t NonManifoldEdges = 0;     ///< edges with more than two triangles
+  std::size_t InconsistentEdges = 0;    ///< edges two triangles walk the same way (before repair)
+  std::size_t Components = 0;
+  std::size_t FlippedComponents = 0;    ///< reoriented to face outward
+  bool Orientable = true;
+  std::size_t SelfIntersections = 0;    ///< pairs of triangles that meet improperly (capped count)
+  bool SelfIntersectionsChecked = false;
+  long long EulerCharacteristic = 0;
+  long long Genus = -1;                 ///< of the closed manifold input, else -1
+
+  /// Closed (no boundary), every edge manifold and orientable: a solid.
+  bool Closed() const { return BoundaryEdges == 0 && Orientable; }
+  /// The paper's assumptions: closed, manifold, no self-intersections.
+  bool MeetsAssumptions() const
+  {
+    return Closed() && NonManifoldEdges == 0 && SelfIntersectionsChecked && SelfIntersections == 0;
+  }
+  /// One line per problem found, empty if none.
+  std::string Describe() const;
+};
+
+/// Repairs `points` and `triangles` in place (see above) and reports.
+/// Self-intersections are looked for when `checkSelfIntersections` is set
+/// (at most `maxReported` are counted).
+MeshRepairReport RepairMesh(std::vector<Vec3>& points,
+  std::vector<std::array<std::uint32_t, 3>>& triangles, bool checkSelfIntersections = true,
+  std::size_t maxReported = 100);
+
+} // namespace tpc

@@ -1,0 +1,340 @@
+#include "SelfIntersection.h"
+
+#include "ExactPredicates.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tpc
+{
+namespace
+{
+/// A projection (dropping one axis) in which the triangle keeps its area; -1
+/// for a degenerate triangle.
+int ProjectionAxis(const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    const int u = (k + 1) % 3, v = (k + 2) % 3;
+    if (Orient2D(a[u], a[v], b[u], b[v], c[u], c[v]) != 0)
+    {
+      return k;
+    }
+  }
+  return -1;
+}
+
+struct Projected
+{
+  double U, V;
+};
+
+Projected Project(const Vec3& p, int k)
+{
+  return { p[(k + 1) % 3], p[(k + 2) % 3] };
+}
+
+int O2(const Projected& a, const Projected& b, const Projected& c)
+{
+  return Orient2D(a.U, a.V, b.U, b.V, c.U, c.V);
+}
+
+/// Closed 2-D segments ab and cd intersect.
+bool SegmentsMeet2D(const Projected& a, const Projected& b, const Projected& c, const Projected& d)
+{
+  const int o1 = O2(a, b, c), o2 = O2(a, b, d), o3 = O2(c, d, a), o4 = O2(c, d, b);
+  if (o1 != o2 && o3 != o4 && o1 * o2 <= 0 && o3 * o4 <= 0 && !(o1 == 0 && o2 == 0))
+  {
+    return true;
+  }
+  auto onSegment = [](const Projected& p, const Projected& q, const Projected& r) {
+    // r collinear with pq: within its bounding box
+    return std::min(p.U, q.U) <= r.U && r.U <= std::max(p.U, q.U) && std::min(p.V, q.V) <= r.V &&
+      r.V <= std::max(p.V, q.V);
+  };
+  return (o1 == 0 && onSegment(a, b, c)) || (o2 == 0 && onSegment(a, b, d)) ||
+    (o3 == 0 && onSegment(c, d, a)) || (o4 == 0 && onSegment(c, d, b));
+}
+
+/// Closed point-in-triangle in 2-D (triangle of either orientation).
+bool PointInTriangle2D(const Projected& p, const Projected& a, const Projected& b, const Projected& c)
+{
+  const int o = O2(a, b, c);
+  const int s1 = O2(a, b, p), s2 = O2(b, c, p), s3 = O2(c, a, p);
+  return s1 * o >= 0 && s2 * o >= 0 && s3 * o >= 0;
+}
+
+/// Two coplanar closed triangles overlap (k: a projection keeping their area).
+bool CoplanarTrianglesMeet(const Vec3 t1[3], const Vec3 t2[3], int k)
+{
+  Projected p[3], q[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    p[i] = Project(t1[i], k);
+    q[i] = Project(t2[i], k);
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      if (SegmentsMeet2D(p[i], p[(i + 1) % 3], q[j], q[(j + 1) % 3]))
+      {
+        return true;
+      }
+    }
+  }
+  return PointInTriangle2D(p[0], q[0], q[1], q[2]) || PointInTriangle2D(q[0], p[0], p[1], p[2]);
+}
+} // namespace
+
+bool SegmentMeetsTriangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  const int sp = Orient3D(a, b, c, p), sq = Orient3D(a, b, c, q);
+  if (sp != 0 && sp == sq)
+  {
+    return false;
+  }
+  if (sp == 0 && sq == 0)
+  {
+    const int k = ProjectionAxis(a, b, c);
+    if (k < 0)
+    {
+      return false;
+    }
+    const Projected P = Project(p, k), Q = Project(q, k), A = Project(a, k), B = Project(b, k), C = Project(c, k);
+    return PointInTriangle2D(P, A, B, C) || PointInTriangle2D(Q, A, B, C) || SegmentsMeet2D(P, Q, A, B) ||
+      SegmentsMeet2D(P, Q, B, C) || SegmentsMeet2D(P, Q, C, A);
+  }
+  // The segment reaches the plane: it meets the triangle iff it passes on the
+  // same side of (or through) all three edges.
+  const int e1 = Orient3D(p, q, a, b), e2 = Orient3D(p, q, b, c), e3 = Orient3D(p, q, c, a);
+  return (e1 >= 0 && e2 >= 0 && e3 >= 0) || (e1 <= 0 && e2 <= 0 && e3 <= 0);
+}
+
+bool TrianglesIntersect(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e,
+  const Vec3& f)
+{
+  const int s1 = Orient3D(a, b, c, d), s2 = Orient3D(a, b, c, e), s3 = Orient3D(a, b, c, f);
+  if ((s1 > 0 && s2 > 0 && s3 > 0) || (s1 < 0 && s2 < 0 && s3 < 0))
+  {
+    return false;
+  }
+  if (s1 == 0 && s2 == 0 && s3 == 0)
+  {
+    const int k = ProjectionAxis(a, b, c);
+    const Vec3 t1[3] = { a, b, c }, t2[3] = { d, e, f };
+    return k >= 0 && CoplanarTrianglesMeet(t1, t2, k);
+  }
+  const int r1 = Orient3D(d, e, f, a), r2 = Orient3D(d, e, f, b), r3 = Orient3D(d, e, f, c);
+  if ((r1 > 0 && r2 > 0 && r3 > 0) || (r1 < 0 && r2 < 0 && r3 < 0))
+  {
+    return false;
+  }
+  // Non-coplanar triangles meet iff an edge of one meets the other.
+  return SegmentMeetsTriangle(a, b, d, e, f) || SegmentMeetsTriangle(b, c, d, e, f) ||
+    SegmentMeetsTriangle(c, a, d, e, f) || SegmentMeetsTriangle(d, e, a, b, c) ||
+    SegmentMeetsTriangle(e, f, a, b, c) || SegmentMeetsTriangle(f, d, a, b, c);
+}
+
+namespace
+{
+/// Improper contact of two triangles that may share vertices.
+bool MeetImproperly(const std::vector<Vec3>& P, const std::array<std::uint32_t, 3>& t1,
+  const std::array<std::uint32_t, 3>& t2)
+{
+  int shared = 0, i1 = -1, i2 = -1;
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      if (t1[i] == t2[j])
+      {
+        ++shared;
+        i1 = i;
+        i2 = j;
+      }
+    }
+  }
+  const Vec3 &a = P[t1[0]], &b = P[t1[1]], &c = P[t1[2]], &d = P[t2[0]], &e = P[t2[1]], &f = P[t2[2]];
+  if (shared == 0)
+  {
+    return TrianglesIntersect(a, b, c, d, e, f);
+  }
+  if (shared == 1)
+  {
+    // Only the shared vertex may be common: the edge opposite it in each
+    // triangle must miss the other triangle, and coplanar triangles must not
+    // overlap beyond the vertex.
+    const Vec3 &o1a = P[t1[(i1 + 1) % 3]], &o1b = P[t1[(i1 + 2) % 3]];
+    const Vec3 &o2a = P[t2[(i2 + 1) % 3]], &o2b = P[t2[(i2 + 2) % 3]];
+    if (SegmentMeetsTriangle(o1a, o1b, d, e, f) || SegmentMeetsTriangle(o2a, o2b, a, b, c))
+    {
+      return true;
+    }
+    if (Orient3D(a, b, c, o2a) == 0 && Orient3D(a, b, c, o2b) == 0)
+    {
+      // Coplanar fan around the shared vertex: overlap iff a side edge of one
+      // enters the other (the opposite edges were tested above).
+      const int k = ProjectionAxis(a, b, c);
+      if (k >= 0)
+      {
+        const Projected v = Project(P[t1[i1]], k);
+        const Projected A = Project(o1a, k), B = Project(o1b, k), C = Project(o2a, k), D = Project(o2b, k);
+        const int oa = O2(v, A, B);
+        // Is a direction toward C or D strictly inside angle (A, B) at v, or vice versa?
+        auto inside = [&](const Projected& x, const Projected& y, const Projected& z, int o) {
+          return O2(v, x, z) * o > 0 && O2(v, z, y) * o > 0;
+        };
+        const int ob = O2(v, C, D);
+        return inside(A, B, C, oa) || inside(A, B, D, oa) || inside(C, D, A, ob) || inside(C, D, B, ob);
+      }
+    }
+    return false;
+  }
+  if (shared == 2)
+  {
+    // Sharing an edge: improper only if folded flat onto each other.
+    int o1 = -1, o2 = -1;
+    for (int i = 0; i < 3; ++i)
+    {
+      if (t1[i] != t2[0] && t1[i] != t2[1] && t1[i] != t2[2])
+      {
+        o1 = i;
+      }
+      if (t2[i] != t1[0] && t2[i] != t1[1] && t2[i] != t1[2])
+      {
+        o2 = i;
+      }
+    }
+    const Vec3& p = P[t2[o2]];
+    if (Orient3D(a, b, c, p) != 0)
+    {
+      return false;
+    }
+    const int k = ProjectionAxis(a, b, c);
+    if (k < 0)
+    {
+      return false;
+    }
+    const Vec3& s0 = P[t1[(o1 + 1) % 3]];
+    const Vec3& s1 = P[t1[(o1 + 2) % 3]];
+    const Projected S0 = Project(s0, k), S1 = Project(s1, k), Q = Project(P[t1[o1]], k), R = Project(p, k);
+    return O2(S0, S1, Q) * O2(S0, S1, R) > 0; // both on the same side of the shared edge
+  }
+  return true; // identical triangles
+}
+} // namespace
+
+std::size_t CountSelfIntersections(const std::vector<Vec3>& points,
+  const std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t limit)
+{
+  const std::size_t n = triangles.size();
+  if (n < 2)
+  {
+    return 0;
+  }
+  std::vector<Box3> boxes(n);
+  Box3 all{ { HUGE_VAL, HUGE_VAL, HUGE_VAL }, { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL } };
+  double meanSize = 0.0;
+  for (std::size_t t = 0; t < n; ++t)
+  {
+    Box3& b = boxes[t];
+    b = { points[triangles[t][0]], points[triangles[t][0]] };
+    for (int k = 1; k < 3; ++k)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        b.lo[a] = std::min(b.lo[a], points[triangles[t][k]][a]);
+        b.hi[a] = std::max(b.hi[a], points[triangles[t][k]][a]);
+      }
+    }
+    for (int a = 0; a < 3; ++a)
+    {
+      all.lo[a] = std::min(all.lo[a], b.lo[a]);
+      all.hi[a] = std::max(all.hi[a], b.hi[a]);
+    }
+    meanSize += std::max({ b.Width(0), b.Width(1), b.Width(2) });
+  }
+  meanSize /= static_cast<double>(n);
+  // Grid cells about twice the mean triangle size, at most ~ 8 n cells.
+  double cell = std::max(2.0 * meanSize, 1e-300);
+  int dims[3];
+  for (;;)
+  {
+    double cells = 1.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      dims[a] = std::max(1, static_cast<int>(std::ceil(all.Width(a) / cell)));
+      cells *= dims[a];
+    }
+    if (cells <= 8.0 * static_cast<double>(n) + 64.0)
+    {
+      break;
+    }
+    cell *= 1.5;
+  }
+  auto index = [&](int a, double x) {
+    return std::clamp(static_cast<int>(std::floor((x - all.lo[a]) / cell)), 0, dims[a] - 1);
+  };
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> entries;
+  for (std::size_t t = 0; t < n; ++t)
+  {
+    int lo[3], hi[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      lo[a] = index(a, boxes[t].lo[a]);
+      hi[a] = index(a, boxes[t].hi[a]);
+    }
+    for (int x = lo[0]; x <= hi[0]; ++x)
+    {
+      for (int y = lo[1]; y <= hi[1]; ++y)
+      {
+        for (int z = lo[2]; z <= hi[2]; ++z)
+        {
+          const std::uint64_t key = (static_cast<std::uint64_t>(x) * dims[1] + y) * dims[2] + z;
+          entries.emplace_back(key, static_cast<std::uint32_t>(t));
+        }
+      }
+    }
+  }
+  std::sort(entries.begin(), entries.end());
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  for (std::size_t i = 0; i < entries.size();)
+  {
+    std::size_t j = i;
+    while (j < entries.size() && entries[j].first == entries[i].first)
+    {
+      ++j;
+    }
+    for (std::size_t p = i; p < j; ++p)
+    {
+      for (std::size_t q = p + 1; q < j; ++q)
+      {
+        const std::uint32_t t1 = entries[p].second, t2 = entries[q].second;
+        bool apart = false;
+        for (int a = 0; a < 3 && !apart; ++a)
+        {
+          apart = boxes[t1].lo[a] > boxes[t2].hi[a] || boxes[t2].lo[a] > boxes[t1].hi[a];
+        }
+        if (!apart)
+        {
+          pairs.emplace_back(std::min(t1, t2), std::max(t1, t2));
+        }
+      }
+    }
+    i = j;
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  std::size_t found = 0;
+  for (const auto& pr : pairs)
+  {
+    if (MeetImproperly(points, triangles[pr.first], triangles[pr.second]) && ++found >= limit)
+    {
+      break;
+    }
+  }
+  return found;
+}
+
+} // namespace tpc

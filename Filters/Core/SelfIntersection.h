@@ -1,0 +1,31 @@
+// Self-intersection detection for triangle meshes, with exact predicates.
+//
+// Two triangles meet improperly when they intersect anywhere except along
+// the edge or at the vertex they share. Candidate pairs come from a uniform
+// grid over the triangles' bounding boxes; each pair is decided exactly
+// (Orient3D/Orient2D), coplanar pairs included.
+#pragma once
+
+#include "Vector3.h"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace tpc
+{
+
+/// Number of improperly meeting triangle pairs, counting at most `limit`.
+std::size_t CountSelfIntersections(const std::vector<Vec3>& points,
+  const std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t limit = 100);
+
+/// Exact: do the closed triangles (a, b, c) and (d, e, f), which share no
+/// vertex, intersect?
+bool TrianglesIntersect(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e,
+  const Vec3& f);
+
+/// Exact: does the closed segment pq meet the closed triangle abc?
+bool SegmentMeetsTriangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c);
+
+} // namespace tpc

@@ -1,0 +1,149 @@
+// Input meshes: what is repaired (orientation, duplicates, degenerate
+// triangles, inverted or nested shells) and what is reported (open edges,
+// self-intersections), with exact triangle intersection tests.
+#include "MeshBuilders.h"
+#include "MeshRepair.h"
+#include "SelfIntersection.h"
+
+#include <gtest/gtest.h>
+
+using tpc::Vec3;
+using Tris = std::vector<std::array<std::uint32_t, 3>>;
+
+namespace
+{
+double Volume(const std::vector<Vec3>& p, const Tris& t)
+{
+  double v = 0.0;
+  for (const auto& f : t)
+  {
+    v += tpc::Dot(p[f[0]], tpc::Cross(p[f[1]], p[f[2]])) / 6.0;
+  }
+  return v;
+}
+} // namespace
+
+TEST(MeshRepair, CleanMeshIsUntouched)
+{
+  const tpc::MeshSolid torus = tpctest::TorusMesh({ 0, 0, 0 }, 0.6, 0.25, 24, 12);
+  std::vector<Vec3> p = torus.Points();
+  Tris t = torus.Triangles();
+  const tpc::MeshRepairReport r = tpc::RepairMesh(p, t);
+  EXPECT_TRUE(r.MeetsAssumptions()) << r.Describe();
+  EXPECT_EQ(r.Describe(), "");
+  EXPECT_EQ(r.Components, 1u);
+  EXPECT_EQ(r.Genus, 1);
+  EXPECT_EQ(t, torus.Triangles());
+}
+
+TEST(MeshRepair, OrientationIsMadeConsistentAndOutward)
+{
+  const tpc::MeshSolid cube = tpctest::CubeMesh({ 0, 0, 0 }, { 1, 1, 1 });
+  std::vector<Vec3> p = cube.Points();
+  Tris t = cube.Triangles();
+  std::swap(t[3][1], t[3][2]); // one triangle flipped
+  for (auto& f : t)
+  {
+    std::swap(f[1], f[2]); // and the whole thing inverted
+  }
+  const tpc::MeshRepairReport r = tpc::RepairMesh(p, t);
+  EXPECT_GT(r.InconsistentEdges, 0u);
+  EXPECT_EQ(r.FlippedComponents, 1u);
+  EXPECT_TRUE(r.MeetsAssumptions()) << r.Describe();
+  EXPECT_NEAR(Volume(p, t), 1.0, 1e-12);
+}
+
+TEST(MeshRepair, NestedShellFacesItsCavity)
+{
+  // Outer and inner spheres given with the same (outward) orientation: the
+  // inner one must be turned to face into the cavity.
+  const tpc::MeshSolid outer = tpctest::SphereMesh({ 0, 0, 0 }, 1.0, 2);
+  const tpc::MeshSolid inner = tpctest::SphereMesh({ 0.1, 0, 0 }, 0.5, 2);
+  std::vector<Vec3> p = outer.Points();
+  Tris t = outer.Triangles();
+  const auto offset = static_cast<std::uint32_t>(p.size());
+  p.insert(p.end(), inner.Points().begin(), inner.Points().end());
+  for (auto f : inner.Triangles())
+  {
+    t.push_back({ f[0] + offset, f[1] + offset, f[2] + offset });
+  }
+  const double before = Volume(p, t);
+  const tpc::MeshRepairReport r = tpc::RepairMesh(p, t);
+  EXPECT_EQ(r.Components, 2u);
+  EXPECT_EQ(r.FlippedComponents, 1u);
+  EXPECT_LT(Volume(p, t), before); // the cavity is now subtracted
+  EXPECT_TRUE(r.MeetsAssumptions());
+}
+
+TEST(MeshRepair, DuplicatesAndDegeneratesAreDropped)
+{
+  const tpc::MeshSolid cube = tpctest::CubeMesh({ 0, 0, 0 }, { 1, 1, 1 });
+  // Every triangle with its own three vertices (a "triangle soup").
+  std::vector<Vec3> p;
+  Tris t;
+  for (const auto& f : cube.Triangles())
+  {
+    const auto base = static_cast<std::uint32_t>(p.size());
+    for (int k = 0; k < 3; ++k)
+    {
+      p.push_back(cube.Points()[f[k]]);
+    }
+    t.push_back({ base, base + 1, base + 2 });
+  }
+  t.push_back(t.front());                   // a duplicate
+  t.push_back({ 0, 0, 1 });                 // repeated vertex
+  p.push_back((p[0] + p[1]) * 0.5);         // collinear with 0 and 1
+  t.push_back({ 0, 1, static_cast<std::uint32_t>(p.size() - 1) });
+  const tpc::MeshRepairReport r = tpc::RepairMesh(p, t);
+  EXPECT_EQ(r.MergedVertices, 36u - 8u);
+  EXPECT_EQ(r.DuplicateTriangles, 1u);
+  EXPECT_EQ(r.DegenerateTriangles, 2u);
+  EXPECT_EQ(t.size(), 12u);
+  EXPECT_TRUE(r.MeetsAssumptions()) << r.Describe();
+}
+
+TEST(MeshRepair, OpenMeshAndSelfIntersectionsAreReported)
+{
+  const tpc::MeshSolid cube = tpctest::CubeMesh({ 0, 0, 0 }, { 1, 1, 1 });
+  std::vector<Vec3> p = cube.Points();
+  Tris t = cube.Triangles();
+  t.pop_back();
+  tpc::MeshRepairReport r = tpc::RepairMesh(p, t);
+  EXPECT_EQ(r.BoundaryEdges, 3u);
+  EXPECT_FALSE(r.Closed());
+  EXPECT_NE(r.Describe().find("open"), std::string::npos);
+
+  // Two interpenetrating cubes in one mesh.
+  const tpc::MeshSolid other = tpctest::CubeMesh({ 0.5, 0.5, 0.5 }, { 1.5, 1.5, 1.5 });
+  p = cube.Points();
+  t = cube.Triangles();
+  const auto offset = static_cast<std::uint32_t>(p.size());
+  p.insert(p.end(), other.Points().begin(), other.Points().end());
+  for (auto f : other.Triangles())
+  {
+    t.push_back({ f[0] + offset, f[1] + offset, f[2] + offset });
+  }
+  r = tpc::RepairMesh(p, t);
+  EXPECT_GT(r.SelfIntersections, 0u);
+  EXPECT_FALSE(r.MeetsAssumptions());
+  EXPECT_NE(r.Describe().find("self-intersecting"), std::string::npos);
+}
+
+TEST(SelfIntersection, ExactTriangleTests)
+{
+  // Crossing, touching at a point, coplanar overlapping, and apart.
+  EXPECT_TRUE(tpc::TrianglesIntersect({ 0, 0, 0 }, { 2, 0, 0 }, { 0, 2, 0 }, { 0.5, 0.5, -1 }, { 0.5, 0.5, 1 },
+    { 1.5, 0.5, 1 }));
+  EXPECT_TRUE(tpc::TrianglesIntersect({ 0, 0, 0 }, { 2, 0, 0 }, { 0, 2, 0 }, { 0.5, 0.5, 0 }, { 0.5, 0.5, 1 },
+    { 1.5, 0.5, 1 }));
+  EXPECT_TRUE(tpc::TrianglesIntersect({ 0, 0, 0 }, { 2, 0, 0 }, { 0, 2, 0 }, { 0.5, 0.5, 0 }, { 3, 0.5, 0 },
+    { 0.5, 3, 0 }));
+  EXPECT_FALSE(tpc::TrianglesIntersect({ 0, 0, 0 }, { 2, 0, 0 }, { 0, 2, 0 }, { 0.5, 0.5, 0.1 }, { 0.5, 0.5, 1 },
+    { 1.5, 0.5, 1 }));
+  EXPECT_FALSE(tpc::TrianglesIntersect({ 0, 0, 0 }, { 2, 0, 0 }, { 0, 2, 0 }, { 3, 3, 0 }, { 4, 3, 0 }, { 3, 4, 0 }));
+  // Clean closed meshes have none.
+  const tpc::MeshSolid sphere = tpctest::SphereMesh({ 0, 0, 0 }, 1.0, 3);
+  EXPECT_EQ(tpc::CountSelfIntersections(sphere.Points(), sphere.Triangles()), 0u);
+  const tpc::MeshSolid torus = tpctest::TorusMesh({ 0, 0, 0 }, 0.6, 0.25, 48, 24);
+  EXPECT_EQ(tpc::CountSelfIntersections(torus.Points(), torus.Triangles()), 0u);
+}
