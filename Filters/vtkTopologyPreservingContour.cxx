@@ -2,6 +2,7 @@
 
 #include "ImplicitFunctionToCsg.h"
 #include "OctreeToHyperTreeGrid.h"
+#include "PolyDataToMesh.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -155,35 +156,76 @@ int vtkTopologyPreservingContour::RequestData(
   AddReport(gridOut, report);
   AddReport(surfaceOut, report);
 
-  // Mesh inputs.
+  // The solids: one per mesh input, then the implicit function.
+  tpc::ImplicitScene scene;
+  std::vector<tpc::CsgTerm> solids;
+  tpc::CsgTerm implicitTerm;
+  bool assumptionsMet = true;
+  std::string error;
   const int connections = this->GetNumberOfInputConnections(0);
   for (int i = 0; i < connections; ++i)
   {
     vtkPolyData* mesh = vtkPolyData::GetData(inInfo[0], i);
-    if (mesh && mesh->GetNumberOfCells() > 0)
+    if (!mesh || mesh->GetNumberOfCells() == 0)
     {
-      vtkErrorMacro("Input " << i << " is a mesh (" << mesh->GetNumberOfCells()
-                             << " cells): closed-mesh solids are not supported yet. Use an "
-                                "ImplicitFunction (sphere, quadric, box, cylinder, plane or a "
-                                "vtkImplicitBoolean of them).");
+      vtkWarningMacro("Input " << i << " is empty: it is ignored.");
+      continue;
+    }
+    tpc::vtkadapter::MeshInput in;
+    if (!tpc::vtkadapter::ConvertPolyData(mesh, in, error))
+    {
+      vtkErrorMacro("Input " << i << " cannot be used as a solid: " << error << ".");
       return 1;
     }
+    if (in.IgnoredLines > 0 || in.IgnoredVertices > 0)
+    {
+      vtkWarningMacro("Input " << i << ": " << in.IgnoredLines << " line and " << in.IgnoredVertices
+                               << " vertex cells are ignored; only polygons bound the solid.");
+    }
+    const std::string problems = in.Repair.Describe();
+    if (!in.Repair.Closed())
+    {
+      vtkErrorMacro("Input " << i << " is not a closed surface (" << problems
+                             << "), so it has no inside. Close it first (for example with "
+                                "vtkFillHolesFilter) or pass only closed solids.");
+      return 1;
+    }
+    if (!in.Repair.MeetsAssumptions())
+    {
+      assumptionsMet = false;
+      vtkWarningMacro("Input " << i << " violates the method's assumptions (" << problems
+                               << "); the surface is computed but TopologyGuaranteed will be 0.");
+    }
+    else if (!problems.empty())
+    {
+      vtkWarningMacro("Input " << i << " was repaired: " << problems << ".");
+    }
+    scene.Primitives.Meshes.push_back(std::move(in.Solid));
+    solids.push_back(tpc::CsgTerm::Mesh(static_cast<int>(scene.Primitives.Meshes.size() - 1)));
   }
-  if (!this->ImplicitFunction)
+  if (this->ImplicitFunction)
   {
-    vtkErrorMacro("No solid to contour: set an ImplicitFunction (the solid is where it is "
-                  "negative).");
+    if (!tpc::vtkadapter::ConvertImplicitFunction(this->ImplicitFunction, scene.Primitives, implicitTerm, error))
+    {
+      vtkErrorMacro("Unsupported ImplicitFunction: " << error << ".");
+      return 1;
+    }
+    solids.push_back(implicitTerm);
+  }
+  if (solids.empty())
+  {
+    vtkErrorMacro("No solid to contour: connect closed triangle meshes to the input and/or set an "
+                  "ImplicitFunction (the solid is where it is negative).");
     return 1;
   }
-
-  // The solid as primitives and a CSG term.
-  tpc::ImplicitScene scene;
-  tpc::CsgTerm term;
-  std::string error;
-  if (!tpc::vtkadapter::ConvertImplicitFunction(this->ImplicitFunction, scene.Primitives, term, error))
+  // Fold in order: ((S0 op S1) op ...) op F.
+  const tpc::CsgTerm::Op op = this->Operation == INTERSECTION ? tpc::CsgTerm::Op::Intersection
+    : this->Operation == DIFFERENCE                          ? tpc::CsgTerm::Op::Difference
+                                                             : tpc::CsgTerm::Op::Union;
+  tpc::CsgTerm term = solids.front();
+  for (std::size_t i = 1; i < solids.size(); ++i)
   {
-    vtkErrorMacro("Unsupported ImplicitFunction: " << error << ".");
-    return 1;
+    term = tpc::CsgTerm::Combine(op, { std::move(term), std::move(solids[i]) });
   }
 
   // Domain.
@@ -222,6 +264,7 @@ int vtkTopologyPreservingContour::RequestData(
   }
 
   // Guard against subclasses whose evaluation the converter does not know.
+  if (this->ImplicitFunction)
   {
     tpc::Box3 sampleBox = domain;
     for (int a = 0; a < 3; ++a)
@@ -230,7 +273,7 @@ int vtkTopologyPreservingContour::RequestData(
       sampleBox.hi[a] += 0.1 * diagonal;
     }
     const int bad = tpc::vtkadapter::CountSignDisagreements(
-      this->ImplicitFunction, scene.Primitives, term, sampleBox);
+      this->ImplicitFunction, scene.Primitives, implicitTerm, sampleBox);
     if (bad > 0)
     {
       vtkErrorMacro("The ImplicitFunction (" << this->ImplicitFunction->GetClassName()
@@ -354,7 +397,7 @@ int vtkTopologyPreservingContour::RequestData(
   report.Closed = topo.Closed ? 1 : 0;
   report.Manifold = topo.Manifold ? 1 : 0;
   const bool empty = mesh.Triangles.empty();
-  report.Guaranteed = (sub.UnresolvedCells == 0 && extraction.InconsistentCells == 0 &&
+  report.Guaranteed = (assumptionsMet && sub.UnresolvedCells == 0 && extraction.InconsistentCells == 0 &&
                         (empty || (topo.Closed && topo.Manifold && topo.Oriented)))
     ? 1
     : 0;

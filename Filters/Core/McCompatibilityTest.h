@@ -4,6 +4,7 @@
 #pragma once
 
 #include "AdaptiveOctree.h"
+#include "BoundaryLoops.h"
 
 #include <utility>
 #include <vector>
@@ -38,12 +39,23 @@ constexpr int FaceRefinementLevels = 10;
 /// - it is no larger than the tolerance (Hausdorff, 5.3.4);
 /// - each face can be tiled by MC-compatible tiles (complex face and edge,
 ///   face ambiguity, star-shaped w.r.t. the face; Lemma 1 per tile);
-/// - the surface draws exactly one loop on the cell boundary: none while the
-///   voxel is not proven empty is a complex voxel, two or more is the voxel
-///   ambiguity of Fig. 2(d) (or two sheets);
+/// - the surface draws at least one loop on the cell boundary (none while the
+///   voxel is not proven empty is a complex voxel), and if several, they are
+///   proven to bound different pieces of the surface (see LoopsSeparated);
+///   otherwise it is the voxel ambiguity of Fig. 2(d) - two corners joined by
+///   a tube, or not;
 /// - the solid in the voxel is star-shaped (verified witness). With the ray
-///   argument of Lemma 2 this makes the surface in the cell a single disk
-///   (Lemma 3) bounded by that loop.
+///   argument of Lemma 2 this makes each piece of the surface in the cell a
+///   disk (Lemma 3) bounded by its own loop.
+/// Several loops on a cell boundary bound either several disks or pieces
+/// joined inside the cell (a tube: the voxel ambiguity). They bound different
+/// pieces if every two of them lie on opposite sides of a plane whose section
+/// of the cell the surface provably misses: no piece can cross it. Near a
+/// shallow crease, where a cell often holds a bit of each wall but not the
+/// crease itself, this avoids refining what is already two simple disks.
+bool LoopsSeparated(const BoundaryLoopSet& loops, const CsgExpressionPtr& expression,
+  const PrimitiveSet& primitives, const RootGrid& grid, const Box3& cell);
+
 McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   const PrimitiveSet& primitives, double tolerance);
 

@@ -281,6 +281,29 @@ Vec3 PlaceLoopVertex(const std::vector<Vec3>& pts, const std::vector<Vec3>& norm
   }
   return m;
 }
+
+/// True when every loop point lies on the same face of the cell: the surface
+/// there is a cap over that face, and a triangle through the loop points alone
+/// would lie flat in the face, so the loop needs a vertex inside the cell.
+bool LiesOnOneFace(const std::vector<Vec3>& pts, const Box3& cell)
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    for (const double plane : { cell.lo[a], cell.hi[a] })
+    {
+      bool all = true;
+      for (const Vec3& p : pts)
+      {
+        all = all && p[a] == plane;
+      }
+      if (all)
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
 } // namespace
 
 ExtractionResult ExtractSurface(
@@ -417,7 +440,7 @@ ExtractionResult ExtractSurface(
         {
           continue; // only from inconsistent input; counted above
         }
-        if (size == 3)
+        if (size == 3 && !LiesOnOneFace(pts, box))
         {
           local[i].Triangles.push_back({ ids[0], ids[1], ids[2] });
           continue;

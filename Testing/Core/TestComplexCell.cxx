@@ -129,13 +129,23 @@ TEST(ComplexCell, TangentEdgeIsNeverProvenSimple)
 
 TEST(ComplexCell, FaceAndVoxelAmbiguityFig2d)
 {
-  // Two small spheres at body-diagonal corners: the boundary carries two
-  // loops (voxel ambiguity).
+  // Two body-diagonal corners inside, joined by a tube along the diagonal:
+  // the two boundary loops bound one annulus - the voxel ambiguity Marching
+  // Cubes cannot see. No plane separates the loops: the cell is split.
+  SceneBuilder tube;
+  tube.Finish(tube.Cylinder({ 0, 0, 0 }, { 1, 1, 1 }, 0.3));
+  const tpc::McCompatibility t = TestUnitCell(tube.Scene);
+  EXPECT_EQ(t.Kind, tpc::McVerdict::Split);
+  EXPECT_EQ(t.Reason, SplitReason::VoxelAmbiguity);
+
+  // The same corner signs from two separate spheres: the loops are proven to
+  // bound different pieces, yet no single witness sees both, so the cell is
+  // split by the star-shaped test instead.
   SceneBuilder b;
   b.Finish(SceneBuilder::Union({ b.Sphere({ 0, 0, 0 }, 0.3), b.Sphere({ 1, 1, 1 }, 0.3) }));
   const tpc::McCompatibility r = TestUnitCell(b.Scene);
   EXPECT_EQ(r.Kind, tpc::McVerdict::Split);
-  EXPECT_EQ(r.Reason, SplitReason::VoxelAmbiguity);
+  EXPECT_EQ(r.Reason, SplitReason::NotStarShapedVoxel);
 
   // Two spheres at diagonal corners of the top face: face ambiguity.
   SceneBuilder f;

@@ -26,17 +26,33 @@ TEST(FilterErrors, NoSolidAtAll)
   EXPECT_EQ(f->GetSurfaceOutput()->GetNumberOfPoints(), 0);
 }
 
-TEST(FilterErrors, MeshInputIsRefusedClearly)
+TEST(FilterErrors, OpenMeshIsRefusedClearly)
 {
-  vtkNew<vtkSphereSource> mesh;
-  vtkNew<vtkSphere> sphere;
+  // A sphere with a cap cut off has no inside.
+  vtkNew<vtkSphereSource> open;
+  open->SetEndTheta(300.0);
   vtkNew<vtkTopologyPreservingContour> f;
-  f->AddInputConnection(mesh->GetOutputPort());
-  f->SetImplicitFunction(sphere);
+  f->AddInputConnection(open->GetOutputPort());
   MessageRecorder messages(f);
   f->Update();
-  EXPECT_NE(messages.Errors.find("not supported yet"), std::string::npos) << messages.Errors;
+  EXPECT_NE(messages.Errors.find("not a closed surface"), std::string::npos) << messages.Errors;
+  EXPECT_NE(messages.Errors.find("vtkFillHolesFilter"), std::string::npos) << messages.Errors;
   EXPECT_EQ(f->GetSurfaceOutput()->GetNumberOfPoints(), 0);
+}
+
+TEST(FilterErrors, ClosedMeshIsContoured)
+{
+  vtkNew<vtkSphereSource> mesh;
+  mesh->SetThetaResolution(24);
+  mesh->SetPhiResolution(16);
+  vtkNew<vtkTopologyPreservingContour> f;
+  f->AddInputConnection(mesh->GetOutputPort());
+  MessageRecorder messages(f);
+  const FilterResult r = tpctest::Run(f);
+  EXPECT_TRUE(messages.Errors.empty()) << messages.Errors;
+  EXPECT_EQ(r.Components, 1);
+  EXPECT_EQ(r.Genus, 0);
+  EXPECT_EQ(r.Guaranteed, 1);
 }
 
 TEST(FilterErrors, UnsupportedFunctionsAreRefused)

@@ -1,0 +1,33 @@
+// Adapter: a vtkPolyData input -> a repaired closed triangle mesh for the
+// core (polygons and strips triangulated; lines and vertices ignored).
+#ifndef PolyDataToMesh_h
+#define PolyDataToMesh_h
+
+#include "MeshRepair.h"
+#include "MeshSolid.h"
+
+#include <string>
+
+class vtkPolyData;
+
+namespace tpc
+{
+namespace vtkadapter
+{
+
+struct MeshInput
+{
+  MeshSolid Solid;
+  MeshRepairReport Repair;
+  std::size_t IgnoredLines = 0;    ///< line cells (not part of a surface)
+  std::size_t IgnoredVertices = 0; ///< vertex cells
+};
+
+/// Converts and repairs. Returns false (with `error` set) when the data
+/// cannot describe a solid at all: no triangles, or non-finite coordinates.
+bool ConvertPolyData(vtkPolyData* input, MeshInput& mesh, std::string& error);
+
+} // namespace vtkadapter
+} // namespace tpc
+
+#endif
