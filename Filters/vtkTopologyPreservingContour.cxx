@@ -329,18 +329,38 @@ int vtkTopologyPreservingContour::RequestData(
   params.HausdorffTolerance = tolerance;
   params.MaximumDepth = this->MaximumDepth;
   params.MaximumNumberOfCells = static_cast<std::size_t>(std::max<vtkIdType>(this->MaximumNumberOfCells, 8));
-  const tpc::RootGrid rootGrid = tpc::MakeRootGrid(rootDomain, tolerance, params.MaximumDepth);
-
-  auto progress = [this](double f) {
-    this->UpdateProgress(0.85 * f);
-    return this->GetAbortExecute() != 0;
-  };
-  tpc::SubdivisionResult sub =
-    tpc::RunTopologyPreservingSubdivision(scene, rootGrid, params, ParallelForSMP, progress);
-  if (sub.Aborted)
+  // Cells left unresolved by the depth limit are usually a surface feature a
+  // hair from a lattice plane; another lattice placement moves it away (see
+  // tpc::LatticePlacements). Keep the first placement that resolves
+  // everything, else the one with the fewest unresolved cells.
+  tpc::RootGrid rootGrid;
+  tpc::SubdivisionResult sub;
+  int placementsTried = 0;
+  for (int placement = 0; placement < tpc::LatticePlacements; ++placement)
   {
-    vtkWarningMacro("Aborted: outputs are empty.");
-    return 1;
+    const tpc::RootGrid candidateGrid =
+      tpc::MakeRootGrid(rootDomain, tolerance, params.MaximumDepth, placement);
+    auto progress = [this](double f) {
+      this->UpdateProgress(0.85 * f); // a retry starts over
+      return this->GetAbortExecute() != 0;
+    };
+    tpc::SubdivisionResult candidate = tpc::RunTopologyPreservingSubdivision(
+      scene, candidateGrid, params, ParallelForSMP, progress);
+    ++placementsTried;
+    if (candidate.Aborted)
+    {
+      vtkWarningMacro("Aborted: outputs are empty.");
+      return 1;
+    }
+    if (placement == 0 || candidate.UnresolvedCells < sub.UnresolvedCells)
+    {
+      rootGrid = candidateGrid;
+      sub = std::move(candidate);
+    }
+    if (sub.UnresolvedCells == 0 || sub.CellLimitReached || !assumptionsMet)
+    {
+      break; // resolved, or another placement would hit the same limit
+    }
   }
   const tpc::ExtractionResult extraction = tpc::ExtractSurface(sub.Octree, scene, ParallelForSMP);
   this->UpdateProgress(0.95);
@@ -427,6 +447,10 @@ int vtkTopologyPreservingContour::RequestData(
         why << " " << tpc::SplitReasonName(static_cast<tpc::SplitReason>(r)) << " "
             << sub.UnresolvedByReason[r] << ";";
       }
+    }
+    if (placementsTried > 1)
+    {
+      why << " (best of " << placementsTried << " lattice placements tried);";
     }
     why << " they are marked CellState=3 in the grid output. Tangential contact between "
            "primitives never passes the tests; otherwise raise the limits.";

@@ -1,6 +1,7 @@
 #include "StarShapedTest.h"
 
 #include "ExactPredicates.h"
+#include "SmallDimensionLp.h"
 #include "SymmetricEigen.h"
 
 #include <cmath>
@@ -73,11 +74,20 @@ bool VerifyMeshLeaf(const MeshSolid& m, const CsgLeaf& leaf, const StarWitness& 
   return true;
 }
 
-/// Unit outward normals of each leaf sampled near the box: for a quadric, box
-/// points pulled onto its surface by a few Newton steps; for a mesh, the
-/// normals of its triangles meeting the box.
-void SampleNormals(const std::vector<CsgLeaf>& leaves, const PrimitiveSet& prims,
-  const Box3& box, int planeAxis, std::vector<Vec3>& normals)
+/// A point of a leaf's surface near the box and its unit outward normal
+/// (outward of the leaf's solid, i.e. times sigma); restricted to the face
+/// plane for a face.
+struct SurfaceSample
+{
+  Vec3 Point;
+  Vec3 Normal;
+};
+
+/// Samples of each leaf near the box: for a quadric, box points pulled onto
+/// its surface by a few Newton steps; for a mesh, its triangles meeting the
+/// box (a vertex and the exact plane's normal).
+void SampleSurface(const std::vector<CsgLeaf>& leaves, const PrimitiveSet& prims,
+  const Box3& box, int planeAxis, std::vector<SurfaceSample>& samples)
 {
   const Vec3 c = box.Center();
   const double size = box.Diagonal();
@@ -87,23 +97,26 @@ void SampleNormals(const std::vector<CsgLeaf>& leaves, const PrimitiveSet& prims
     grown.lo[a] -= 0.25 * size;
     grown.hi[a] += 0.25 * size;
   }
+  auto add = [&](const Vec3& point, Vec3 n) {
+    if (planeAxis >= 0)
+    {
+      n[planeAxis] = 0.0;
+    }
+    if (Norm(n) > 0.0)
+    {
+      samples.push_back({ point, Normalized(n) });
+    }
+  };
   for (const CsgLeaf& leaf : leaves)
   {
     if (leaf.Kind == PrimitiveKind::Mesh)
     {
       if (leaf.Triangles)
       {
+        const MeshSolid& m = prims.Meshes[leaf.Primitive];
         for (const std::uint32_t t : *leaf.Triangles)
         {
-          Vec3 n = prims.Meshes[leaf.Primitive].Normal(t) * static_cast<double>(leaf.Sigma);
-          if (planeAxis >= 0)
-          {
-            n[planeAxis] = 0.0;
-          }
-          if (Norm(n) > 0.0)
-          {
-            normals.push_back(Normalized(n));
-          }
+          add(m.Vertex(t, 0), m.Normal(t) * static_cast<double>(leaf.Sigma));
         }
       }
       continue;
@@ -129,21 +142,115 @@ void SampleNormals(const std::vector<CsgLeaf>& leaves, const PrimitiveSet& prims
         }
         x = x - g * (q.Value(x) / gg);
       }
-      if (!ok || !grown.Contains(x))
+      if (ok && grown.Contains(x))
       {
-        continue;
-      }
-      Vec3 n = q.Gradient(x) * static_cast<double>(leaf.Sigma);
-      if (planeAxis >= 0)
-      {
-        n[planeAxis] = 0.0;
-      }
-      if (Norm(n) > 0.0)
-      {
-        normals.push_back(Normalized(n));
+        add(x, q.Gradient(x) * static_cast<double>(leaf.Sigma));
       }
     }
   }
+}
+
+/// The paper's kernel LP (5.2): the point p maximizing the margin t with
+/// which it lies behind every sampled tangent plane, n . (x - p) >= t (for
+/// a mesh these are the facets' exact planes, for a quadric a linearization
+/// at its samples), p within a few cell sizes of the box and in the face
+/// plane for a face. A positive margin gives a candidate witness point.
+bool KernelPoint(const std::vector<SurfaceSample>& samples, const Box3& box, int planeAxis, Vec3& p)
+{
+  int axes[3], d = 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (a != planeAxis)
+    {
+      axes[d++] = a;
+    }
+  }
+  const double size = box.Diagonal();
+  LpVector lo{}, hi{}, c{};
+  for (int j = 0; j < d; ++j)
+  {
+    lo[j] = box.lo[axes[j]] - 4.0 * size;
+    hi[j] = box.hi[axes[j]] + 4.0 * size;
+  }
+  lo[d] = -size;
+  hi[d] = size;
+  c[d] = 1.0;
+  std::vector<LpHalfSpace> cons;
+  cons.reserve(samples.size());
+  for (const SurfaceSample& s : samples)
+  {
+    // n . p + t <= n . x, with the fixed coordinate of a face moved right.
+    LpHalfSpace h;
+    h.B = Dot(s.Normal, s.Point);
+    for (int j = 0; j < d; ++j)
+    {
+      h.A[j] = s.Normal[axes[j]];
+    }
+    if (planeAxis >= 0)
+    {
+      h.B -= s.Normal[planeAxis] * box.lo[planeAxis];
+    }
+    h.A[d] = 1.0;
+    cons.push_back(h);
+  }
+  const LpSolution sol = SolveSmallDimensionLp(d + 1, cons, c, lo, hi);
+  if (!sol.Feasible || !(sol.X[d] > 1e-9 * size))
+  {
+    return false;
+  }
+  p = box.Center();
+  for (int j = 0; j < d; ++j)
+  {
+    p[axes[j]] = sol.X[j];
+  }
+  return true;
+}
+
+/// The same LP for a point at infinity: the direction u (max-norm <= 1, in
+/// the face plane for a face) maximizing min n . u; exact where the
+/// Badoiu-Clarkson iteration only approximates.
+bool KernelDirection(const std::vector<SurfaceSample>& samples, int planeAxis, Vec3& u)
+{
+  int axes[3], d = 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (a != planeAxis)
+    {
+      axes[d++] = a;
+    }
+  }
+  LpVector lo{}, hi{}, c{};
+  for (int j = 0; j < d; ++j)
+  {
+    lo[j] = -1.0;
+    hi[j] = 1.0;
+  }
+  lo[d] = -2.0;
+  hi[d] = 2.0;
+  c[d] = 1.0;
+  std::vector<LpHalfSpace> cons;
+  cons.reserve(samples.size());
+  for (const SurfaceSample& s : samples)
+  {
+    LpHalfSpace h; // t - n . u <= 0
+    for (int j = 0; j < d; ++j)
+    {
+      h.A[j] = -s.Normal[axes[j]];
+    }
+    h.A[d] = 1.0;
+    cons.push_back(h);
+  }
+  const LpSolution sol = SolveSmallDimensionLp(d + 1, cons, c, lo, hi);
+  if (!sol.Feasible || !(sol.X[d] > 1e-12))
+  {
+    return false;
+  }
+  u = Vec3();
+  for (int j = 0; j < d; ++j)
+  {
+    u[axes[j]] = sol.X[j];
+  }
+  return true;
 }
 
 /// Direction u maximizing min_k n_k . u: the centre of the smallest cap of
@@ -253,8 +360,14 @@ bool IsStarShaped(const CsgExpressionPtr& expression, const PrimitiveSet& prims,
     }
   }
   std::vector<StarWitness> candidates;
+  std::vector<SurfaceSample> samples;
+  SampleSurface(leaves, prims, box, planeAxis, samples);
   std::vector<Vec3> normals;
-  SampleNormals(leaves, prims, box, planeAxis, normals);
+  normals.reserve(samples.size());
+  for (const SurfaceSample& sample : samples)
+  {
+    normals.push_back(sample.Normal);
+  }
   Vec3 u;
   if (!normals.empty())
   {
@@ -294,7 +407,20 @@ bool IsStarShaped(const CsgExpressionPtr& expression, const PrimitiveSet& prims,
       return true;
     }
   }
-  return false;
+  // Last, the kernel LPs: exact for meshes, where the heuristics above miss
+  // narrow kernels (concave corners, folds).
+  if (samples.empty())
+  {
+    return false;
+  }
+  Vec3 p;
+  if (KernelPoint(samples, box, planeAxis, p) &&
+    VerifyStarWitness(*expression, prims, box, { p, 1.0 }, VerificationDepth))
+  {
+    return true;
+  }
+  return KernelDirection(samples, planeAxis, u) &&
+    VerifyStarWitness(*expression, prims, box, { u * -1.0, 0.0 }, VerificationDepth);
 }
 } // namespace
 

@@ -28,10 +28,12 @@
 // plane (a point at infinity to directions in the plane): then (x - p) lies in
 // the plane and (*) is the 2-D condition on the curve E ∩ F.
 //
-// Witness candidates (the paper finds them with an LP on a tessellation; we
-// need no tessellation for quadrics): the maximin direction of sampled surface
-// normals, centres of ellipsoid leaves, and points behind the surface along
-// that direction. A wrong candidate is simply rejected by the verification.
+// Witness candidates, cheapest first: the mean normal direction, the maximin
+// direction of sampled surface normals, centres of ellipsoid leaves, points
+// behind the surface along that direction, and last the paper's kernel LP
+// (SmallDimensionLp.h) over the facets' planes (meshes, exact) and tangent
+// planes at surface samples (quadrics, a linearization), for a point and for
+// a direction. A wrong candidate is simply rejected by the verification.
 #pragma once
 
 #include "CsgExpression.h"

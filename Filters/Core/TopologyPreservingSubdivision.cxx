@@ -19,7 +19,7 @@ int MaximumSupportedDepth(const int dims[3])
   return depth;
 }
 
-RootGrid MakeRootGrid(const Box3& domain, double tolerance, int maximumDepth)
+RootGrid MakeRootGrid(const Box3& domain, double tolerance, int maximumDepth, int placement)
 {
   RootGrid grid;
   double extent = 0.0;
@@ -50,7 +50,15 @@ RootGrid MakeRootGrid(const Box3& domain, double tolerance, int maximumDepth)
   // generic spacing and a generic offset makes such coincidences as rare as
   // chance makes them. Deterministic: the same input gives the same grid.
   const double generic = 0.9876543210987654;
-  const Vec3 shift(0.0731059, 0.0418603, 0.0586947);
+  // Further placements step the offset by golden-ratio fractions of the cell
+  // at the tolerance's level: deep lattice planes then move by generic
+  // fractions of their spacing.
+  Vec3 shift(0.0731059, 0.0418603, 0.0586947);
+  const Vec3 step(0.6180339887, 0.3819660113, 0.2360679775);
+  for (int a = 0; a < 3; ++a)
+  {
+    shift[a] = std::fmod(shift[a] + placement * step[a], 1.0);
+  }
   const double finest = std::ldexp(size, -levels);
   if (size * generic >= extent + 2.0 * finest)
   {

@@ -54,8 +54,17 @@ struct SubdivisionResult
 
 /// Chooses the root grid: cubic root cells covering `domain`, sized so that
 /// some level has cells whose diagonal is exactly the tolerance (no finer
-/// than needed), and the finest lattice the keys support.
-RootGrid MakeRootGrid(const Box3& domain, double hausdorffTolerance, int maximumDepth);
+/// than needed), and the finest lattice the keys support. `placement` picks
+/// one of several generic lattice offsets (see LatticePlacements).
+RootGrid MakeRootGrid(const Box3& domain, double hausdorffTolerance, int maximumDepth, int placement = 0);
+
+/// How many lattice placements a driver may try. A surface feature that lies
+/// almost exactly in a lattice plane (a mesh edge a hair from a face plane:
+/// its two facets then cross that plane in a sliver thinner than the finest
+/// lattice spacing) cannot be resolved on that lattice, but moves away from
+/// the planes of another placement; a genuine degeneracy (tangent contact)
+/// fails on every placement.
+constexpr int LatticePlacements = 3;
 
 /// Largest MaximumDepth the lattice supports for a root grid of `dims`.
 int MaximumSupportedDepth(const int dims[3]);

@@ -122,3 +122,26 @@ TEST(Subdivision, TangentialContactEndsAtTheLimitWithoutAGuarantee)
   EXPECT_TRUE(r.Report.Closed);
   EXPECT_TRUE(r.Report.Manifold);
 }
+
+TEST(Subdivision, LatticePlacementsDifferAndAllCoverTheDomain)
+{
+  const Box3 domain{ Vec3(-0.3, 0.1, -1.0), Vec3(0.9, 0.4, 1.0) };
+  std::vector<Vec3> origins;
+  for (int placement = 0; placement < tpc::LatticePlacements; ++placement)
+  {
+    const tpc::RootGrid g = tpc::MakeRootGrid(domain, 0.01, 16, placement);
+    for (int a = 0; a < 3; ++a)
+    {
+      EXPECT_LE(g.Origin[a], domain.lo[a]);
+      EXPECT_GE(g.Origin[a] + g.Dims[a] * g.RootSize, domain.hi[a]);
+    }
+    for (const Vec3& o : origins)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        EXPECT_NE(o[a], g.Origin[a]) << "placement " << placement << " axis " << a;
+      }
+    }
+    origins.push_back(g.Origin);
+  }
+}
