@@ -7,7 +7,9 @@ cd "$(dirname "$0")/.."
 # ParaView 5.11 and its bundled VTK 9.2 (python3-paraview conflicts with
 # libvtk9-dev: ParaView's VTK is the one VTK). The -dev packages after
 # paraview-dev are what find_package(ParaView) asks for
-# (../shared/SETUP-NOTES.md); the last line is our own build and test tools.
+# (../shared/SETUP-NOTES.md); the last lines are our own build and test
+# tools: GLPK is the tests' independent LP oracle, libcgal-demo holds the
+# real test meshes with known topology.
 packages=(
   paraview paraview-dev python3-paraview xvfb xauth
   qtbase5-dev qttools5-dev libqt5svg5-dev qtxmlpatterns5-dev-tools libutfcpp-dev
@@ -17,6 +19,7 @@ packages=(
   libjsoncpp-dev libprotobuf-dev protobuf-compiler libcgns-dev libpython3-dev python3-mpi4py
   libavformat-dev libavcodec-dev libavutil-dev libswscale-dev libxt-dev libtbb-dev
   cmake ninja-build g++ libgtest-dev
+  libglpk-dev libcgal-demo
 )
 missing=()
 for p in "${packages[@]}"; do
