@@ -329,39 +329,23 @@ int vtkTopologyPreservingContour::RequestData(
   params.HausdorffTolerance = tolerance;
   params.MaximumDepth = this->MaximumDepth;
   params.MaximumNumberOfCells = static_cast<std::size_t>(std::max<vtkIdType>(this->MaximumNumberOfCells, 8));
-  // Cells left unresolved by the depth limit are usually a surface feature a
-  // hair from a lattice plane; another lattice placement moves it away (see
-  // tpc::LatticePlacements). Keep the first placement that resolves
-  // everything, else the one with the fewest unresolved cells.
-  tpc::RootGrid rootGrid;
-  tpc::SubdivisionResult sub;
-  int placementsTried = 0;
-  for (int placement = 0; placement < tpc::LatticePlacements; ++placement)
+  // Another lattice placement usually resolves cells a first one leaves to
+  // the depth limit (a crease a hair from a lattice plane); inputs violating
+  // the method's assumptions are not worth the retries.
+  auto progress = [this](double f) {
+    this->UpdateProgress(0.85 * f); // a retry starts over
+    return this->GetAbortExecute() != 0;
+  };
+  tpc::PlacedSubdivision placed = tpc::RunOnBestLatticePlacement(scene, rootDomain, params,
+    assumptionsMet ? tpc::LatticePlacements : 1, ParallelForSMP, progress);
+  if (placed.Result.Aborted)
   {
-    const tpc::RootGrid candidateGrid =
-      tpc::MakeRootGrid(rootDomain, tolerance, params.MaximumDepth, placement);
-    auto progress = [this](double f) {
-      this->UpdateProgress(0.85 * f); // a retry starts over
-      return this->GetAbortExecute() != 0;
-    };
-    tpc::SubdivisionResult candidate = tpc::RunTopologyPreservingSubdivision(
-      scene, candidateGrid, params, ParallelForSMP, progress);
-    ++placementsTried;
-    if (candidate.Aborted)
-    {
-      vtkWarningMacro("Aborted: outputs are empty.");
-      return 1;
-    }
-    if (placement == 0 || candidate.UnresolvedCells < sub.UnresolvedCells)
-    {
-      rootGrid = candidateGrid;
-      sub = std::move(candidate);
-    }
-    if (sub.UnresolvedCells == 0 || sub.CellLimitReached || !assumptionsMet)
-    {
-      break; // resolved, or another placement would hit the same limit
-    }
+    vtkWarningMacro("Aborted: outputs are empty.");
+    return 1;
   }
+  const tpc::RootGrid& rootGrid = placed.Grid;
+  const tpc::SubdivisionResult& sub = placed.Result;
+  const int placementsTried = placed.PlacementsTried;
   const tpc::ExtractionResult extraction = tpc::ExtractSurface(sub.Octree, scene, ParallelForSMP);
   this->UpdateProgress(0.95);
   const tpc::TopologyReport topo = tpc::ComputeTopologyReport(extraction.Mesh);

@@ -1,5 +1,6 @@
 #include "TopologyPreservingSubdivision.h"
 
+#include "LatticePlacement.h"
 #include "McCompatibilityTest.h"
 
 #include <algorithm>
@@ -291,6 +292,43 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
     progress(1.0);
   }
   return result;
+}
+
+PlacedSubdivision RunOnBestLatticePlacement(const ImplicitScene& scene, const Box3& domain,
+  const SubdivisionParameters& parameters, int maximumPlacements, const ParallelFor& parallelFor,
+  const ProgressCallback& progress)
+{
+  const RootGrid base = MakeRootGrid(domain, parameters.HausdorffTolerance, parameters.MaximumDepth);
+  const std::vector<Vec3> shifts = RankLatticeShifts(scene.Primitives, base, parameters.HausdorffTolerance,
+    parameters.MaximumDepth, std::max(1, maximumPlacements));
+  PlacedSubdivision best;
+  for (const Vec3& shift : shifts)
+  {
+    RootGrid grid = base;
+    for (int a = 0; a < 3; ++a)
+    {
+      // Only where the shifted roots still cover the domain.
+      if (grid.Origin[a] - shift[a] <= domain.lo[a] &&
+        grid.Origin[a] - shift[a] + grid.Dims[a] * grid.RootSize >= domain.hi[a])
+      {
+        grid.Origin[a] -= shift[a];
+      }
+    }
+    SubdivisionResult run =
+      RunTopologyPreservingSubdivision(scene, grid, parameters, parallelFor, progress);
+    ++best.PlacementsTried;
+    if (best.PlacementsTried == 1 || run.Aborted ||
+      run.UnresolvedCells < best.Result.UnresolvedCells)
+    {
+      best.Grid = grid;
+      best.Result = std::move(run);
+    }
+    if (best.Result.Aborted || best.Result.UnresolvedCells == 0 || best.Result.CellLimitReached)
+    {
+      break;
+    }
+  }
+  return best;
 }
 
 } // namespace tpc

@@ -59,11 +59,11 @@ struct SubdivisionResult
 RootGrid MakeRootGrid(const Box3& domain, double hausdorffTolerance, int maximumDepth, int placement = 0);
 
 /// How many lattice placements a driver may try. A surface feature that lies
-/// almost exactly in a lattice plane (a mesh edge a hair from a face plane:
-/// its two facets then cross that plane in a sliver thinner than the finest
-/// lattice spacing) cannot be resolved on that lattice, but moves away from
-/// the planes of another placement; a genuine degeneracy (tangent contact)
-/// fails on every placement.
+/// almost exactly on the lattice (a crease a hair from a lattice plane or
+/// line: it meets it in a sliver thinner than the finest lattice spacing)
+/// cannot be resolved on that lattice, but moves away on another placement
+/// (LatticePlacement.h); a genuine degeneracy (tangent contact) fails on
+/// every placement.
 constexpr int LatticePlacements = 3;
 
 /// Largest MaximumDepth the lattice supports for a root grid of `dims`.
@@ -71,6 +71,23 @@ int MaximumSupportedDepth(const int dims[3]);
 
 SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
   const RootGrid& grid, const SubdivisionParameters& parameters,
+  const ParallelFor& parallelFor = SequentialFor, const ProgressCallback& progress = nullptr);
+
+/// The subdivision on the best lattice placement. The root grid of
+/// MakeRootGrid is shifted by less than the deepest cell, first by the shift
+/// that keeps lattice planes and lines furthest from the meshes' creases
+/// (LatticePlacement.h); while cells remain unresolved (and the cell limit
+/// was not the cause) the next best shifts are tried, up to
+/// `maximumPlacements`, and the run with the fewest unresolved cells is
+/// kept. A progress callback restarts at 0 on each retry.
+struct PlacedSubdivision
+{
+  RootGrid Grid;
+  SubdivisionResult Result;
+  int PlacementsTried = 0;
+};
+PlacedSubdivision RunOnBestLatticePlacement(const ImplicitScene& scene, const Box3& domain,
+  const SubdivisionParameters& parameters, int maximumPlacements = LatticePlacements,
   const ParallelFor& parallelFor = SequentialFor, const ProgressCallback& progress = nullptr);
 
 } // namespace tpc

@@ -17,9 +17,10 @@ struct ContourRun
 };
 
 /// Contours `scene` over `bounds` grown by 5 % of its diagonal, with the
-/// tolerance relative to the diagonal of `bounds`.
+/// tolerance relative to the diagonal of `bounds`, trying up to
+/// `placements` lattice placements.
 inline ContourRun Contour(const tpc::ImplicitScene& scene, const tpc::Box3& bounds,
-  double relativeTolerance, int maxDepth = 16)
+  double relativeTolerance, int maxDepth = 16, int placements = tpc::LatticePlacements)
 {
   ContourRun r;
   tpc::Box3 domain = bounds;
@@ -33,8 +34,8 @@ inline ContourRun Contour(const tpc::ImplicitScene& scene, const tpc::Box3& boun
   p.HausdorffTolerance = relativeTolerance * d;
   p.MaximumDepth = maxDepth;
   r.Tolerance = p.HausdorffTolerance;
-  const tpc::RootGrid grid = tpc::MakeRootGrid(domain, p.HausdorffTolerance, p.MaximumDepth);
-  r.Subdivision = tpc::RunTopologyPreservingSubdivision(scene, grid, p);
+  tpc::PlacedSubdivision placed = tpc::RunOnBestLatticePlacement(scene, domain, p, placements);
+  r.Subdivision = std::move(placed.Result);
   r.Extraction = tpc::ExtractSurface(r.Subdivision.Octree, scene);
   r.Report = tpc::ComputeTopologyReport(r.Extraction.Mesh);
   return r;

@@ -1,0 +1,71 @@
+// Where to put the lattice so that no cell face grazes a crease.
+//
+// The octree's cells are bounded by lattice planes. A ridge or valley of a
+// mesh lying (almost) in an axis plane - a roof ridge, a rim in a symmetry
+// plane, common in CAD meshes with round coordinates - with a lattice plane a
+// hair below it is cut by that plane along two lines closer than the finest
+// lattice spacing: a sliver no face sample can split, at every depth, along
+// the whole crease (and a face lying a hair from a plane cannot be told from
+// it). They move away when the lattice is shifted by a fraction of a cell,
+// so the driver ranks candidate shifts by the length of
+// such creases each would graze and tries the best first
+// (RunOnBestLatticePlacement).
+//
+// Other near-coincidences (a crease passing a hair from a lattice line, met
+// twice by it) are isolated points, as likely on any lattice; the driver's
+// retries on the next shifts are what moves them.
+#pragma once
+
+#include "CsgExpression.h"
+#include "RootGrid.h"
+
+#include <array>
+#include <vector>
+
+namespace tpc
+{
+
+/// A ridge or valley almost parallel to the planes normal to one axis: the
+/// range of its coordinate along that axis, and its length (the number of
+/// cells it can spoil grows with it).
+struct FlatCreaseEdge
+{
+  double Lo = 0.0;
+  double Hi = 0.0;
+  double Length = 0.0;
+  /// Height above a plane per unit of separation of the plane's two traces.
+  double BandPerSeparation = 0.0;
+};
+
+/// The mesh edges that can graze lattice planes, per axis: ridges and
+/// valleys (both triangles on the same side along the axis) whose extent
+/// along it is below `ridgeThickness`, and edges of faces lying in an axis
+/// plane (within `planeThickness`).
+struct LatticeCreases
+{
+  std::array<std::vector<FlatCreaseEdge>, 3> Ridges;
+  std::array<std::vector<FlatCreaseEdge>, 3> InPlane;
+};
+
+LatticeCreases FindLatticeCreases(
+  const PrimitiveSet& primitives, double ridgeThickness, double planeThickness);
+
+/// The spacings the penalty looks at.
+struct LatticeSpacings
+{
+  double Surface = 1.0; ///< cells one level below the tolerance's (all along the surface)
+  double Deepest = 1.0; ///< the deepest allowed cells
+  double Finest = 1.0;  ///< the lattice (face refinement samples down to it)
+};
+
+/// Length of crease (in deepest cells) a lattice with this origin grazes,
+/// weighted by closeness; 0 when none comes close.
+double LatticeShiftPenalty(const LatticeCreases& creases, const Vec3& origin, const LatticeSpacings& spacings);
+
+/// Shifts (each component in [0, LatticeSpacings::Surface), to subtract from
+/// the origin of `base`) best first, at most `count`. The zero shift comes
+/// first among equals, so scenes without meshes keep MakeRootGrid's lattice.
+std::vector<Vec3> RankLatticeShifts(const PrimitiveSet& primitives, const RootGrid& base,
+  double hausdorffTolerance, int maximumDepth, int count);
+
+} // namespace tpc
