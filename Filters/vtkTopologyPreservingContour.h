@@ -88,6 +88,16 @@ public:
 
   ///@{
   /**
+   * Mesh solids without a pipeline connection (like vtkPolyDataAlgorithm's):
+   * SetInputData replaces the input port's connections with one mesh,
+   * AddInputData adds one more solid.
+   */
+  void SetInputData(vtkDataObject* mesh) { this->SetInputDataObject(0, mesh); }
+  void AddInputData(vtkDataObject* mesh) { this->AddInputDataObject(0, mesh); }
+  ///@}
+
+  ///@{
+  /**
    * The implicit function defining (or combined with) the solid; the solid is
    * where it is negative. Default: none.
    */
