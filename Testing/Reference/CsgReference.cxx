@@ -1,0 +1,187 @@
+// Reference topology for the mesh CSG tests, computed independently of our
+// method: CGAL's corefinement Booleans (Polygon Mesh Processing) on an exact
+// kernel, then components and Euler characteristic of the result.
+//
+//   CsgReference <meshA.off> <B> <union|intersection|difference> [tx ty tz]
+//
+// B is a mesh file (translated by t, as the test translates it) or
+// "spheres:cx cy cz r;cx cy cz r;..." - a union of spheres, approximated
+// here by icospheres fine enough (5 subdivisions, relative error < 2e-4)
+// that the configurations used, which are far from tangency, keep the exact
+// spheres' topology. Prints "components genus euler". Not built by default
+// (configure with -DTPC_BUILD_CSG_REFERENCE=ON); its results are recorded in
+// Data/CsgReference.csv.
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/corefinement.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
+using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+namespace
+{
+Mesh Icosphere(double cx, double cy, double cz, double r, int levels)
+{
+  const double t = (1.0 + std::sqrt(5.0)) / 2.0;
+  std::vector<std::array<double, 3>> p = { { -1, t, 0 }, { 1, t, 0 }, { -1, -t, 0 }, { 1, -t, 0 },
+    { 0, -1, t }, { 0, 1, t }, { 0, -1, -t }, { 0, 1, -t }, { t, 0, -1 }, { t, 0, 1 }, { -t, 0, -1 },
+    { -t, 0, 1 } };
+  std::vector<std::vector<std::size_t>> f = { { 0, 11, 5 }, { 0, 5, 1 }, { 0, 1, 7 }, { 0, 7, 10 },
+    { 0, 10, 11 }, { 1, 5, 9 }, { 5, 11, 4 }, { 11, 10, 2 }, { 10, 7, 6 }, { 7, 1, 8 }, { 3, 9, 4 },
+    { 3, 4, 2 }, { 3, 2, 6 }, { 3, 6, 8 }, { 3, 8, 9 }, { 4, 9, 5 }, { 2, 4, 11 }, { 6, 2, 10 },
+    { 8, 6, 7 }, { 9, 8, 1 } };
+  for (int l = 0; l < levels; ++l)
+  {
+    std::map<std::pair<std::size_t, std::size_t>, std::size_t> mid;
+    auto midpoint = [&](std::size_t a, std::size_t b) {
+      const auto key = std::minmax(a, b);
+      auto it = mid.find(key);
+      if (it != mid.end())
+      {
+        return it->second;
+      }
+      p.push_back({ (p[a][0] + p[b][0]) / 2, (p[a][1] + p[b][1]) / 2, (p[a][2] + p[b][2]) / 2 });
+      return mid[key] = p.size() - 1;
+    };
+    std::vector<std::vector<std::size_t>> g;
+    for (const auto& tri : f)
+    {
+      const std::size_t a = midpoint(tri[0], tri[1]), b = midpoint(tri[1], tri[2]), c = midpoint(tri[2], tri[0]);
+      g.push_back({ tri[0], a, c });
+      g.push_back({ tri[1], b, a });
+      g.push_back({ tri[2], c, b });
+      g.push_back({ a, b, c });
+    }
+    f.swap(g);
+  }
+  std::vector<Kernel::Point_3> points;
+  for (const auto& q : p)
+  {
+    const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+    points.emplace_back(cx + r * q[0] / n, cy + r * q[1] / n, cz + r * q[2] / n);
+  }
+  Mesh m;
+  PMP::polygon_soup_to_polygon_mesh(points, f, m);
+  PMP::orient_to_bound_a_volume(m);
+  return m;
+}
+
+bool ReadMesh(const std::string& file, double tx, double ty, double tz, Mesh& m)
+{
+  if (!PMP::IO::read_polygon_mesh(file, m) || !CGAL::is_closed(m))
+  {
+    std::cerr << "cannot read a closed mesh from " << file << "\n";
+    return false;
+  }
+  for (auto v : m.vertices())
+  {
+    // Translate in double, as VTK does, then make it exact.
+    const auto& q = m.point(v);
+    m.point(v) = Kernel::Point_3(CGAL::to_double(q.x()) + tx, CGAL::to_double(q.y()) + ty,
+      CGAL::to_double(q.z()) + tz);
+  }
+  PMP::orient_to_bound_a_volume(m);
+  return true;
+}
+
+bool Boolean(Mesh& a, Mesh& b, const std::string& op, Mesh& out)
+{
+  if (PMP::does_self_intersect(a) || PMP::does_self_intersect(b))
+  {
+    std::cerr << "an operand self-intersects\n";
+    return false;
+  }
+  if (op == "union")
+  {
+    return PMP::corefine_and_compute_union(a, b, out);
+  }
+  if (op == "intersection")
+  {
+    return PMP::corefine_and_compute_intersection(a, b, out);
+  }
+  return PMP::corefine_and_compute_difference(a, b, out);
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+  if (argc != 4 && argc != 7)
+  {
+    std::cerr << "usage: CsgReference meshA.off <meshB.off | 'spheres:cx cy cz r;...'> "
+                 "<union|intersection|difference> [tx ty tz]\n";
+    return 2;
+  }
+  const std::string op = argv[3];
+  const double tx = argc == 7 ? std::atof(argv[4]) : 0.0, ty = argc == 7 ? std::atof(argv[5]) : 0.0,
+               tz = argc == 7 ? std::atof(argv[6]) : 0.0;
+  Mesh a;
+  if (!ReadMesh(argv[1], 0, 0, 0, a))
+  {
+    return 1;
+  }
+  Mesh b;
+  const std::string second = argv[2];
+  if (second.rfind("spheres:", 0) == 0)
+  {
+    std::stringstream list(second.substr(8));
+    std::string item;
+    bool first = true;
+    while (std::getline(list, item, ';'))
+    {
+      double c[4] = { 0, 0, 0, 0 };
+      std::stringstream fields(item);
+      for (double& x : c)
+      {
+        fields >> x;
+      }
+      Mesh s = Icosphere(c[0], c[1], c[2], c[3], 5);
+      if (first)
+      {
+        b = s;
+        first = false;
+      }
+      else
+      {
+        Mesh u;
+        if (!Boolean(b, s, "union", u))
+        {
+          return 1;
+        }
+        b = u;
+      }
+    }
+  }
+  else if (!ReadMesh(second, tx, ty, tz, b))
+  {
+    return 1;
+  }
+  Mesh out;
+  if (!Boolean(a, b, op, out))
+  {
+    std::cerr << "corefinement failed\n";
+    return 1;
+  }
+  const long long v = static_cast<long long>(out.number_of_vertices());
+  const long long e = static_cast<long long>(out.number_of_edges());
+  const long long f = static_cast<long long>(out.number_of_faces());
+  auto fcc = out.add_property_map<Mesh::Face_index, std::size_t>("f:cc").first;
+  const long long components = static_cast<long long>(PMP::connected_components(out, fcc));
+  const long long euler = v - e + f;
+  std::cout << components << " " << (2 * components - euler) / 2 << " " << euler << "\n";
+  return 0;
+}
