@@ -15,9 +15,13 @@
  * of Tolerance.
  *
  * Inputs
- * - Input port 0 (optional, repeatable): closed triangle meshes, one solid per
- *   connection. (Meshes are not supported yet: a mesh input is reported as an
- *   error.)
+ * - Input port 0 (optional, repeatable): closed triangle meshes (vtkPolyData;
+ *   polygons and strips are triangulated), one solid per connection. Each is
+ *   checked and repaired (duplicate vertices, degenerate and duplicate
+ *   triangles, orientation), with a warning saying what was done; an open
+ *   mesh is an error; non-manifold or self-intersecting input is computed
+ *   with TopologyGuaranteed = 0. Inside/outside is exact (ray parity with
+ *   exact predicates).
  * - ImplicitFunction: vtkSphere, vtkQuadric, vtkBox, vtkCylinder, vtkPlane and
  *   vtkImplicitBoolean trees of them (Union, Intersection, Difference), each
  *   honouring its linear Transform. The solid is where the function is < 0.

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Sets everything up, then contours a CSG of implicit primitives with
-# guaranteed topology: writes demo-output/{grid.htg, surface.vtp, surface.png,
-# report.txt} and prints the topology report.
+# Sets everything up, then contours a CSG of implicit primitives and remeshes
+# a real CAD mesh with guaranteed topology: writes demo-output/{csg,mesh}-
+# grid.htg, {csg,mesh}-surface.vtp, surface.png, report.txt and prints the
+# topology report.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
