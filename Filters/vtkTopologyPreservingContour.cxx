@@ -329,6 +329,24 @@ int vtkTopologyPreservingContour::RequestData(
   params.HausdorffTolerance = tolerance;
   params.MaximumDepth = this->MaximumDepth;
   params.MaximumNumberOfCells = static_cast<std::size_t>(std::max<vtkIdType>(this->MaximumNumberOfCells, 8));
+  if (!assumptionsMet)
+  {
+    // The guarantee is lost anyway, and self-intersections are complex at
+    // every depth: refining them to MaximumDepth costs minutes and buys
+    // nothing. Stop three levels below the cells the tolerance needs.
+    double extent = 0.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      extent = std::max(extent, rootDomain.Width(a));
+    }
+    const int toleranceLevel = static_cast<int>(std::ceil(std::log2(extent * std::sqrt(3.0) / tolerance)));
+    if (toleranceLevel + 3 < params.MaximumDepth)
+    {
+      params.MaximumDepth = std::max(0, toleranceLevel + 3);
+      vtkWarningMacro("The inputs violate the method's assumptions: refinement stops at depth "
+        << params.MaximumDepth << " instead of MaximumDepth (" << this->MaximumDepth << ").");
+    }
+  }
   // Another lattice placement usually resolves cells a first one leaves to
   // the depth limit (a crease a hair from a lattice plane); inputs violating
   // the method's assumptions are not worth the retries.
@@ -417,7 +435,7 @@ int vtkTopologyPreservingContour::RequestData(
         << " surface cell(s) were stopped by";
     if (sub.DepthLimitReached)
     {
-      why << " MaximumDepth (" << this->MaximumDepth << ")";
+      why << " MaximumDepth (" << params.MaximumDepth << ")";
     }
     if (sub.CellLimitReached)
     {

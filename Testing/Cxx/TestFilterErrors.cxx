@@ -3,6 +3,7 @@
 // cap unbounded solids.
 #include "FilterTestHelpers.h"
 
+#include "vtkAppendPolyData.h"
 #include "vtkCellData.h"
 #include "vtkCylinder.h"
 #include "vtkImplicitBoolean.h"
@@ -55,6 +56,38 @@ TEST(FilterErrors, ClosedMeshIsContoured)
   EXPECT_EQ(r.Components, 1);
   EXPECT_EQ(r.Genus, 0);
   EXPECT_EQ(r.Guaranteed, 1);
+}
+
+TEST(FilterErrors, SelfIntersectingMeshIsComputedQuicklyWithoutGuarantee)
+{
+  // Two overlapping spheres in one mesh: its surface crosses itself, which
+  // no refinement resolves. The filter says so, caps the depth (instead of
+  // refining every crossing to MaximumDepth) and returns a closed manifold.
+  vtkNew<vtkSphereSource> a, b;
+  b->SetCenter(0.3, 0.1, 0.05);
+  vtkNew<vtkAppendPolyData> both;
+  both->AddInputConnection(a->GetOutputPort());
+  both->AddInputConnection(b->GetOutputPort());
+  vtkNew<vtkTopologyPreservingContour> f;
+  f->AddInputConnection(both->GetOutputPort());
+  f->SetTolerance(1.0 / 32);
+  MessageRecorder messages(f);
+  const FilterResult r = tpctest::Run(f);
+  EXPECT_TRUE(messages.Errors.empty()) << messages.Errors;
+  EXPECT_NE(messages.Warnings.find("self-intersecting"), std::string::npos) << messages.Warnings;
+  EXPECT_NE(messages.Warnings.find("refinement stops at depth"), std::string::npos) << messages.Warnings;
+  EXPECT_EQ(r.Guaranteed, 0);
+  const tpctest::IndependentTopology t = tpctest::Measure(r.Surface);
+  EXPECT_EQ(t.BoundaryEdges, 0);
+  EXPECT_EQ(t.NonManifoldEdges, 0);
+  int deepest = 0;
+  vtkDataArray* depth = r.Grid->GetCellData()->GetArray("Depth");
+  ASSERT_NE(depth, nullptr);
+  for (vtkIdType i = 0; i < depth->GetNumberOfTuples(); ++i)
+  {
+    deepest = std::max(deepest, static_cast<int>(depth->GetTuple1(i)));
+  }
+  EXPECT_LT(deepest, f->GetMaximumDepth());
 }
 
 TEST(FilterErrors, UnsupportedFunctionsAreRefused)
