@@ -1,0 +1,155 @@
+"""tpcontour, the command-line program: every input format, a mesh Boolean,
+the outputs it writes, the JSON report, and the exit codes and messages on
+bad input.
+
+Usage: pvpython TestCommandLine.py <tpcontour> <folder with data/meshes> <work folder>
+"""
+import json
+import os
+import subprocess
+import sys
+
+from vtkmodules.vtkCommonTransforms import vtkTransform
+from vtkmodules.vtkFiltersCore import vtkAppendPolyData
+from vtkmodules.vtkFiltersGeneral import vtkTransformPolyDataFilter
+from vtkmodules.vtkFiltersSources import vtkSphereSource
+from vtkmodules.vtkIOGeometry import vtkOBJWriter, vtkSTLReader, vtkSTLWriter
+from vtkmodules.vtkIOPLY import vtkPLYWriter
+from vtkmodules.vtkIOXML import (vtkXMLHyperTreeGridReader, vtkXMLPolyDataReader,
+                                 vtkXMLPolyDataWriter)
+
+tpcontour, data, work = sys.argv[1:4]
+meshes = os.path.join(data, "data", "meshes")
+os.makedirs(work, exist_ok=True)
+os.chdir(work)
+failures = []
+
+
+def check(condition, what):
+    print(("ok   " if condition else "FAIL ") + what, flush=True)
+    if not condition:
+        failures.append(what)
+
+
+def run(*args):
+    p = subprocess.run([tpcontour, *args], capture_output=True, text=True,
+                       env=dict(os.environ, VTK_SMP_BACKEND_IN_USE="STDThread"))
+    return p.returncode, p.stdout, p.stderr
+
+
+def read_off(name):
+    # A minimal OFF parser keeps this test independent of the module under test.
+    with open(os.path.join(meshes, name)) as f:
+        words = f.read().split()
+    assert words[0] == "OFF"
+    nv, nf = int(words[1]), int(words[2])
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+    points, polys, i = vtkPoints(), vtkCellArray(), 4
+    for _ in range(nv):
+        points.InsertNextPoint(float(words[i]), float(words[i + 1]), float(words[i + 2]))
+        i += 3
+    for _ in range(nf):
+        n = int(words[i])
+        polys.InsertNextCell(n, [int(w) for w in words[i + 1:i + 1 + n]])
+        i += 1 + n
+    mesh = vtkPolyData()
+    mesh.SetPoints(points)
+    mesh.SetPolys(polys)
+    return mesh
+
+
+def write(writer, mesh, name):
+    writer.SetInputData(mesh)
+    if hasattr(writer, "SetDataModeToBinary"):
+        writer.SetDataModeToBinary()  # large appended .vtp files are unreadable here (README)
+    writer.SetFileName(name)
+    writer.Write()
+    return name
+
+
+# --help documents every option and the exit codes.
+code, out, _ = run("--help")
+check(code == 0 and all(o in out for o in ("--output", "--grid", "--operation", "--tolerance",
+                                           "--absolute-tolerance", "--max-depth", "--json",
+                                           "Exit status")), "--help documents the options")
+
+# Every input format gives knot1's topology (genus 1), guaranteed.
+knot = read_off("knot1.off")
+inputs = {
+    "off": os.path.join(meshes, "knot1.off"),
+    "stl": write(vtkSTLWriter(), knot, "knot1.stl"),
+    "obj": write(vtkOBJWriter(), knot, "knot1.obj"),
+    "ply": write(vtkPLYWriter(), knot, "knot1.ply"),
+    "vtp": write(vtkXMLPolyDataWriter(), knot, "knot1.vtp"),
+}
+for fmt, path in inputs.items():
+    code, out, err = run(path, "-t", "0.03125", "--json", "-o", f"out-{fmt}.vtp")
+    report = json.loads(out) if code == 0 else {}
+    check(code == 0 and report.get("genus") == 1 and report.get("components") == 1
+          and report.get("guaranteed") is True and report.get("closed") is True,
+          f"{fmt} input: genus 1, guaranteed ({code}, {err.strip()[:200]})")
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(f"out-{fmt}.vtp")
+    reader.Update()
+    check(reader.GetOutput().GetNumberOfPolys() == report.get("triangles"),
+          f"{fmt} input: the written surface has the reported triangles")
+
+# A Boolean of two files: joint − knot1 moved, genus 9 (CGAL's exact corefinement).
+move = vtkTransform()
+move.Translate(0.0158, 0.0442, 0.0271)
+moved = vtkTransformPolyDataFilter()
+moved.SetInputData(knot)
+moved.SetTransform(move)
+moved.Update()
+write(vtkXMLPolyDataWriter(), moved.GetOutput(), "knot1-moved.vtp")
+code, out, err = run(os.path.join(meshes, "joint.off"), "knot1-moved.vtp", "--operation", "difference",
+                     "-t", "0.03125", "--json", "-o", "difference.stl", "-g", "difference.htg")
+report = json.loads(out) if code == 0 else {}
+check(code == 0 and report.get("genus") == 9 and report.get("components") == 1,
+      f"joint - knot1: genus 9 ({code}, {err.strip()[:200]})")
+stl = vtkSTLReader()
+stl.SetFileName("difference.stl")
+stl.Update()
+check(stl.GetOutput().GetNumberOfPolys() == report.get("triangles"), "STL output written")
+htg = vtkXMLHyperTreeGridReader()
+htg.SetFileName("difference.htg")
+htg.Update()
+check(htg.GetOutput().GetNumberOfCells() == report.get("grid_cells") and report.get("grid_cells", 0) > 0,
+      "grid written")
+
+# Absolute tolerance and the text report.
+code, out, _ = run(inputs["vtp"], "--absolute-tolerance", "0.05", "-o", "abs.vtp")
+check(code == 0 and "genus                1" in out and "(tolerance 0.05)" in out,
+      "--absolute-tolerance and the text report")
+
+# The guarantee cannot hold: a self-intersecting mesh (two overlapping spheres) -> exit 2.
+a, b = vtkSphereSource(), vtkSphereSource()
+b.SetCenter(0.3, 0.1, 0.05)
+both = vtkAppendPolyData()
+both.AddInputConnection(a.GetOutputPort())
+both.AddInputConnection(b.GetOutputPort())
+both.Update()
+write(vtkSTLWriter(), both.GetOutput(), "crossing.stl")
+code, out, err = run("crossing.stl", "-t", "0.03125")
+check(code == 2 and "TopologyGuaranteed   0" in out and "self-intersecting" in err,
+      f"no guarantee: exit 2 with the reason ({code})")
+
+# Bad input: a clear message and exit 1.
+open_sphere = vtkSphereSource()
+open_sphere.SetEndTheta(300)
+open_sphere.Update()
+write(vtkSTLWriter(), open_sphere.GetOutput(), "open.stl")
+for args, message in ((["missing.stl"], "no such file"),
+                      (["open.stl"], "not a closed surface"),
+                      (["knot1.vtp", "--operation", "xor"], "--operation must be"),
+                      (["knot1.vtp", "--tolerance", "-1"], "positive number"),
+                      (["knot1.vtp", "-o", "out.obj"], "--output must end in"),
+                      (["notes.txt"], "no such file"),
+                      ([], "no input file")):
+    code, _, err = run(*args)
+    check(code == 1 and message in err, f"{' '.join(args) or '(no arguments)'}: exit 1, says '{message}'")
+
+if failures:
+    sys.exit(f"{len(failures)} check(s) failed")
+print("all command-line checks passed")
