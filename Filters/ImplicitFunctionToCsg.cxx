@@ -129,14 +129,22 @@ public:
     }
     if (auto* p = vtkPlane::SafeDownCast(f))
     {
-      const double* o = p->GetOrigin();
-      const double* n = p->GetNormal();
-      if (n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0)
+      // Read the plane back from the function itself rather than from Origin
+      // and Normal: ParaView's vtkPVPlane (the Plane widget) adds an Offset
+      // along the normal and may snap the normal to an axis. Both are affine:
+      // the gradient is the normal, and f(origin) / |n|^2 the offset.
+      double o[3] = { p->GetOrigin()[0], p->GetOrigin()[1], p->GetOrigin()[2] };
+      double n[3];
+      p->EvaluateGradient(o, n);
+      const double nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+      if (!(nn > 0.0))
       {
         this->Error = "a vtkPlane has a zero normal";
         return false;
       }
-      term = CsgTerm::Primitive(this->Add(Quadric::Plane({ o[0], o[1], o[2] }, { n[0], n[1], n[2] }), toLocal));
+      const double shift = p->EvaluateFunction(o) / nn;
+      const Vec3 point(o[0] - shift * n[0], o[1] - shift * n[1], o[2] - shift * n[2]);
+      term = CsgTerm::Primitive(this->Add(Quadric::Plane(point, { n[0], n[1], n[2] }), toLocal));
       return true;
     }
     if (auto* box = vtkBox::SafeDownCast(f))

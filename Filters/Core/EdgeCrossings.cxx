@@ -6,49 +6,55 @@ namespace tpc
 {
 namespace
 {
+/// Pieces examined per edge at most. Depth alone does not bound the work: a
+/// leaf that is undecided on every piece yet proven on the finest ones (a
+/// surface grazing the edge) would visit 2^depth pieces.
+constexpr int MaximumPieces = 4096;
 
 EdgeCrossingCount Count(const CsgExpressionPtr& expression, const PrimitiveSet& prims,
-  const Vec3& a, const Vec3& b, int axis, bool inA, bool inB, int budget)
+  const Vec3& a, const Vec3& b, int axis, bool inA, bool inB, int budget, int& pieces)
 {
+  if (++pieces > MaximumPieces)
+  {
+    return { 0, false };
+  }
   Box3 seg{ a, b };
   const auto pruned = CsgExpression::Prune(expression, seg, prims);
   if (pruned.Sign != RegionSign::Mixed)
   {
     return { 0, true };
   }
+  // The combined status is a monotone Boolean function (union and
+  // intersection; complements are in the leaves' sigma) of the leaves'
+  // statuses. If each leaf changes status at most once on the piece and all
+  // that change do so the same way (all enter, or all leave), the combined
+  // status changes at most once. (Coincident surfaces - a Bounds plane on a
+  // box face - change together: still decided.)
   bool decided = true;
-  int changing = 0;
+  int enters = 0, exits = 0;
   for (const CsgLeaf& leaf : pruned.Expression->Leaves())
   {
-    // Each leaf must change sign at most once on the piece: a quadric whose
-    // derivative keeps one sign, a mesh crossed at most once.
     if (leaf.Kind == PrimitiveKind::Quadric)
     {
-      if (prims.Quadrics[leaf.Primitive].EncloseDerivative(seg, axis).ContainsZero())
+      // A quadric strictly monotone along the piece, or constant on it.
+      const Interval slope = prims.Quadrics[leaf.Primitive].EncloseDerivative(seg, axis);
+      if (slope.ContainsZero() && !(slope.lo == 0.0 && slope.hi == 0.0))
       {
         decided = false;
         break;
       }
-      if (LeafIsInside(leaf, prims, a) != LeafIsInside(leaf, prims, b))
-      {
-        ++changing;
-      }
     }
-    else
+    else if (prims.Meshes[leaf.Primitive].CountCrossings(a, b, axis, *leaf.Triangles) > 1)
     {
-      const int crossings = prims.Meshes[leaf.Primitive].CountCrossings(a, b, axis, *leaf.Triangles);
-      if (crossings > 1)
-      {
-        decided = false;
-        break;
-      }
-      changing += crossings;
+      decided = false;
+      break;
     }
+    const bool leafInA = LeafIsInside(leaf, prims, a), leafInB = LeafIsInside(leaf, prims, b);
+    enters += !leafInA && leafInB ? 1 : 0;
+    exits += leafInA && !leafInB ? 1 : 0;
   }
-  if (decided && changing <= 1)
+  if (decided && (enters == 0 || exits == 0))
   {
-    // Every leaf is monotone, at most one changes status: the combined status
-    // changes at most once along the piece.
     return { inA != inB ? 1 : 0, true };
   }
   if (budget == 0)
@@ -62,12 +68,12 @@ EdgeCrossingCount Count(const CsgExpressionPtr& expression, const PrimitiveSet& 
     return { 0, false }; // no representable midpoint left
   }
   const bool inM = pruned.Expression->IsInside(m, prims);
-  const EdgeCrossingCount left = Count(pruned.Expression, prims, a, m, axis, inA, inM, budget - 1);
+  const EdgeCrossingCount left = Count(pruned.Expression, prims, a, m, axis, inA, inM, budget - 1, pieces);
   if (!left.Proven || left.Count >= 2)
   {
     return left;
   }
-  const EdgeCrossingCount right = Count(pruned.Expression, prims, m, b, axis, inM, inB, budget - 1);
+  const EdgeCrossingCount right = Count(pruned.Expression, prims, m, b, axis, inM, inB, budget - 1, pieces);
   return { left.Count + right.Count, right.Proven };
 }
 } // namespace
@@ -76,7 +82,8 @@ EdgeCrossingCount CountEdgeCrossings(const CsgExpressionPtr& expression,
   const PrimitiveSet& primitives, const Vec3& a, const Vec3& b, int axis, bool insideA,
   bool insideB, int maxBisections)
 {
-  return Count(expression, primitives, a, b, axis, insideA, insideB, maxBisections);
+  int pieces = 0;
+  return Count(expression, primitives, a, b, axis, insideA, insideB, maxBisections, pieces);
 }
 
 Vec3 FindEdgeCrossing(const CsgExpression& expression, const PrimitiveSet& primitives,

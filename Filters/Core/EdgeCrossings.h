@@ -4,11 +4,12 @@
 // The paper uses directed distances for polyhedra. For our primitives each leaf
 // restricted to the edge is a polynomial of degree <= 2; rather than solving it
 // in floating point (which can miss a double root), the edge is bisected until
-// on every piece each active leaf is either sign-definite or strictly monotone
-// (derivative enclosure excluding zero) and at most one leaf changes sign.
-// On such a piece the combined min/max field changes sign at most once, so the
-// count is exact. Tangential contact never reaches that state: the bisection
-// budget runs out and the edge is reported as not proven (hence complex).
+// on every piece each active leaf is sign-definite, strictly monotone
+// (derivative enclosure excluding zero) or constant, and the leaves that change
+// sign all change the same way. On such a piece the combined min/max field
+// changes sign at most once, so the count is exact. Tangential contact never reaches that state: the bisection
+// budget (depth, and a cap on the pieces examined) runs out and the edge is
+// reported as not proven (hence complex).
 #pragma once
 
 #include "CsgExpression.h"

@@ -127,6 +127,28 @@ TEST(ComplexCell, TangentEdgeIsNeverProvenSimple)
   EXPECT_FALSE(touch.Proven && touch.Count == 0);
 }
 
+TEST(ComplexCell, CoincidentSurfacesAreCountedOnce)
+{
+  // A box face and a clipping plane on the same plane x = 0.5 (Bounds set to
+  // a box's own bounds): both leaves change sign at the same point, the same
+  // way, so the edge is crossed once - not undecidable at every depth.
+  SceneBuilder b;
+  const auto e = b.Finish(SceneBuilder::Intersection(
+    { b.Box({ -1, -1, -1 }, { 0.5, 2, 2 }), b.Box({ -2, -2, -2 }, { 0.5, 3, 3 }) }));
+  const tpc::EdgeCrossingCount once =
+    tpc::CountEdgeCrossings(e, b.Scene.Primitives, { 0, 0.25, 0.25 }, { 1, 0.25, 0.25 }, 0, true, false);
+  EXPECT_TRUE(once.Proven);
+  EXPECT_EQ(once.Count, 1);
+  // Leaves changing in opposite ways (entering one slab, leaving another)
+  // still have to be separated: the slab 0.4 < x < 0.6 is crossed twice.
+  SceneBuilder slab;
+  const auto s = slab.Finish(slab.Box({ 0.4, -1, -1 }, { 0.6, 2, 2 }));
+  const tpc::EdgeCrossingCount twice =
+    tpc::CountEdgeCrossings(s, slab.Scene.Primitives, { 0, 0.25, 0.25 }, { 1, 0.25, 0.25 }, 0, false, false);
+  EXPECT_TRUE(twice.Proven);
+  EXPECT_EQ(twice.Count, 2);
+}
+
 TEST(ComplexCell, FaceAndVoxelAmbiguityFig2d)
 {
   // Two body-diagonal corners inside, joined by a tube along the diagonal:

@@ -4,6 +4,7 @@
 #include "FilterTestHelpers.h"
 
 #include "vtkAppendPolyData.h"
+#include "vtkBox.h"
 #include "vtkCellData.h"
 #include "vtkCylinder.h"
 #include "vtkImplicitBoolean.h"
@@ -88,6 +89,27 @@ TEST(FilterErrors, SelfIntersectingMeshIsComputedQuicklyWithoutGuarantee)
     deepest = std::max(deepest, static_cast<int>(depth->GetTuple1(i)));
   }
   EXPECT_LT(deepest, f->GetMaximumDepth());
+}
+
+TEST(FilterErrors, BoxFacesOnTheBoundsAreResolved)
+{
+  // Bounds through a box's faces put two primitives on the same planes
+  // (x = 1 here): coincident surfaces, which once made every edge across
+  // them undecidable and the filter run for hours.
+  vtkNew<vtkBox> box;
+  box->SetBounds(0, 1, 0, 1, 0, 1);
+  vtkNew<vtkTopologyPreservingContour> f;
+  f->SetImplicitFunction(box);
+  f->SetBounds(-1, 1, -1, 1, -1, 1);
+  f->SetTolerance(0.02);
+  const FilterResult r = tpctest::Run(f);
+  EXPECT_EQ(r.Guaranteed, 1);
+  EXPECT_EQ(r.Components, 1);
+  EXPECT_EQ(r.Genus, 0);
+  double b[6];
+  r.Surface->GetBounds(b);
+  EXPECT_NEAR(b[0], 0.0, 1e-9);
+  EXPECT_NEAR(b[1], 1.0, 1e-9);
 }
 
 TEST(FilterErrors, UnsupportedFunctionsAreRefused)

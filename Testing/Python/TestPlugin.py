@@ -50,5 +50,26 @@ check(direct.GetNumberOfPolys() == surface.GetNumberOfPolys()
       and direct.GetNumberOfPoints() == surface.GetNumberOfPoints(),
       "plugin and wrapped class give the same surface", failures)
 
+# ParaView's implicit-function widgets (as Clip offers them), with Bounds
+# equal to the box's own bounds (coincident planes) and a plane Offset.
+for name, setup, genus in (("Plane", lambda fn: setattr(fn, "Offset", 0.3), 0),
+                           ("Box", lambda fn: None, 0),
+                           ("Sphere", lambda fn: None, 0),
+                           ("Cylinder", lambda fn: None, 0)):
+    widget = TopologyPreservingContour(Input=[], ImplicitFunction=name)  # noqa: F821
+    setup(widget.ImplicitFunction)
+    widget.Bounds = [-1, 1, -1, 1, -1, 1]
+    widget.Tolerance = 0.02
+    widget.UpdatePipeline()
+    out = servermanager.Fetch(widget, idx=1)
+    m = measure(out)
+    check(field(out, "TopologyGuaranteed") == 1 and m["genus"] == genus and m["components"] == 1
+          and m["boundary"] == 0, f"ParaView's {name} widget function", failures)
+    if name == "Plane":
+        fn = widget.ImplicitFunction  # the solid is behind the plane moved by Offset along its normal
+        expected = fn.Origin[0] + fn.Offset * fn.Normal[0]
+        check(list(fn.Normal) == [1, 0, 0] and abs(out.GetBounds()[1] - expected) < 1e-6,
+              f"the plane's Offset is honoured ({out.GetBounds()[1]} vs {expected})", failures)
+
 print("plugin:", "OK" if not failures else failures)
 sys.exit(1 if failures else 0)
