@@ -1,7 +1,8 @@
 """Runs inside the ParaView GUI (paraview --script=... --exit, under xvfb-run):
 loads the plugin, applies Topology Preserving Contour to a sphere source with
-the Cylinder implicit function (Difference), shows the Surface port with the
-interactive cylinder widget, and compares a screenshot with the baseline.
+the Cylinder implicit function (Difference), shows both ports (the grid as
+an outline by default) with the interactive cylinder widget, and compares a
+screenshot with the baseline.
 Writes PASS or FAIL (with why) to $TPC_RESULT; the GUI's own exit status
 cannot carry it. With $TPC_BASELINE missing, writes it (to review and commit).
 """
@@ -23,6 +24,7 @@ try:
     contour.Operation = "Difference"
     contour.Tolerance = 0.02
     view = GetActiveViewOrCreate("RenderView")
+    grid = Show(OutputPort(contour, 0), view)
     display = Show(OutputPort(contour, 1), view)
     display.DiffuseColor = [0.85, 0.72, 0.45]
     Hide(ball, view)
@@ -56,6 +58,8 @@ try:
     problems = []
     if genus != 1:
         problems.append(f"genus {genus}, expected 1 (a sphere drilled through)")
+    if grid.Representation != "Outline":
+        problems.append(f"the grid shows as {grid.Representation}, expected Outline")
     if names != ["Adaptive Grid", "Surface"]:
         problems.append(f"output ports named {names}")
     if error > 10:
