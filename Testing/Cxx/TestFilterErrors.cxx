@@ -16,7 +16,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 using tpctest::FilterResult;
 using tpctest::MessageRecorder;
@@ -110,6 +112,61 @@ TEST(FilterErrors, BoxFacesOnTheBoundsAreResolved)
   r.Surface->GetBounds(b);
   EXPECT_NEAR(b[0], 0.0, 1e-9);
   EXPECT_NEAR(b[1], 1.0, 1e-9);
+}
+
+TEST(FilterErrors, ProgressIsReportedAndAbortIsHonoured)
+{
+  vtkNew<vtkSphere> sphere;
+  sphere->SetRadius(0.5);
+  struct Watch
+  {
+    vtkTopologyPreservingContour* Filter = nullptr;
+    std::vector<double> Progress;
+    bool AbortAt30Percent = false;
+  };
+  auto onProgress = [](vtkObject*, unsigned long, void* clientData, void* callData) {
+    auto* w = static_cast<Watch*>(clientData);
+    w->Progress.push_back(*static_cast<double*>(callData));
+    if (w->AbortAt30Percent && w->Progress.back() >= 0.3)
+    {
+      w->Filter->SetAbortExecute(1);
+    }
+  };
+  for (const bool abort : { false, true })
+  {
+    vtkNew<vtkTopologyPreservingContour> f;
+    f->SetImplicitFunction(sphere);
+    f->SetTolerance(0.005);
+    Watch watch;
+    watch.Filter = f;
+    watch.AbortAt30Percent = abort;
+    vtkNew<vtkCallbackCommand> cb;
+    cb->SetCallback(onProgress);
+    cb->SetClientData(&watch);
+    f->AddObserver(vtkCommand::ProgressEvent, cb);
+    MessageRecorder messages(f);
+    f->Update();
+    ASSERT_GT(watch.Progress.size(), 3u);
+    EXPECT_TRUE(std::is_sorted(watch.Progress.begin(), watch.Progress.end()));
+    if (abort)
+    {
+      // Stopped at the next level after the request: well before the end.
+      EXPECT_NE(messages.Warnings.find("Aborted"), std::string::npos) << messages.Warnings;
+      EXPECT_EQ(f->GetSurfaceOutput()->GetNumberOfPoints(), 0);
+      // (VTK's executive reports 1.0 when RequestData returns.)
+      double reached = 0.0;
+      for (const double p : watch.Progress)
+      {
+        reached = p < 1.0 ? std::max(reached, p) : reached;
+      }
+      EXPECT_LT(reached, 0.85);
+    }
+    else
+    {
+      EXPECT_GT(f->GetSurfaceOutput()->GetNumberOfPolys(), 0);
+      EXPECT_EQ(watch.Progress.back(), 1.0);
+    }
+  }
 }
 
 TEST(FilterErrors, UnsupportedFunctionsAreRefused)
