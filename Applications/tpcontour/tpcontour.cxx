@@ -21,6 +21,7 @@
 #include "vtkXMLPolyDataWriter.h"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>

@@ -123,6 +123,15 @@ code, out, _ = run(inputs["vtp"], "--absolute-tolerance", "0.05", "-o", "abs.vtp
 check(code == 0 and "genus                1" in out and "(tolerance 0.05)" in out,
       "--absolute-tolerance and the text report")
 
+# On a terminal (a pseudo-terminal from util-linux's `script`), a progress bar.
+p = subprocess.run(["script", "-qec", f"{tpcontour} {inputs['off']} -t 0.015625 -o bar.vtp", "/dev/null"],
+                   capture_output=True, text=True, env=dict(os.environ, VTK_SMP_BACKEND_IN_USE="STDThread"))
+frames = [f for f in p.stdout.replace("\r", "\n").split("\n") if f.startswith("[") and "%" in f]
+check(p.returncode == 0 and len(frames) > 3 and "#" in frames[-1] and "genus                1" in p.stdout,
+      f"progress bar on a terminal ({len(frames)} frames)")
+code, out, err = run(inputs["off"], "-t", "0.015625", "-o", "nobar.vtp")
+check(code == 0 and "%" not in err, "no progress bar when standard error is not a terminal")
+
 # The guarantee cannot hold: a self-intersecting mesh (two overlapping spheres) -> exit 2.
 a, b = vtkSphereSource(), vtkSphereSource()
 b.SetCenter(0.3, 0.1, 0.05)
