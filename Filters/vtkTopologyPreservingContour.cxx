@@ -334,12 +334,7 @@ int vtkTopologyPreservingContour::RequestData(
     // The guarantee is lost anyway, and self-intersections are complex at
     // every depth: refining them to MaximumDepth costs minutes and buys
     // nothing. Stop three levels below the cells the tolerance needs.
-    double extent = 0.0;
-    for (int a = 0; a < 3; ++a)
-    {
-      extent = std::max(extent, rootDomain.Width(a));
-    }
-    const int toleranceLevel = static_cast<int>(std::ceil(std::log2(extent * std::sqrt(3.0) / tolerance)));
+    const int toleranceLevel = tpc::ToleranceLevel(rootDomain, tolerance);
     if (toleranceLevel + 3 < params.MaximumDepth)
     {
       params.MaximumDepth = std::max(0, toleranceLevel + 3);

@@ -105,6 +105,14 @@ bool ParseNumber(const std::string& text, double& value)
   return !text.empty() && end && *end == '\0';
 }
 
+template <typename Reader>
+vtkSmartPointer<Reader> MakeReader(const std::string& file)
+{
+  auto reader = vtkSmartPointer<Reader>::New();
+  reader->SetFileName(file.c_str());
+  return reader;
+}
+
 /// Reads one mesh, or returns null with `error` set.
 vtkSmartPointer<vtkPolyData> Read(const std::string& file, std::string& error)
 {
@@ -118,34 +126,25 @@ vtkSmartPointer<vtkPolyData> Read(const std::string& file, std::string& error)
   vtkSmartPointer<vtkAlgorithm> reader;
   if (e == "stl")
   {
-    auto r = vtkSmartPointer<vtkSTLReader>::New();
-    r->SetFileName(file.c_str());
-    r->MergingOn(); // STL repeats vertices per triangle
-    reader = r;
+    auto stl = MakeReader<vtkSTLReader>(file);
+    stl->MergingOn(); // STL repeats vertices per triangle
+    reader = stl;
   }
   else if (e == "obj")
   {
-    auto r = vtkSmartPointer<vtkOBJReader>::New();
-    r->SetFileName(file.c_str());
-    reader = r;
+    reader = MakeReader<vtkOBJReader>(file);
   }
   else if (e == "ply")
   {
-    auto r = vtkSmartPointer<vtkPLYReader>::New();
-    r->SetFileName(file.c_str());
-    reader = r;
+    reader = MakeReader<vtkPLYReader>(file);
   }
   else if (e == "vtp")
   {
-    auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
-    r->SetFileName(file.c_str());
-    reader = r;
+    reader = MakeReader<vtkXMLPolyDataReader>(file);
   }
   else if (e == "off")
   {
-    auto r = vtkSmartPointer<vtkOFFReader>::New();
-    r->SetFileName(file.c_str());
-    reader = r;
+    reader = MakeReader<vtkOFFReader>(file);
   }
   else
   {

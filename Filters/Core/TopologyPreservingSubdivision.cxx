@@ -20,24 +20,35 @@ int MaximumSupportedDepth(const int dims[3])
   return depth;
 }
 
-RootGrid MakeRootGrid(const Box3& domain, double tolerance, int maximumDepth, int placement)
+namespace
 {
-  RootGrid grid;
+double LargestWidth(const Box3& domain, double tolerance)
+{
   double extent = 0.0;
   for (int a = 0; a < 3; ++a)
   {
     extent = std::max(extent, domain.Width(a));
   }
-  if (!(extent > 0.0))
+  return extent > 0.0 ? extent : std::max(tolerance, 1e-12);
+}
+} // namespace
+
+int ToleranceLevel(const Box3& domain, double tolerance)
+{
+  if (!(tolerance > 0.0))
   {
-    extent = std::max(tolerance, 1e-12);
+    return 0;
   }
+  const double extent = LargestWidth(domain, tolerance);
+  return std::max(0, static_cast<int>(std::ceil(std::log2(extent * std::sqrt(3.0) / tolerance))));
+}
+
+RootGrid MakeRootGrid(const Box3& domain, double tolerance, int maximumDepth, int placement)
+{
+  RootGrid grid;
+  const double extent = LargestWidth(domain, tolerance);
   const double sqrt3 = std::sqrt(3.0);
-  int levels = 0;
-  if (tolerance > 0.0)
-  {
-    levels = std::max(0, static_cast<int>(std::ceil(std::log2(extent * sqrt3 / tolerance))));
-  }
+  const int levels = ToleranceLevel(domain, tolerance);
   double size = extent;
   if (tolerance > 0.0 && levels <= maximumDepth)
   {

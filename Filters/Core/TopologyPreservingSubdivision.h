@@ -52,6 +52,11 @@ struct SubdivisionResult
   std::array<std::size_t, 10> UnresolvedByReason{};
 };
 
+/// The level at which cells covering `domain` (its largest width, as the root
+/// size) have a diagonal of at most `tolerance`: where the Hausdorff size
+/// test stops refining (0 for a non-positive tolerance).
+int ToleranceLevel(const Box3& domain, double tolerance);
+
 /// Chooses the root grid: cubic root cells covering `domain`, sized so that
 /// some level has cells whose diagonal is exactly the tolerance (no finer
 /// than needed), and the finest lattice the keys support. `placement` picks
