@@ -2,10 +2,12 @@
 
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkHyperTree.h"
 #include "vtkHyperTreeGrid.h"
 #include "vtkHyperTreeGridNonOrientedCursor.h"
 #include "vtkNew.h"
+#include "vtkStringArray.h"
 #include "vtkUnsignedCharArray.h"
 
 namespace tpc
@@ -18,18 +20,21 @@ struct Arrays
 {
   vtkUnsignedCharArray* Depth;
   vtkUnsignedCharArray* Reason;
+  vtkUnsignedCharArray* SizeReason;
   vtkUnsignedCharArray* State;
   vtkUnsignedCharArray* Failed;
 };
 
-void Visit(const AdaptiveOctree& tree, std::size_t node, vtkHyperTreeGridNonOrientedCursor* cursor,
-  const Arrays& arrays, std::vector<vtkIdType>& nodeToCell)
+/// `sizeReason`: why the parent was split, i.e. why this cell is this small.
+void Visit(const AdaptiveOctree& tree, std::size_t node, SplitReason sizeReason,
+  vtkHyperTreeGridNonOrientedCursor* cursor, const Arrays& arrays, std::vector<vtkIdType>& nodeToCell)
 {
   const OctreeNode& n = tree.Nodes[node];
   const vtkIdType id = cursor->GetGlobalNodeIndex();
   nodeToCell[node] = id;
   arrays.Depth->InsertValue(id, n.Level);
   arrays.Reason->InsertValue(id, static_cast<unsigned char>(n.Reason));
+  arrays.SizeReason->InsertValue(id, static_cast<unsigned char>(sizeReason));
   arrays.State->InsertValue(id, static_cast<unsigned char>(n.State));
   arrays.Failed->InsertValue(id, static_cast<unsigned char>(n.FailedTest));
   if (n.IsLeaf())
@@ -41,7 +46,7 @@ void Visit(const AdaptiveOctree& tree, std::size_t node, vtkHyperTreeGridNonOrie
   {
     // Our child c = x + 2y + 4z is also vtkHyperTree's child order.
     cursor->ToChild(static_cast<unsigned char>(c));
-    Visit(tree, static_cast<std::size_t>(n.FirstChild + c), cursor, arrays, nodeToCell);
+    Visit(tree, static_cast<std::size_t>(n.FirstChild + c), n.Reason, cursor, arrays, nodeToCell);
     cursor->ToParent();
   }
 }
@@ -67,12 +72,13 @@ void ConvertOctree(
   grid->SetYCoordinates(coords[1]);
   grid->SetZCoordinates(coords[2]);
 
-  vtkNew<vtkUnsignedCharArray> depth, reason, state, failed;
+  vtkNew<vtkUnsignedCharArray> depth, reason, sizeReason, state, failed;
   depth->SetName("Depth");
   reason->SetName("SplitReason");
+  sizeReason->SetName("SizeReason");
   state->SetName("CellState");
   failed->SetName("FailedTest");
-  const Arrays arrays{ depth, reason, state, failed };
+  const Arrays arrays{ depth, reason, sizeReason, state, failed };
   nodeToCell.assign(tree.Nodes.size(), -1);
 
   vtkNew<vtkHyperTreeGridNonOrientedCursor> cursor;
@@ -84,14 +90,33 @@ void ConvertOctree(
     grid->GetIndexFromLevelZeroCoordinates(index, root.Ijk[0], root.Ijk[1], root.Ijk[2]);
     grid->InitializeNonOrientedCursor(cursor, index, true);
     cursor->SetGlobalIndexStart(offset);
-    Visit(tree, static_cast<std::size_t>(t), cursor, arrays, nodeToCell);
+    Visit(tree, static_cast<std::size_t>(t), SplitReason::None, cursor, arrays, nodeToCell);
     offset += cursor->GetTree()->GetNumberOfVertices();
   }
   grid->GetCellData()->AddArray(depth);
   grid->GetCellData()->AddArray(reason);
+  grid->GetCellData()->AddArray(sizeReason);
   grid->GetCellData()->AddArray(state);
   grid->GetCellData()->AddArray(failed);
-  grid->GetCellData()->SetActiveScalars("SplitReason");
+  // ParaView draws leaves, whose own SplitReason is "none": what explains a
+  // leaf's size is its parent's reason.
+  grid->GetCellData()->SetActiveScalars("SizeReason");
+
+  // What the values mean, for anyone reading the file or the spreadsheet
+  // (and checked against the colour presets by the tests).
+  vtkNew<vtkStringArray> reasonNames, stateNames;
+  reasonNames->SetName("SplitReasonNames");
+  for (int r = 0; r < SplitReasonCount; ++r)
+  {
+    reasonNames->InsertNextValue(SplitReasonName(static_cast<SplitReason>(r)));
+  }
+  stateNames->SetName("CellStateNames");
+  for (int s = 0; s < CellStateCount; ++s)
+  {
+    stateNames->InsertNextValue(CellStateName(static_cast<CellState>(s)));
+  }
+  grid->GetFieldData()->AddArray(reasonNames);
+  grid->GetFieldData()->AddArray(stateNames);
 }
 
 } // namespace vtkadapter

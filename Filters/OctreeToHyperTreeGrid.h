@@ -1,5 +1,6 @@
 // Adapter: the core's adaptive octree -> vtkHyperTreeGrid with cell data
-// "Depth", "SplitReason", "CellState" and "FailedTest".
+// "Depth", "SplitReason", "SizeReason", "CellState" and "FailedTest", and field data
+// "SplitReasonNames" and "CellStateNames" (the name of each value).
 #ifndef OctreeToHyperTreeGrid_h
 #define OctreeToHyperTreeGrid_h
 

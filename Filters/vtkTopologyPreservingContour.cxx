@@ -346,7 +346,7 @@ int vtkTopologyPreservingContour::RequestData(
   // the depth limit (a crease a hair from a lattice plane); inputs violating
   // the method's assumptions are not worth the retries.
   auto progress = [this](double f) {
-    this->UpdateProgress(0.85 * f); // a retry starts over
+    this->UpdateProgress(0.85 * f);
     return this->GetAbortExecute() != 0;
   };
   tpc::PlacedSubdivision placed = tpc::RunOnBestLatticePlacement(scene, rootDomain, params,
@@ -418,8 +418,7 @@ int vtkTopologyPreservingContour::RequestData(
                         (empty || (topo.Closed && topo.Manifold && topo.Oriented)))
     ? 1
     : 0;
-  gridOut->GetFieldData()->Initialize();
-  surfaceOut->GetFieldData()->Initialize();
+  surfaceOut->GetFieldData()->Initialize(); // (ConvertOctree initialized the grid)
   AddReport(gridOut, report);
   AddReport(surfaceOut, report);
 

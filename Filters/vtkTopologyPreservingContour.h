@@ -30,10 +30,13 @@
  *
  * Outputs
  * - Port 0, vtkHyperTreeGrid: the adaptive grid. Cell data: "Depth" (level),
- *   "SplitReason" (why the cell was split, see SplitReasons), "CellState"
+ *   "SplitReason" (why the cell was split, see SplitReasons; NOT_SPLIT on
+ *   leaves), "SizeReason" (the parent's SplitReason: why the cell is as small
+ *   as it is; the active scalars, as renderers draw leaves), "CellState"
  *   (0 inside, 1 outside, 2 surface cell that passed every test, 3 surface cell
  *   stopped by a limit, 4 refined) and "FailedTest" (for state 3, the test that
- *   still failed, as a SplitReasons value).
+ *   still failed, as a SplitReasons value). Field data "SplitReasonNames" and
+ *   "CellStateNames" (string arrays indexed by value) name the values.
  * - Port 1, vtkPolyData: triangles with point "Normals" and cell data
  *   "GridCell" (the hyper tree grid cell each triangle was extracted from).
  * - Field data on both: "Components", "Genus", "EulerCharacteristic",

@@ -48,7 +48,8 @@ Options:
                          or .stl (default: <first input's name>-tpc.vtp in the
                          current directory)
   -g, --grid FILE        adaptive grid to write (.htg, a vtkHyperTreeGrid with
-                         cell data Depth, SplitReason, CellState, FailedTest)
+                         cell data Depth, SplitReason, SizeReason, CellState,
+                         FailedTest)
       --operation OP     union (default), intersection or difference
   -t, --tolerance E      epsilon relative to the diagonal of the inputs' box
                          (default 0.01)

@@ -33,6 +33,24 @@ const char* SplitReasonName(SplitReason r)
   return "unknown";
 }
 
+const char* CellStateName(CellState s)
+{
+  switch (s)
+  {
+    case CellState::Inside:
+      return "inside";
+    case CellState::Outside:
+      return "outside";
+    case CellState::Surface:
+      return "surface";
+    case CellState::Unresolved:
+      return "unresolved";
+    case CellState::Refined:
+      return "refined";
+  }
+  return "unknown";
+}
+
 FaceKey FaceOf(const RootGrid& grid, const OctreeNode& n, int f)
 {
   const int axis = f / 2, side = f % 2;

@@ -35,4 +35,10 @@ enum class CellState : std::uint8_t
   Refined = 4     ///< inner node
 };
 
+const char* CellStateName(CellState s);
+
+/// One past the largest value of each enum (to list their names).
+constexpr int SplitReasonCount = 10;
+constexpr int CellStateCount = 5;
+
 } // namespace tpc

@@ -313,8 +313,19 @@ PlacedSubdivision RunOnBestLatticePlacement(const ImplicitScene& scene, const Bo
   const std::vector<Vec3> shifts = RankLatticeShifts(scene.Primitives, base, parameters.HausdorffTolerance,
     parameters.MaximumDepth, std::max(1, maximumPlacements));
   PlacedSubdivision best;
+  // Progress stays monotonic: the first placement (usually the only one)
+  // reports over most of [0, 1], each retry over a share of what is left.
+  double start = 0.0;
   for (const Vec3& shift : shifts)
   {
+    const bool last = best.PlacementsTried + 1 == static_cast<int>(shifts.size());
+    const double span = last ? 1.0 - start : (1.0 - start) * (best.PlacementsTried == 0 ? 0.8 : 0.5);
+    ProgressCallback placementProgress = nullptr;
+    if (progress)
+    {
+      placementProgress = [&progress, start, span](double f) { return progress(start + span * f); };
+    }
+    start += span;
     RootGrid grid = base;
     for (int a = 0; a < 3; ++a)
     {
@@ -326,7 +337,7 @@ PlacedSubdivision RunOnBestLatticePlacement(const ImplicitScene& scene, const Bo
       }
     }
     SubdivisionResult run =
-      RunTopologyPreservingSubdivision(scene, grid, parameters, parallelFor, progress);
+      RunTopologyPreservingSubdivision(scene, grid, parameters, parallelFor, placementProgress);
     ++best.PlacementsTried;
     if (best.PlacementsTried == 1 || run.Aborted ||
       run.UnresolvedCells < best.Result.UnresolvedCells)

@@ -84,7 +84,8 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
 /// (LatticePlacement.h); while cells remain unresolved (and the cell limit
 /// was not the cause) the next best shifts are tried, up to
 /// `maximumPlacements`, and the run with the fewest unresolved cells is
-/// kept. A progress callback restarts at 0 on each retry.
+/// kept. Progress rises monotonically over all placements (a run that
+/// needs no retry may jump to 1 at its end).
 struct PlacedSubdivision
 {
   RootGrid Grid;

@@ -145,3 +145,28 @@ TEST(Subdivision, LatticePlacementsDifferAndAllCoverTheDomain)
     origins.push_back(g.Origin);
   }
 }
+
+TEST(Subdivision, ProgressRisesMonotonicallyOverLatticePlacementRetries)
+{
+  // Tangential contact stays unresolved on every placement: all are tried.
+  SceneBuilder b;
+  b.Finish(SceneBuilder::Union({ b.Sphere({ -0.5, 0, 0 }, 0.5), b.Sphere({ 0.5, 0, 0 }, 0.5) }));
+  tpc::SubdivisionParameters params;
+  params.HausdorffTolerance = 0.1;
+  params.MaximumDepth = 7;
+  std::vector<double> reported;
+  const tpc::PlacedSubdivision placed = tpc::RunOnBestLatticePlacement(b.Scene,
+    { { -1, -0.5, -0.5 }, { 1, 0.5, 0.5 } }, params, tpc::LatticePlacements, tpc::SequentialFor,
+    [&reported](double f) {
+      reported.push_back(f);
+      return false;
+    });
+  EXPECT_EQ(placed.PlacementsTried, tpc::LatticePlacements);
+  ASSERT_FALSE(reported.empty());
+  for (std::size_t i = 1; i < reported.size(); ++i)
+  {
+    ASSERT_GE(reported[i], reported[i - 1]) << "progress went back at report " << i;
+  }
+  EXPECT_GE(reported.front(), 0.0);
+  EXPECT_DOUBLE_EQ(reported.back(), 1.0);
+}

@@ -1,16 +1,20 @@
 // The grid output is a faithful vtkHyperTreeGrid of the adaptive octree:
 // every triangle lies in the leaf its "GridCell" names (so child ordering and
 // coordinates are right), that leaf is a surface cell that passed every test,
-// depths are consistent, and split reasons are recorded on inner cells only.
+// depths are consistent, split reasons are recorded on inner cells only,
+// each cell's SizeReason is its parent's SplitReason, and the field data name
+// every value.
 #include "FilterTestHelpers.h"
 
 #include "vtkBitArray.h"
 #include "vtkCellData.h"
 #include "vtkCylinder.h"
+#include "vtkFieldData.h"
 #include "vtkHyperTreeGridNonOrientedGeometryCursor.h"
 #include "vtkIdTypeArray.h"
 #include "vtkImplicitBoolean.h"
 #include "vtkSphere.h"
+#include "vtkStringArray.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkXMLHyperTreeGridReader.h"
 #include "vtkXMLHyperTreeGridWriter.h"
@@ -74,6 +78,26 @@ std::vector<std::pair<vtkIdType, unsigned>> LeavesContaining(vtkHyperTreeGrid* g
     CollectLeaves(cursor, p, leaves);
   }
   return leaves;
+}
+
+/// Counts the cells below `cursor` whose SizeReason is not their parent's SplitReason.
+int SizeReasonMismatches(vtkHyperTreeGridNonOrientedGeometryCursor* cursor,
+  vtkUnsignedCharArray* split, vtkUnsignedCharArray* size)
+{
+  if (cursor->IsLeaf())
+  {
+    return 0;
+  }
+  const int parentReason = split->GetValue(cursor->GetGlobalNodeIndex());
+  int mismatches = 0;
+  for (unsigned char c = 0; c < cursor->GetNumberOfChildren(); ++c)
+  {
+    cursor->ToChild(c);
+    mismatches += size->GetValue(cursor->GetGlobalNodeIndex()) != parentReason ? 1 : 0;
+    mismatches += SizeReasonMismatches(cursor, split, size);
+    cursor->ToParent();
+  }
+  return mismatches;
 }
 } // namespace
 
@@ -158,6 +182,34 @@ TEST(HyperTreeGrid, TrianglesLieInTheSurfaceLeavesTheyName)
     depthsWithLeaves += d > 0 ? 1 : 0;
   }
   EXPECT_GE(depthsWithLeaves, 4);
+
+  // SizeReason (what ParaView shows on leaves): the parent's SplitReason.
+  auto* size = vtkUnsignedCharArray::SafeDownCast(grid->GetCellData()->GetArray("SizeReason"));
+  ASSERT_NE(size, nullptr);
+  EXPECT_STREQ(grid->GetCellData()->GetScalars()->GetName(), "SizeReason");
+  vtkHyperTreeGrid::vtkHyperTreeGridIterator it;
+  grid->InitializeTreeIterator(it);
+  vtkIdType index;
+  vtkNew<vtkHyperTreeGridNonOrientedGeometryCursor> cursor;
+  int mismatches = 0;
+  while (it.GetNextTree(index))
+  {
+    grid->InitializeNonOrientedGeometryCursor(cursor, index);
+    EXPECT_EQ(size->GetValue(cursor->GetGlobalNodeIndex()), 0); // root cells
+    mismatches += SizeReasonMismatches(cursor, reason, size);
+  }
+  EXPECT_EQ(mismatches, 0);
+
+  // The names of the values, in field data.
+  auto* reasonNames =
+    vtkStringArray::SafeDownCast(grid->GetFieldData()->GetAbstractArray("SplitReasonNames"));
+  auto* stateNames = vtkStringArray::SafeDownCast(grid->GetFieldData()->GetAbstractArray("CellStateNames"));
+  ASSERT_TRUE(reasonNames && stateNames);
+  ASSERT_EQ(reasonNames->GetNumberOfValues(), 10);
+  EXPECT_EQ(reasonNames->GetValue(3), "complex edge");
+  EXPECT_EQ(reasonNames->GetValue(9), "limit reached");
+  ASSERT_EQ(stateNames->GetNumberOfValues(), 5);
+  EXPECT_EQ(stateNames->GetValue(3), "unresolved");
 }
 
 TEST(HyperTreeGrid, RoundTripsThroughTheXmlWriter)
