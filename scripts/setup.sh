@@ -9,7 +9,8 @@ cd "$(dirname "$0")/.."
 # paraview-dev are what find_package(ParaView) asks for
 # (../shared/SETUP-NOTES.md); the last lines are our own build and test
 # tools: GLPK is the tests' independent LP oracle, libcgal-demo holds the
-# real test meshes with known topology.
+# real test meshes with known topology, OpenVDB (with the Boost part its CMake
+# module asks for) is the benchmark's baseline.
 packages=(
   paraview paraview-dev python3-paraview xvfb xauth
   qtbase5-dev qttools5-dev libqt5svg5-dev qtxmlpatterns5-dev-tools libutfcpp-dev
@@ -19,7 +20,7 @@ packages=(
   libjsoncpp-dev libprotobuf-dev protobuf-compiler libcgns-dev libpython3-dev python3-mpi4py
   libavformat-dev libavcodec-dev libavutil-dev libswscale-dev libxt-dev libtbb-dev
   cmake ninja-build g++ libgtest-dev
-  libglpk-dev libcgal-demo
+  libglpk-dev libcgal-demo libopenvdb-dev libboost-iostreams-dev
 )
 missing=()
 for p in "${packages[@]}"; do

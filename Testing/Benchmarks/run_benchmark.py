@@ -1,0 +1,161 @@
+#!/usr/bin/env python3
+"""The speed benchmark: this filter (1 and 2 threads) vs VTK's recipe
+(vtkSampleFunction -> vtkFlyingEdges3D) vs OpenVDB (mesh -> level set ->
+level-set CSG -> volumeToMesh), at the same finest cell size, on four scenes
+and three epsilons. Every run is its own process (tpc_benchmark), so its peak
+memory is its own. Prints, side by side: seconds, peak memory, triangles, grid
+cells, whether components and genus are right; then the ratios and how time
+grows from epsilon to epsilon/2.
+
+    python3 Testing/Benchmarks/run_benchmark.py            # the full run (~30 min)
+    python3 Testing/Benchmarks/run_benchmark.py --quick    # 1/64 and 1/128 only
+    ... --scenes plate-ellipsoids --epsilons 64,128        # a subset
+
+The filter runs first; the others get its surface-cell edge as their spacing.
+"""
+import argparse
+import json
+import os
+import platform
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SCENES = ["armadillo", "turbine", "armadillo-cavities", "plate-ellipsoids"]
+METHODS = [("tpc", 1), ("tpc", 2), ("vtk", 2), ("vdb", 2)]
+LABEL = {("tpc", 1): "filter, 1 thread", ("tpc", 2): "filter, 2 threads",
+         ("vtk", 2): "VTK sample+FE, 2 thr", ("vdb", 2): "OpenVDB, 2 threads"}
+
+
+def run(program, meshes, method, scene, epsilon, threads, cell_size, timeout):
+    cmd = [program, "--method", method, "--scene", scene, "--epsilon", repr(epsilon),
+           "--threads", str(threads), "--meshes", meshes]
+    if cell_size:
+        cmd += ["--cell-size", repr(cell_size)]
+    env = dict(os.environ, VTK_SMP_BACKEND_IN_USE="STDThread")
+    try:
+        done = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return {"error": f"stopped after {timeout} s", "timeout": timeout}
+    lines = [line for line in done.stdout.splitlines() if line.startswith("{")]
+    if done.returncode != 0 or not lines:
+        return {"error": (done.stderr.strip().splitlines() or ["failed"])[-1][:60]}
+    return json.loads(lines[-1])
+
+
+def machine():
+    cpu = "?"
+    try:
+        with open("/proc/cpuinfo") as f:
+            cpu = next(line.split(":", 1)[1].strip() for line in f if line.startswith("model name"))
+    except (OSError, StopIteration):
+        pass
+    mem = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES") / 2**30
+    return f"{cpu}, {os.cpu_count()} cores, {mem:.0f} GiB, {platform.platform()}"
+
+
+def topology(r):
+    if "error" in r:
+        return r["error"]
+    mark = "right" if r["topology_right"] else "WRONG"
+    return f"{mark} ({r['components']} comp, genus {r['genus']}{'' if r['closed_manifold'] else ', open'})"
+
+
+def table(rows):
+    widths = [max(len(str(row[i])) for row in rows) for i in range(len(rows[0]))]
+    for n, row in enumerate(rows):
+        print("  " + "  ".join(str(c).rjust(w) if i else str(c).ljust(w) for i, (c, w) in enumerate(zip(row, widths))))
+        if n == 0:
+            print("  " + "  ".join("-" * w for w in widths))
+
+
+def seconds(r):
+    """A run's seconds; a run stopped by the time limit counts as at least the limit."""
+    return r.get("seconds") or r.get("timeout")
+
+
+def ratio(a, b, at_least=False):
+    if not a or not b:
+        return "-"
+    return (">" if at_least else "") + f"{a / b:.2f}"
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--program", default=os.path.join(HERE, "../../build/bin/tpc_benchmark"))
+    parser.add_argument("--meshes", default=os.path.join(HERE, "../../build/Testing/Cxx/cgal/data/meshes"))
+    parser.add_argument("--scenes", default=",".join(SCENES))
+    parser.add_argument("--epsilons", default="64,128,256", help="denominators: 64 means 1/64 of the diagonal")
+    parser.add_argument("--quick", action="store_true", help="epsilons 1/64 and 1/128")
+    parser.add_argument("--smoke", action="store_true", help="one small case per method (a test)")
+    parser.add_argument("--json", help="also write every run to this file")
+    parser.add_argument("--time-limit", type=int, default=900,
+                        help="seconds after which a VTK or OpenVDB run is stopped (reported as a lower bound)")
+    a = parser.parse_args()
+    scenes = a.scenes.split(",")
+    denominators = [int(d) for d in ("64,128" if a.quick else a.epsilons).split(",")]
+    if a.smoke:
+        scenes, denominators = ["plate-ellipsoids"], [16]
+
+    print("Machine:", machine())
+    results = {}
+    for scene in scenes:
+        for d in denominators:
+            eps = 1.0 / d
+            for method, threads in METHODS:
+                cell = results.get((scene, d, "tpc", 1), {}).get("cell_size") if method != "tpc" else None
+                limit = 4 * 3600 if method == "tpc" else a.time_limit
+                r = run(a.program, a.meshes, method, scene, eps, threads, cell, limit)
+                results[(scene, d, method, threads)] = r
+                print(f"  ran {scene:20} 1/{d:<4} {LABEL[(method, threads)]:22} "
+                      f"{r.get('seconds', float('nan')):8.2f} s", file=sys.stderr, flush=True)
+
+    for scene in scenes:
+        print(f"\n{scene}")
+        rows = [["epsilon", "method", "seconds", "peak MiB", "triangles", "grid cells", "topology"]]
+        for d in denominators:
+            for key in METHODS:
+                r = results[(scene, d) + key]
+                ok = "error" not in r
+                rows.append([f"1/{d}", LABEL[key], f"{r['seconds']:.2f}" if ok else "-",
+                             f"{r['peak_mib']:.0f}" if ok else "-", r.get("triangles", "-"),
+                             r.get("grid_cells", "-"), topology(r)])
+        table(rows)
+
+    print("\nRatios (filter with 2 threads vs the others; > 1 means the filter is better)")
+    rows = [["scene", "epsilon", "VTK s / filter s", "VDB s / filter s", "VTK tris / filter tris",
+             "VDB tris / filter tris", "2-thread speed-up"]]
+    for scene in scenes:
+        for d in denominators:
+            r = {k: results[(scene, d) + k] for k in METHODS}
+            s = {k: seconds(v) for k, v in r.items()}
+            t = {k: v.get("triangles") for k, v in r.items()}
+            rows.append([scene, f"1/{d}", ratio(s[("vtk", 2)], s[("tpc", 2)], "timeout" in r[("vtk", 2)]),
+                         ratio(s[("vdb", 2)], s[("tpc", 2)], "timeout" in r[("vdb", 2)]),
+                         ratio(t[("vtk", 2)], t[("tpc", 2)]), ratio(t[("vdb", 2)], t[("tpc", 2)]),
+                         ratio(s[("tpc", 1)], s[("tpc", 2)])])
+    table(rows)
+
+    if len(denominators) > 1:
+        print("\nTime growth from epsilon to epsilon/2 (surface-bound ~4x, volume-bound ~8x)")
+        rows = [["scene", "step"] + [LABEL[k] for k in METHODS]]
+        for scene in scenes:
+            for d0, d1 in zip(denominators, denominators[1:]):
+                rows.append([scene, f"1/{d0} -> 1/{d1}"] +
+                            [ratio(seconds(results[(scene, d1) + k]), seconds(results[(scene, d0) + k]),
+                                   "timeout" in results[(scene, d1) + k]) for k in METHODS])
+        table(rows)
+
+    if a.json:
+        with open(a.json, "w") as f:
+            json.dump([dict(v, key=list(k)) for k, v in results.items()], f, indent=1)
+    failed = [k for k, v in results.items() if "error" in v and k[2] == "tpc"]
+    wrong = [k for k, v in results.items() if k[2] == "tpc" and "error" not in v and not v["topology_right"]]
+    if failed or wrong:
+        print("\nThe filter failed or was wrong on:", failed + wrong)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

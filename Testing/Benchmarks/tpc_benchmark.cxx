@@ -1,0 +1,334 @@
+// One benchmark run: a method on a scene at one epsilon, in its own process
+// (so that its peak memory is its own). Prints one JSON object. The driver,
+// run_benchmark.py, runs every case and prints the tables.
+//
+//   tpc_benchmark --method tpc|vtk|vdb --scene NAME --epsilon E --threads N
+//                 --meshes DIR [--cell-size H]
+//
+// tpc: vtkTopologyPreservingContour, epsilon relative to the diagonal of
+//      the scene's domain (Bounds set to it);
+// vtk: VTK's usual recipe, vtkSampleFunction of the solid's implicit function
+//      (meshes through vtkImplicitPolyDataDistance) -> vtkFlyingEdges3D, at
+//      sample spacing H;
+// vdb: OpenVDB, meshes (and tessellated ellipsoids, the plate's box, exact
+//      spheres) -> narrow-band level sets -> level-set CSG -> volumeToMesh,
+//      at voxel size H.
+// H is the edge of the filter's surface cells at epsilon (the driver passes
+// it), so all three resolve the surface at the same finest cell size.
+#include "BenchmarkScenes.h"
+
+#include "TopologyReport.h"
+#include "TriangleMesh.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCubeSource.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkFlyingEdges3D.h"
+#include "vtkHyperTreeGrid.h"
+#include "vtkImageData.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkSMPTools.h"
+#include "vtkSampleFunction.h"
+#include "vtkTopologyPreservingContour.h"
+#include "vtkTriangleFilter.h"
+
+#include <openvdb/openvdb.h>
+#include <openvdb/tools/Composite.h>
+#include <openvdb/tools/LevelSetSphere.h>
+#include <openvdb/tools/MeshToVolume.h>
+#include <openvdb/tools/VolumeToMesh.h>
+#include <tbb/global_control.h>
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+struct RunResult
+{
+  double Seconds = 0.0;
+  long long Triangles = 0;
+  long long GridCells = 0;
+  tpc::TopologyReport Topology;
+  double SurfaceCellSize = 0.0; ///< tpc only
+  bool Guaranteed = false;      ///< tpc only
+};
+
+/// Resident memory now, in MiB.
+double ResidentMiB()
+{
+  std::ifstream statm("/proc/self/statm");
+  long pages = 0, resident = 0;
+  statm >> pages >> resident;
+  return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+}
+
+double PeakMiB()
+{
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
+
+/// The triangles of `surface` (polygons triangulated), as the core's mesh.
+tpc::TriangleMesh Triangulated(vtkPolyData* surface)
+{
+  vtkNew<vtkTriangleFilter> triangulate;
+  triangulate->SetInputData(surface);
+  triangulate->PassVertsOff();
+  triangulate->PassLinesOff();
+  triangulate->Update();
+  vtkPolyData* t = triangulate->GetOutput();
+  tpc::TriangleMesh mesh;
+  mesh.Points.resize(static_cast<std::size_t>(t->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < t->GetNumberOfPoints(); ++i)
+  {
+    t->GetPoint(i, mesh.Points[static_cast<std::size_t>(i)].x);
+  }
+  vtkIdType n;
+  const vtkIdType* ids;
+  auto polys = vtk::TakeSmartPointer(t->GetPolys()->NewIterator());
+  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
+  {
+    polys->GetCurrentCell(n, ids);
+    mesh.Triangles.push_back({ static_cast<std::uint32_t>(ids[0]), static_cast<std::uint32_t>(ids[1]),
+      static_cast<std::uint32_t>(ids[2]) });
+  }
+  return mesh;
+}
+
+double Diagonal(const std::array<double, 6>& b)
+{
+  return std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
+}
+
+RunResult RunFilter(const tpcbench::Scene& scene, double epsilon)
+{
+  vtkNew<vtkTopologyPreservingContour> filter;
+  for (const auto& mesh : scene.Meshes)
+  {
+    filter->AddInputData(mesh);
+  }
+  if (!scene.Holes.empty() || scene.HasPlate)
+  {
+    filter->SetImplicitFunction(scene.HasPlate ? scene.SolidFunction() : scene.HolesFunction());
+  }
+  filter->SetOperationToDifference(); // (meshes minus holes; unused without meshes)
+  filter->SetBounds(const_cast<double*>(scene.Bounds.data()));
+  filter->SetTolerance(epsilon);
+  filter->SetToleranceIsRelative(true);
+  const auto start = Clock::now();
+  filter->Update();
+  RunResult r;
+  r.Seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  auto* surface = vtkPolyData::SafeDownCast(filter->GetOutputDataObject(1));
+  auto* grid = vtkHyperTreeGrid::SafeDownCast(filter->GetOutputDataObject(0));
+  r.Triangles = surface->GetNumberOfPolys();
+  r.GridCells = grid->GetNumberOfCells();
+  r.Topology = tpc::ComputeTopologyReport(Triangulated(surface));
+  vtkFieldData* fd = surface->GetFieldData();
+  r.Guaranteed = fd->GetArray("TopologyGuaranteed")->GetTuple1(0) == 1.0;
+  r.SurfaceCellSize = fd->GetArray("HausdorffBound")->GetTuple1(0) / std::sqrt(3.0);
+  return r;
+}
+
+RunResult RunVtkRecipe(const tpcbench::Scene& scene, double h)
+{
+  const auto start = Clock::now();
+  vtkNew<vtkSampleFunction> sample;
+  sample->SetImplicitFunction(scene.SolidFunction());
+  double bounds[6];
+  int dims[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    bounds[2 * a] = scene.Bounds[2 * a] - 2.0 * h;
+    dims[a] = static_cast<int>(std::ceil((scene.Bounds[2 * a + 1] - scene.Bounds[2 * a] + 4.0 * h) / h)) + 1;
+    bounds[2 * a + 1] = bounds[2 * a] + (dims[a] - 1) * h;
+  }
+  sample->SetModelBounds(bounds);
+  sample->SetSampleDimensions(dims);
+  sample->SetOutputScalarTypeToFloat();
+  sample->ComputeNormalsOff();
+  vtkNew<vtkFlyingEdges3D> contour;
+  contour->SetInputConnection(sample->GetOutputPort());
+  contour->SetValue(0, 0.0);
+  contour->ComputeNormalsOff();
+  contour->ComputeGradientsOff();
+  contour->ComputeScalarsOff();
+  contour->Update();
+  RunResult r;
+  r.Seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  r.Triangles = contour->GetOutput()->GetNumberOfPolys();
+  r.GridCells = static_cast<long long>(dims[0]) * dims[1] * dims[2];
+  r.Topology = tpc::ComputeTopologyReport(Triangulated(contour->GetOutput()));
+  return r;
+}
+
+openvdb::FloatGrid::Ptr MeshLevelSet(vtkPolyData* surface, const openvdb::math::Transform& xform)
+{
+  const tpc::TriangleMesh mesh = Triangulated(surface);
+  std::vector<openvdb::Vec3s> points;
+  std::vector<openvdb::Vec3I> triangles;
+  for (const tpc::Vec3& p : mesh.Points)
+  {
+    points.emplace_back(static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]));
+  }
+  for (const auto& t : mesh.Triangles)
+  {
+    triangles.emplace_back(t[0], t[1], t[2]);
+  }
+  return openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(xform, points, triangles, 3.0f);
+}
+
+RunResult RunOpenVdb(const tpcbench::Scene& scene, double h)
+{
+  openvdb::initialize();
+  const auto start = Clock::now();
+  const auto xform = openvdb::math::Transform::createLinearTransform(h);
+  openvdb::FloatGrid::Ptr solid;
+  if (scene.HasPlate)
+  {
+    vtkNew<vtkCubeSource> plate;
+    plate->SetBounds(scene.PlateBounds.data());
+    plate->Update();
+    solid = MeshLevelSet(plate->GetOutput(), *xform);
+  }
+  for (const auto& mesh : scene.Meshes)
+  {
+    openvdb::FloatGrid::Ptr next = MeshLevelSet(mesh, *xform);
+    if (solid)
+    {
+      openvdb::tools::csgUnion(*solid, *next);
+    }
+    else
+    {
+      solid = next;
+    }
+  }
+  for (const tpcbench::Ellipsoid& e : scene.Holes)
+  {
+    openvdb::FloatGrid::Ptr hole;
+    if (e.SemiAxes[0] == e.SemiAxes[1] && e.SemiAxes[1] == e.SemiAxes[2])
+    {
+      hole = openvdb::tools::createLevelSetSphere<openvdb::FloatGrid>(static_cast<float>(e.SemiAxes[0]),
+        openvdb::Vec3f(static_cast<float>(e.Center[0]), static_cast<float>(e.Center[1]),
+          static_cast<float>(e.Center[2])),
+        static_cast<float>(h), 3.0f);
+    }
+    else
+    {
+      hole = MeshLevelSet(tpcbench::TessellateEllipsoid(e, 0.25 * h), *xform);
+    }
+    openvdb::tools::csgDifference(*solid, *hole);
+  }
+  std::vector<openvdb::Vec3s> points;
+  std::vector<openvdb::Vec3I> triangles;
+  std::vector<openvdb::Vec4I> quads;
+  openvdb::tools::volumeToMesh(*solid, points, triangles, quads, 0.0);
+  RunResult r;
+  r.Seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  r.Triangles = static_cast<long long>(triangles.size() + 2 * quads.size());
+  r.GridCells = static_cast<long long>(solid->activeVoxelCount());
+  tpc::TriangleMesh mesh;
+  for (const auto& p : points)
+  {
+    mesh.Points.push_back(tpc::Vec3(p[0], p[1], p[2]));
+  }
+  for (const auto& t : triangles)
+  {
+    mesh.Triangles.push_back({ t[0], t[1], t[2] });
+  }
+  for (const auto& q : quads)
+  {
+    mesh.Triangles.push_back({ q[0], q[1], q[2] });
+    mesh.Triangles.push_back({ q[0], q[2], q[3] });
+  }
+  r.Topology = tpc::ComputeTopologyReport(mesh);
+  return r;
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  std::map<std::string, std::string> args;
+  for (int i = 1; i + 1 < argc; i += 2)
+  {
+    args[argv[i]] = argv[i + 1];
+  }
+  for (const char* required : { "--method", "--scene", "--epsilon", "--threads", "--meshes" })
+  {
+    if (!args.count(required))
+    {
+      std::cerr << "usage: tpc_benchmark --method tpc|vtk|vdb --scene NAME --epsilon E --threads N "
+                   "--meshes DIR [--cell-size H]\n";
+      return 1;
+    }
+  }
+  const std::string method = args["--method"];
+  const int threads = std::stoi(args["--threads"]);
+  const double epsilon = std::stod(args["--epsilon"]);
+  vtkSMPTools::Initialize(threads);
+  tbb::global_control limitThreads(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+
+  try
+  {
+    const tpcbench::Scene scene = tpcbench::MakeScene(args["--scene"], args["--meshes"]);
+    const double h = args.count("--cell-size") ? std::stod(args["--cell-size"])
+                                                : epsilon * Diagonal(scene.Bounds) / std::sqrt(3.0);
+    const double before = ResidentMiB();
+    RunResult r;
+    if (method == "tpc")
+    {
+      r = RunFilter(scene, epsilon);
+    }
+    else if (method == "vtk")
+    {
+      r = RunVtkRecipe(scene, h);
+    }
+    else if (method == "vdb")
+    {
+      r = RunOpenVdb(scene, h);
+    }
+    else
+    {
+      std::cerr << "unknown method " << method << "\n";
+      return 1;
+    }
+    const double peak = std::max(0.0, PeakMiB() - before);
+    const tpc::TopologyReport& t = r.Topology;
+    const bool closed = t.BoundaryEdges == 0 && t.NonManifoldEdges == 0 && t.NonManifoldVertices == 0;
+    std::ostringstream json;
+    json << "{\"method\": \"" << method << "\", \"scene\": \"" << scene.Name << "\", \"epsilon\": " << epsilon
+         << ", \"threads\": " << threads << ", \"seconds\": " << r.Seconds << ", \"peak_mib\": " << peak
+         << ", \"triangles\": " << r.Triangles << ", \"grid_cells\": " << r.GridCells
+         << ", \"components\": " << t.Components << ", \"genus\": " << t.Genus
+         << ", \"closed_manifold\": " << (closed ? "true" : "false")
+         << ", \"exact_components\": " << scene.Components << ", \"exact_genus\": " << scene.Genus
+         << ", \"topology_right\": "
+         << (closed && t.Components == scene.Components && t.Genus == scene.Genus ? "true" : "false")
+         << ", \"cell_size\": " << (method == "tpc" ? r.SurfaceCellSize : h)
+         << ", \"guaranteed\": " << (r.Guaranteed ? "true" : "false") << "}";
+    std::cout << json.str() << std::endl;
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << "tpc_benchmark: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
