@@ -356,32 +356,7 @@ CsgExpression::Pruned CsgExpression::Prune(
 // ---------------------------------------------------------------------------
 bool CsgExpression::IsInside(const Vec3& p, const PrimitiveSet& prims) const
 {
-  // Recursive with short-circuit: exact leaf signs are the costly part.
-  struct Eval
-  {
-    const CsgExpression& E;
-    const Vec3& P;
-    const PrimitiveSet& Prims;
-    bool Run(std::uint32_t i) const
-    {
-      const auto& n = E.NodeAt(i);
-      if (n.NodeKind == Node::Kind::Leaf)
-      {
-        return LeafIsInside(n.LeafData, Prims, P);
-      }
-      const bool isUnion = n.NodeKind == Node::Kind::Union;
-      for (std::uint32_t c = 0; c < n.ChildCount; ++c)
-      {
-        const bool in = this->Run(E.ChildIndex(n.FirstChild + c));
-        if (in == isUnion)
-        {
-          return in; // union: first inside child decides; intersection: first outside
-        }
-      }
-      return !isUnion;
-    }
-  };
-  return Eval{ *this, p, prims }.Run(this->RootIndex);
+  return this->Evaluate([&](std::uint32_t, const Node& n) { return LeafIsInside(n.LeafData, prims, p); });
 }
 
 double CsgExpression::Value(const Vec3& p, const PrimitiveSet& prims, int* leafNode) const

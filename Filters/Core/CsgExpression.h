@@ -141,6 +141,13 @@ public:
 
   /// Exact inside test (value < 0), from exact leaf signs.
   bool IsInside(const Vec3& p, const PrimitiveSet& primitives) const;
+  /// The same with each leaf's sign from `leafInside(nodeIndex, node)`
+  /// (short-circuit: leaves that cannot change the answer are not asked).
+  template <typename LeafInside>
+  bool Evaluate(const LeafInside& leafInside) const
+  {
+    return this->EvaluateNode(this->RootIndex, leafInside);
+  }
   /// Floating-point value of min/max of the leaves, and the leaf node that attains it.
   double Value(const Vec3& p, const PrimitiveSet& primitives, int* leafNode = nullptr) const;
   /// Gradient of the leaf attaining the value at p (outward normal direction).
@@ -155,6 +162,25 @@ public:
   std::uint32_t ChildIndex(std::uint32_t k) const { return this->Children[k]; }
 
 private:
+  template <typename LeafInside>
+  bool EvaluateNode(std::uint32_t i, const LeafInside& leafInside) const
+  {
+    const Node& n = this->Nodes[i];
+    if (n.NodeKind == Node::Kind::Leaf)
+    {
+      return leafInside(i, n);
+    }
+    const bool isUnion = n.NodeKind == Node::Kind::Union;
+    for (std::uint32_t c = 0; c < n.ChildCount; ++c)
+    {
+      if (this->EvaluateNode(this->Children[n.FirstChild + c], leafInside) == isUnion)
+      {
+        return isUnion; // union: the first inside child decides; intersection: the first outside
+      }
+    }
+    return !isUnion;
+  }
+
   std::vector<Node> Nodes;
   std::vector<std::uint32_t> Children;
   std::uint32_t RootIndex = 0;

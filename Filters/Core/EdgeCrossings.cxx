@@ -1,6 +1,8 @@
 #include "EdgeCrossings.h"
 
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 namespace tpc
 {
@@ -31,7 +33,7 @@ EdgeCrossingCount Count(const CsgExpressionPtr& expression, const PrimitiveSet& 
   // status changes at most once. (Coincident surfaces - a Bounds plane on a
   // box face - change together: still decided.)
   bool decided = true;
-  int enters = 0, exits = 0;
+  std::vector<CsgLeaf> changing; // leaves whose status differs at a and b
   for (const CsgLeaf& leaf : pruned.Expression->Leaves())
   {
     if (leaf.Kind == PrimitiveKind::Quadric)
@@ -43,15 +45,30 @@ EdgeCrossingCount Count(const CsgExpressionPtr& expression, const PrimitiveSet& 
         decided = false;
         break;
       }
+      if (LeafIsInside(leaf, prims, a) != LeafIsInside(leaf, prims, b))
+      {
+        changing.push_back(leaf);
+      }
+      continue;
     }
-    else if (prims.Meshes[leaf.Primitive].CountCrossings(a, b, axis, *leaf.Triangles) > 1)
+    // A mesh leaf changes status iff it is crossed once (exact parity).
+    const int crossings = prims.Meshes[leaf.Primitive].CountCrossings(a, b, axis, *leaf.Triangles);
+    if (crossings > 1)
     {
       decided = false;
       break;
     }
-    const bool leafInA = LeafIsInside(leaf, prims, a), leafInB = LeafIsInside(leaf, prims, b);
-    enters += !leafInA && leafInB ? 1 : 0;
-    exits += leafInA && !leafInB ? 1 : 0;
+    if (crossings == 1)
+    {
+      changing.push_back(leaf);
+    }
+  }
+  // Which way each changes matters only when several do; then the mesh
+  // leaves' statuses are asked (rays to infinity, the costly part).
+  int enters = 0, exits = 0;
+  for (std::size_t i = 0; decided && changing.size() > 1 && i < changing.size(); ++i)
+  {
+    (LeafIsInside(changing[i], prims, a) ? exits : enters) += 1;
   }
   if (decided && (enters == 0 || exits == 0))
   {
@@ -142,10 +159,46 @@ Vec3 FindEdgeCrossing(const CsgExpression& expression, const PrimitiveSet& primi
     }
     return at(0.5 * (ta + tb));
   }
+  // Bisection on exact signs. A mesh leaf's sign along an axis-aligned edge
+  // is its sign at `a` (one ray to infinity) flipped by each crossing of the
+  // cell's own triangles between a and the point: the same perturbed solid
+  // as IsInside, so the same answers, without a ray per step.
+  int axis = -1, differing = 0;
+  for (int k = 0; k < 3; ++k)
+  {
+    if (a[k] != b[k])
+    {
+      axis = k;
+      ++differing;
+    }
+  }
+  const bool alongAxis = differing == 1 && a[axis] < b[axis];
+  std::vector<std::int8_t> meshInsideAtA(expression.NodeCount(), -1);
+  auto insideAt = [&](const Vec3& p) {
+    if (!alongAxis)
+    {
+      return expression.IsInside(p, primitives);
+    }
+    return expression.Evaluate([&](std::uint32_t i, const CsgExpression::Node& n) {
+      const CsgLeaf& leaf = n.LeafData;
+      if (leaf.Kind != PrimitiveKind::Mesh || !n.Triangles)
+      {
+        return LeafIsInside(leaf, primitives, p);
+      }
+      const MeshSolid& mesh = primitives.Meshes[leaf.Primitive];
+      std::int8_t& atA = meshInsideAtA[i];
+      if (atA < 0)
+      {
+        atA = mesh.IsInside(a) ? 1 : 0;
+      }
+      const bool inside = (atA != 0) != ((mesh.CountCrossings(a, p, axis, *n.Triangles) & 1) != 0);
+      return inside == (leaf.Sigma > 0);
+    });
+  };
   for (int it = 0; it < 60; ++it)
   {
     const double t = 0.5 * (ta + tb);
-    if (expression.IsInside(at(t), primitives) == insideA)
+    if (insideAt(at(t)) == insideA)
     {
       ta = t;
     }

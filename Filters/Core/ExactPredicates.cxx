@@ -3,6 +3,8 @@
 #include "ExactSum.h"
 #include "Interval.h"
 
+#include <cmath>
+
 namespace tpc
 {
 namespace
@@ -13,9 +15,42 @@ struct Difference
   double X, Y;
 };
 
+// Floating-point filters with Shewchuk's a-priori error bounds ("Adaptive
+// Precision Floating-Point Arithmetic and Fast Robust Geometric Predicates",
+// 1997, the bounds ccwerrboundA and o3derrboundA): when |det| exceeds the
+// bound, its sign is exact. Several times cheaper than the interval filter
+// (no rounding-mode arithmetic), which stays as the second stage. Products
+// below MinimumMagnitude could have underflowed: those go to the next stage.
+constexpr double Epsilon = 1.1102230246251565e-16; // 2^-53
+constexpr double Orient2DBound = (3.0 + 16.0 * Epsilon) * Epsilon;
+constexpr double Orient3DBound = (7.0 + 56.0 * Epsilon) * Epsilon;
+constexpr double MinimumMagnitude = 1e-200;
+
+/// +1, -1, or 0 when the filter cannot decide.
+int FilteredSignOfDeterminant(const Difference m[3][3])
+{
+  const double ax = m[0][0].X - m[0][0].Y, ay = m[0][1].X - m[0][1].Y, az = m[0][2].X - m[0][2].Y;
+  const double bx = m[1][0].X - m[1][0].Y, by = m[1][1].X - m[1][1].Y, bz = m[1][2].X - m[1][2].Y;
+  const double cx = m[2][0].X - m[2][0].Y, cy = m[2][1].X - m[2][1].Y, cz = m[2][2].X - m[2][2].Y;
+  const double bxcy = bx * cy, cxby = cx * by, cxay = cx * ay, axcy = ax * cy, axby = ax * by, bxay = bx * ay;
+  const double det = az * (bxcy - cxby) + bz * (cxay - axcy) + cz * (axby - bxay);
+  const double permanent = (std::abs(bxcy) + std::abs(cxby)) * std::abs(az) +
+    (std::abs(cxay) + std::abs(axcy)) * std::abs(bz) + (std::abs(axby) + std::abs(bxay)) * std::abs(cz);
+  const double bound = Orient3DBound * permanent;
+  if (!(permanent >= MinimumMagnitude) || !std::isfinite(permanent))
+  {
+    return 0;
+  }
+  return det > bound ? 1 : det < -bound ? -1 : 0;
+}
+
 /// Exact sign of the 3x3 determinant of differences, after an interval filter.
 int SignOfDeterminant(const Difference m[3][3])
 {
+  if (const int filtered = FilteredSignOfDeterminant(m))
+  {
+    return filtered;
+  }
   static const int perms[6][3] = { { 0, 1, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 0, 2, 1 }, { 2, 1, 0 },
     { 1, 0, 2 } };
   static const int parity[6] = { 1, 1, 1, -1, -1, -1 };
@@ -67,6 +102,29 @@ int SignOfDeterminant(const Difference m[3][3])
 
 int Orient2D(double au, double av, double bu, double bv, double cu, double cv)
 {
+  {
+    // Shewchuk's filter on (a - c) x (b - c), the same determinant.
+    const double left = (au - cu) * (bv - cv), right = (av - cv) * (bu - cu);
+    const double det = left - right;
+    const double sum = std::abs(left) + std::abs(right);
+    if ((left > 0.0 && right <= 0.0) || (left < 0.0 && right >= 0.0) || (left == 0.0 && right != 0.0) ||
+      (left != 0.0 && right == 0.0))
+    {
+      // The two products' signs are exact (rounding keeps signs) and differ.
+      if (sum >= MinimumMagnitude && std::isfinite(sum))
+      {
+        return det > 0.0 ? 1 : -1;
+      }
+    }
+    else if (sum >= MinimumMagnitude && std::isfinite(sum))
+    {
+      const double bound = Orient2DBound * sum;
+      if (det > bound || det < -bound)
+      {
+        return det > 0.0 ? 1 : -1;
+      }
+    }
+  }
   const Interval det = (Interval(bu) - Interval(au)) * (Interval(cv) - Interval(av)) -
     (Interval(bv) - Interval(av)) * (Interval(cu) - Interval(au));
   if (det.lo > 0.0)

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 using tpc::Box3;
@@ -44,6 +45,38 @@ TEST(ExactPredicates, AgreeWithIntegerArithmetic)
     zeros += expected == 0 ? 1 : 0;
   }
   EXPECT_GT(zeros, 100); // degenerate cases were exercised
+}
+
+TEST(ExactPredicates, NearlyDegenerateCasesPastTheFloatingPointFilter)
+{
+  // Shewchuk's example: a point a hair off the line through (12, 12) and
+  // (24, 24), on a grid of ulps around (0.5, 0.5), where plain floating point
+  // gets signs wrong. Exact reference: every coordinate is an integer
+  // multiple of 2^-53, so the determinant is exact in 128-bit integers.
+  const double ulp = std::ldexp(1.0, -53);
+  const auto units = [ulp](double x) { return static_cast<__int128>(x / ulp); };
+  int positives = 0, negatives = 0, zeros = 0;
+  for (int i = 0; i < 64; ++i)
+  {
+    for (int j = 0; j < 64; ++j)
+    {
+      const double ax = 0.5 + i * ulp, ay = 0.5 + j * ulp;
+      const __int128 exact =
+        (units(12.0) - units(ax)) * (units(24.0) - units(ay)) - (units(12.0) - units(ay)) * (units(24.0) - units(ax));
+      const int expected = exact > 0 ? 1 : (exact < 0 ? -1 : 0);
+      ASSERT_EQ(tpc::Orient2D(ax, ay, 12.0, 12.0, 24.0, 24.0), expected) << i << " " << j;
+      // The same determinant as a 3-D one: a, b, c in z = 0, d above them.
+      ASSERT_EQ(tpc::Orient3D(Vec3(12.0, 12.0, 0.0), Vec3(24.0, 24.0, 0.0), Vec3(ax, ay, 1.0), Vec3(ax, ay, 0.0)),
+        expected)
+        << i << " " << j;
+      positives += expected > 0;
+      negatives += expected < 0;
+      zeros += expected == 0;
+    }
+  }
+  EXPECT_GT(positives, 0);
+  EXPECT_GT(negatives, 0);
+  EXPECT_GT(zeros, 0);
 }
 
 TEST(MeshSolid, InsideIsExactOnQueriesThroughEdgesAndVertices)
