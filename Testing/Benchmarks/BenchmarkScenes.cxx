@@ -86,7 +86,8 @@ std::vector<Ellipsoid> CavitiesInside(vtkPolyData* mesh, int count)
         const int ii = (i * 17) % n, jj = (j * 23) % n, kk = (k * 29) % n;
         double c[3] = { b[0] + (ii + 0.5) * (b[1] - b[0]) / n, b[2] + (jj + 0.5) * (b[3] - b[2]) / n,
           b[4] + (kk + 0.5) * (b[5] - b[4]) / n };
-        if (!enclosed->IsInsideSurface(c) || std::abs(distance->EvaluateFunction(c)) < 2.0 * radius)
+        // Inside by ray parity and by the signed distance (both must agree).
+        if (!enclosed->IsInsideSurface(c) || distance->EvaluateFunction(c) > -2.0 * radius)
         {
           continue;
         }

@@ -39,7 +39,8 @@ def run(program, meshes, method, scene, epsilon, threads, cell_size, timeout):
         return {"error": f"stopped after {timeout} s", "timeout": timeout}
     lines = [line for line in done.stdout.splitlines() if line.startswith("{")]
     if done.returncode != 0 or not lines:
-        return {"error": (done.stderr.strip().splitlines() or ["failed"])[-1][:60]}
+        why = (done.stderr.strip().splitlines() or [""])[-1][:50]
+        return {"error": f"exit {done.returncode} {why}".strip()}
     return json.loads(lines[-1])
 
 
