@@ -99,6 +99,16 @@ EdgeCrossingCount CountEdgeCrossings(const CsgExpressionPtr& expression,
   const PrimitiveSet& primitives, const Vec3& a, const Vec3& b, int axis, bool insideA,
   bool insideB, int maxBisections)
 {
+  // A lone mesh leaf (remeshing): its crossings with the cell's triangles are
+  // counted exactly, with the perturbation that decides the signs. The
+  // bisection would find the same number, or give up on two crossings closer
+  // than its depth: a complex edge either way.
+  const CsgExpression::Node& root = expression->NodeAt(expression->Root());
+  if (root.NodeKind == CsgExpression::Node::Kind::Leaf && root.LeafData.Kind == PrimitiveKind::Mesh &&
+    root.Triangles)
+  {
+    return { primitives.Meshes[root.LeafData.Primitive].CountCrossings(a, b, axis, *root.Triangles), true };
+  }
   int pieces = 0;
   return Count(expression, primitives, a, b, axis, insideA, insideB, maxBisections, pieces);
 }
@@ -173,6 +183,17 @@ Vec3 FindEdgeCrossing(const CsgExpression& expression, const PrimitiveSet& primi
     }
   }
   const bool alongAxis = differing == 1 && a[axis] < b[axis];
+  // A lone mesh leaf crossed once: the crossing is on that triangle's plane.
+  const CsgExpression::Node& root = expression.NodeAt(expression.Root());
+  if (alongAxis && root.NodeKind == CsgExpression::Node::Kind::Leaf &&
+    root.LeafData.Kind == PrimitiveKind::Mesh && root.Triangles)
+  {
+    Vec3 p;
+    if (primitives.Meshes[root.LeafData.Primitive].CrossingPoint(a, b, axis, *root.Triangles, p))
+    {
+      return p;
+    }
+  }
   std::vector<std::int8_t> meshInsideAtA(expression.NodeCount(), -1);
   auto insideAt = [&](const Vec3& p) {
     if (!alongAxis)

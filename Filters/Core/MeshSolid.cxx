@@ -169,11 +169,11 @@ bool MeshSolid::IsInside(const Vec3& p) const
   return (crossings & 1) != 0;
 }
 
-int MeshSolid::CountCrossings(
-  const Vec3& a, const Vec3& b, int axis, const TriangleList& triangles) const
+template <typename Crossed>
+void MeshSolid::ForEachCrossing(
+  const Vec3& a, const Vec3& b, int axis, const TriangleList& triangles, const Crossed& crossed) const
 {
   const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-  int crossings = 0;
   for (const std::uint32_t t : triangles)
   {
     const Box3& box = this->FaceBoxes[t];
@@ -182,9 +182,45 @@ int MeshSolid::CountCrossings(
     {
       continue;
     }
-    crossings += this->Crosses(t, a, &b, axis) ? 1 : 0;
+    if (this->Crosses(t, a, &b, axis))
+    {
+      crossed(t);
+    }
   }
+}
+
+int MeshSolid::CountCrossings(
+  const Vec3& a, const Vec3& b, int axis, const TriangleList& triangles) const
+{
+  int crossings = 0;
+  this->ForEachCrossing(a, b, axis, triangles, [&crossings](std::uint32_t) { ++crossings; });
   return crossings;
+}
+
+bool MeshSolid::CrossingPoint(
+  const Vec3& a, const Vec3& b, int axis, const TriangleList& triangles, Vec3& point) const
+{
+  int crossings = 0;
+  std::uint32_t hit = 0;
+  this->ForEachCrossing(a, b, axis, triangles, [&](std::uint32_t t) {
+    ++crossings;
+    hit = t;
+  });
+  if (crossings != 1)
+  {
+    return false;
+  }
+  const Vec3& p0 = this->Vertex(hit, 0);
+  const Vec3 n = Cross(this->Vertex(hit, 1) - p0, this->Vertex(hit, 2) - p0);
+  const double along = n[axis] * (b[axis] - a[axis]);
+  const double t = along != 0.0 ? Dot(n, p0 - a) / along : -1.0;
+  if (!(t >= 0.0 && t <= 1.0))
+  {
+    return false; // the segment lies in the plane (decided by the perturbation)
+  }
+  point = a;
+  point[axis] = a[axis] + t * (b[axis] - a[axis]);
+  return true;
 }
 
 namespace

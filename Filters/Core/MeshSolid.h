@@ -45,6 +45,9 @@ public:
   /// which differ only along `axis` (a[axis] < b[axis]), among `triangles`
   /// (which must include every triangle meeting the segment).
   int CountCrossings(const Vec3& a, const Vec3& b, int axis, const TriangleList& triangles) const;
+  /// When that segment crosses the surface exactly once: the crossing, on the
+  /// crossed triangle's plane (floating point), in `point`. False otherwise.
+  bool CrossingPoint(const Vec3& a, const Vec3& b, int axis, const TriangleList& triangles, Vec3& point) const;
 
   /// The triangles of `candidates` that may meet the closed box (a
   /// conservative separating-axis test: never drops a triangle that does).
@@ -62,6 +65,10 @@ public:
 
 private:
   bool Crosses(std::uint32_t t, const Vec3& a, const Vec3* b, int axis) const;
+  /// Calls `crossed(t)` for each triangle of `triangles` the segment crosses.
+  template <typename Crossed>
+  void ForEachCrossing(const Vec3& a, const Vec3& b, int axis, const TriangleList& triangles,
+    const Crossed& crossed) const;
 
   std::vector<Vec3> Vertices;
   std::vector<std::array<std::uint32_t, 3>> Faces;
