@@ -32,6 +32,10 @@ def run(program, meshes, method, scene, epsilon, threads, cell_size, timeout):
            "--threads", str(threads), "--meshes", meshes]
     if cell_size:
         cmd += ["--cell-size", repr(cell_size)]
+    if method == "tpc":
+        # The lattice's deepest level: at 1/256 the default MaximumDepth (16)
+        # stops a few cells that need more levels below the tolerance's.
+        cmd += ["--max-depth", "19"]
     env = dict(os.environ, VTK_SMP_BACKEND_IN_USE="STDThread")
     try:
         done = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=timeout)

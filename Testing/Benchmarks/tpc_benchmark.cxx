@@ -3,7 +3,7 @@
 // run_benchmark.py, runs every case and prints the tables.
 //
 //   tpc_benchmark --method tpc|vtk|vdb --scene NAME --epsilon E --threads N
-//                 --meshes DIR [--cell-size H]
+//                 --meshes DIR [--cell-size H] [--max-depth D]
 //
 // tpc: vtkTopologyPreservingContour, epsilon relative to the diagonal of
 //      the scene's domain (Bounds set to it);
@@ -117,7 +117,7 @@ double Diagonal(const std::array<double, 6>& b)
   return std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
 }
 
-RunResult RunFilter(const tpcbench::Scene& scene, double epsilon)
+RunResult RunFilter(const tpcbench::Scene& scene, double epsilon, int maximumDepth)
 {
   vtkNew<vtkTopologyPreservingContour> filter;
   for (const auto& mesh : scene.Meshes)
@@ -132,6 +132,10 @@ RunResult RunFilter(const tpcbench::Scene& scene, double epsilon)
   filter->SetBounds(const_cast<double*>(scene.Bounds.data()));
   filter->SetTolerance(epsilon);
   filter->SetToleranceIsRelative(true);
+  if (maximumDepth > 0)
+  {
+    filter->SetMaximumDepth(maximumDepth);
+  }
   const auto start = Clock::now();
   filter->Update();
   RunResult r;
@@ -275,7 +279,7 @@ int main(int argc, char* argv[])
     if (!args.count(required))
     {
       std::cerr << "usage: tpc_benchmark --method tpc|vtk|vdb --scene NAME --epsilon E --threads N "
-                   "--meshes DIR [--cell-size H]\n";
+                   "--meshes DIR [--cell-size H] [--max-depth D]\n";
       return 1;
     }
   }
@@ -294,7 +298,7 @@ int main(int argc, char* argv[])
     RunResult r;
     if (method == "tpc")
     {
-      r = RunFilter(scene, epsilon);
+      r = RunFilter(scene, epsilon, args.count("--max-depth") ? std::stoi(args["--max-depth"]) : 0);
     }
     else if (method == "vtk")
     {
