@@ -52,6 +52,7 @@ struct Report
   long long Unresolved = 0;
   int Closed = 0;
   int Manifold = 0;
+  long long PlanarCells = 0;
   double HausdorffBound = 0.0;
   double Tolerance = 0.0;
 };
@@ -72,6 +73,7 @@ void AddReport(vtkDataObject* output, const Report& r)
   addInt("UnresolvedCells", r.Unresolved);
   addInt("Closed", r.Closed);
   addInt("Manifold", r.Manifold);
+  addInt("PlanarCells", r.PlanarCells);
   vtkNew<vtkDoubleArray> h;
   h->SetName("HausdorffBound");
   h->InsertNextValue(r.HausdorffBound);
@@ -399,13 +401,8 @@ int vtkTopologyPreservingContour::RequestData(
   surfaceOut->GetCellData()->AddArray(gridCell);
 
   // Topology report.
-  for (const tpc::OctreeNode& n : sub.Octree.Nodes)
-  {
-    if (n.IsLeaf() && (n.State == tpc::CellState::Surface || n.State == tpc::CellState::Unresolved))
-    {
-      report.HausdorffBound = std::max(report.HausdorffBound, rootGrid.CellDiagonal(n.Level));
-    }
-  }
+  report.HausdorffBound = sub.HausdorffBound;
+  report.PlanarCells = static_cast<long long>(sub.PlanarSurfaceCells);
   report.Tolerance = tolerance;
   report.Components = topo.Components;
   report.Genus = topo.Genus;

@@ -43,7 +43,11 @@
  *   "TopologyGuaranteed" (1 only if every cell on the surface passed every
  *   test), "UnresolvedCells" (surface cells stopped by a limit), "Closed",
  *   "Manifold", "HausdorffBound" (the proven two-sided bound: the largest
- *   surface-cell diagonal) and "AbsoluteTolerance" (epsilon in world units).
+ *   surface-cell diagonal, except that cells where the surface is a plane
+ *   section count the finest lattice cell's), "PlanarCells" (surface cells
+ *   kept larger than epsilon because the surface in them is a plane section -
+ *   a plane, a box face or coplanar mesh triangles - so their patch is exact)
+ *   and "AbsoluteTolerance" (epsilon in world units).
  *
  * When the guarantee cannot be reached (tangential contact, depth or cell
  * limit) the filter still outputs a closed manifold surface, sets

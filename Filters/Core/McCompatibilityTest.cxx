@@ -3,6 +3,7 @@
 #include "BoundaryLoops.h"
 #include "ComplexCellTest.h"
 #include "FaceRefinement.h"
+#include "PlanarCell.h"
 #include "StarShapedTest.h"
 
 #include <algorithm>
@@ -120,9 +121,11 @@ McCompatibility TestMcCompatibility(
       return v;
     }
   }
-  if (grid.CellDiagonal(node.Level) > tolerance * (1.0 + 1e-9))
+  // Cells that must shrink anyway skip the costlier tests; a plane section
+  // may stay larger (error-driven acceptance, PlanarCell.h).
+  const bool oversized = grid.CellDiagonal(node.Level) > tolerance * (1.0 + 1e-9);
+  if (oversized && (uniform || !IsPlanarCell(*expression, prims, box)))
   {
-    // Cells that must shrink anyway skip the costlier tests.
     v.Reason = uniform ? SplitReason::ComplexVoxel : SplitReason::HausdorffSize;
     return v;
   }
@@ -180,6 +183,7 @@ McCompatibility TestMcCompatibility(
   }
   v.Kind = McVerdict::Pass;
   v.Reason = SplitReason::None;
+  v.Planar = oversized; // (an oversized cell only gets this far as a plane section)
   v.NewSigns = signs.NewSigns();
   return v;
 }

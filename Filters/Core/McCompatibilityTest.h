@@ -25,6 +25,9 @@ struct McCompatibility
   McVerdict Kind = McVerdict::Pass;
   SplitReason Reason = SplitReason::None;
   RegionSign Sign = RegionSign::Mixed;
+  /// Passed while larger than the tolerance: the surface in it is a plane
+  /// section (PlanarCell.h), so its patch is exact whatever its size.
+  bool Planar = false;
   /// Faces this cell refined (only kept if it passes).
   std::vector<std::pair<FaceKey, std::vector<FaceTile>>> Refinements;
   /// Signs evaluated during the tests, for the global table.
@@ -36,7 +39,8 @@ constexpr int FaceRefinementLevels = 10;
 
 /// The tests of paper 5.3 on one cell, with faces refined where a face test
 /// fails (FaceRefinement.h). A cell passes when
-/// - it is no larger than the tolerance (Hausdorff, 5.3.4);
+/// - it is no larger than the tolerance (Hausdorff, 5.3.4), or the surface in
+///   it is a plane section (PlanarCell.h: the patch is then exact);
 /// - each face can be tiled by MC-compatible tiles (complex face and edge,
 ///   face ambiguity, star-shaped w.r.t. the face; Lemma 1 per tile);
 /// - the surface draws at least one loop on the cell boundary (none while the

@@ -215,6 +215,9 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
       {
         node.State = CellState::Surface;
         ++result.SurfaceCells;
+        result.PlanarSurfaceCells += v.Planar ? 1 : 0;
+        result.HausdorffBound = std::max(result.HausdorffBound,
+          grid.CellDiagonal(v.Planar ? grid.MaxDepth : level));
         for (const auto& s : v.NewSigns)
         {
           tree.Signs.Insert(s.first, s.second);
@@ -236,6 +239,7 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
         node.Reason = SplitReason::LimitReached;
         node.FailedTest = v.Reason;
         ++result.UnresolvedCells;
+        result.HausdorffBound = std::max(result.HausdorffBound, grid.CellDiagonal(level));
         ++result.UnresolvedByReason[static_cast<int>(v.Reason)];
       }
       else

@@ -8,7 +8,8 @@
 // surface, not the volume. MaximumDepth and MaximumNumberOfCells only stop
 // runaway refinement (tangential contact never passes the tests, 5.3.3); cells
 // stopped by them are marked Unresolved and the result says the guarantee is
-// lost.
+// lost. Surface cells whose surface is a plane section stay as large as the
+// tests allow (error-driven acceptance, PlanarCell.h).
 #pragma once
 
 #include "AdaptiveOctree.h"
@@ -46,6 +47,14 @@ struct SubdivisionResult
   std::size_t SurfaceCells = 0;
   std::size_t UnresolvedCells = 0;
   std::size_t RefinedFaces = 0; ///< faces sampled finer than their cell (FaceRefinement.h)
+  /// Surface cells accepted larger than the tolerance as plane sections
+  /// (PlanarCell.h).
+  std::size_t PlanarSurfaceCells = 0;
+  /// The proven two-sided Hausdorff bound between the exact surface and the
+  /// extracted one: the largest diagonal of a surface or unresolved leaf (both
+  /// surfaces lie in it), where plane sections count the finest lattice
+  /// cell's diagonal (their patch is exact up to rounding).
+  double HausdorffBound = 0.0;
   /// Number of cells split for each SplitReason (and leaves left unresolved
   /// with that failing test, in UnresolvedByReason).
   std::array<std::size_t, 10> SplitsByReason{};

@@ -66,6 +66,7 @@ struct RunResult
   long long GridCells = 0;
   tpc::TopologyReport Topology;
   double SurfaceCellSize = 0.0; ///< tpc only
+  long PlanarCells = 0;         ///< tpc only
   bool Guaranteed = false;      ///< tpc only
 };
 
@@ -147,7 +148,12 @@ RunResult RunFilter(const tpcbench::Scene& scene, double epsilon, int maximumDep
   r.Topology = tpc::ComputeTopologyReport(Triangulated(surface));
   vtkFieldData* fd = surface->GetFieldData();
   r.Guaranteed = fd->GetArray("TopologyGuaranteed")->GetTuple1(0) == 1.0;
-  r.SurfaceCellSize = fd->GetArray("HausdorffBound")->GetTuple1(0) / std::sqrt(3.0);
+  // The edge of the cells the size criterion stops at (diagonal <= the
+  // absolute tolerance; plane sections may stay larger): root size / 2^level.
+  const double tolerance = fd->GetArray("AbsoluteTolerance")->GetTuple1(0);
+  const double rootSize = grid->GetXCoordinates()->GetTuple1(1) - grid->GetXCoordinates()->GetTuple1(0);
+  r.SurfaceCellSize = std::ldexp(rootSize, -static_cast<int>(std::ceil(std::log2(rootSize * std::sqrt(3.0) / tolerance) - 1e-9)));
+  r.PlanarCells = static_cast<long>(fd->GetArray("PlanarCells")->GetTuple1(0));
   return r;
 }
 
@@ -326,6 +332,7 @@ int main(int argc, char* argv[])
          << ", \"topology_right\": "
          << (closed && t.Components == scene.Components && t.Genus == scene.Genus ? "true" : "false")
          << ", \"cell_size\": " << (method == "tpc" ? r.SurfaceCellSize : h)
+         << ", \"planar_cells\": " << r.PlanarCells
          << ", \"guaranteed\": " << (r.Guaranteed ? "true" : "false") << "}";
     std::cout << json.str() << std::endl;
   }
