@@ -282,6 +282,76 @@ Vec3 PlaceLoopVertex(const std::vector<Vec3>& pts, const std::vector<Vec3>& norm
   return m;
 }
 
+/// Faces of the cell (bit f, CubeTopology.h numbering) that a loop's crossing
+/// lies on; all six for a bend (never triangulated without a centre).
+unsigned FacesOf(const Crossing& c, const std::uint32_t base[3], std::uint32_t size)
+{
+  if (c.Tile != 0)
+  {
+    return 0x3F;
+  }
+  std::uint32_t p[3];
+  SplitPointKey(c.Key >> 2, p);
+  const int along = static_cast<int>(c.Key & 3);
+  unsigned mask = 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (a != along)
+    {
+      mask |= (p[a] == base[a] ? 1u : 0u) << (2 * a);
+      mask |= (p[a] == base[a] + size ? 1u : 0u) << (2 * a + 1);
+    }
+  }
+  return mask;
+}
+
+/// Marching Cubes' triangulation of a loop: a fan from one of its own points
+/// (k - 2 triangles instead of the k of a fan around a centre), used where
+/// the surface is smooth in the cell (every crossing normal within 25 degrees
+/// of their mean: no crease or corner for a centre vertex to keep sharp).
+/// A diagonal may not join two points on one face of the cell: it would lie in
+/// the face, where the neighbour's patch may use the same two points. Among
+/// the apexes whose triangles all face the way the surface normals do, the
+/// one with the shortest diagonals. Returns -1 when there is none.
+int LoopFanApex(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, const std::vector<unsigned>& faces)
+{
+  const std::size_t m = pts.size();
+  Vec3 mean;
+  for (const Vec3& n : normals)
+  {
+    mean += n;
+  }
+  mean = Normalized(mean);
+  for (const Vec3& n : normals)
+  {
+    if (!(Dot(n, mean) >= 0.906)) // cos 25 degrees (also rejects zero normals)
+    {
+      return -1;
+    }
+  }
+  int best = -1;
+  double bestLength = HUGE_VAL;
+  for (std::size_t s = 0; s < m; ++s)
+  {
+    double length = 0.0;
+    bool valid = true;
+    for (std::size_t i = 1; i + 1 < m && valid; ++i)
+    {
+      const std::size_t a = (s + i) % m, b = (s + i + 1) % m;
+      valid = (i == 1 || (faces[s] & faces[a]) == 0) && (i + 2 == m || (faces[s] & faces[b]) == 0);
+      const Vec3 n = Cross(pts[a] - pts[s], pts[b] - pts[s]);
+      valid = valid && Dot(n, normals[s] + normals[a] + normals[b]) > 0.0 && Dot(n, mean) > 0.0;
+      length += i > 1 ? Norm(pts[a] - pts[s]) : 0.0;
+    }
+    if (valid && length < bestLength)
+    {
+      best = static_cast<int>(s);
+      bestLength = length;
+    }
+  }
+  return best;
+}
+
 /// True when every loop point lies on the same face of the cell: the surface
 /// there is a cap over that face, and a triangle through the loop points alone
 /// would lie flat in the face, so the loop needs a vertex inside the cell.
@@ -418,22 +488,28 @@ ExtractionResult ExtractSurface(
   parallelFor(cells.size(), [&](std::size_t begin, std::size_t end) {
     std::vector<std::uint32_t> ids;
     std::vector<Vec3> pts, normals;
+    std::vector<unsigned> faces;
     for (std::size_t i = begin; i < end; ++i)
     {
       const OctreeNode& node = tree.Nodes[cells[i]];
       const Box3 box = grid.CellBox(node.Level, node.Ijk);
+      const int shift = grid.MaxDepth - node.Level;
+      const std::uint32_t base[3] = { node.Ijk[0] << shift, node.Ijk[1] << shift, node.Ijk[2] << shift };
       std::size_t offset = 0;
       for (const std::uint32_t size : loops[i].LoopSizes)
       {
         ids.clear();
         pts.clear();
         normals.clear();
+        faces.clear();
         for (std::uint32_t k = 0; k < size; ++k)
         {
-          const std::uint32_t id = vertexOf(loops[i].Crossings[offset + k]);
+          const Crossing& c = loops[i].Crossings[offset + k];
+          const std::uint32_t id = vertexOf(c);
           ids.push_back(id);
           pts.push_back(mesh.Points[id]);
           normals.push_back(mesh.Normals[id]);
+          faces.push_back(FacesOf(c, base, 1u << shift));
         }
         offset += size;
         if (size < 3)
@@ -443,6 +519,16 @@ ExtractionResult ExtractSurface(
         if (size == 3 && !LiesOnOneFace(pts, box))
         {
           local[i].Triangles.push_back({ ids[0], ids[1], ids[2] });
+          continue;
+        }
+        const int apex = size > 3 ? LoopFanApex(pts, normals, faces) : -1;
+        if (apex >= 0)
+        {
+          for (std::uint32_t k = 1; k + 1 < size; ++k)
+          {
+            local[i].Triangles.push_back({ ids[static_cast<std::size_t>(apex)],
+              ids[(static_cast<std::size_t>(apex) + k) % size], ids[(static_cast<std::size_t>(apex) + k + 1) % size] });
+          }
           continue;
         }
         const std::uint32_t center = LocalFlag | static_cast<std::uint32_t>(local[i].Centers.size());

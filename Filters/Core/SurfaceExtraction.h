@@ -9,7 +9,9 @@
 // On each tile of a face, every run of inside points along the tile's boundary
 // is cut off by one segment between the two crossings that bound the run;
 // the segments chain into the disk's boundary loop, which is triangulated as
-// a fan around a vertex placed on the surface inside the cell. Both cells
+// a fan around a vertex placed on the surface inside the cell - or, where the
+// surface is smooth in the cell, as Marching Cubes does, by a fan from one of
+// the loop's own points whose diagonals avoid the cell's faces. Both cells
 // sharing a tile compute the same segments from the same points, and a
 // crossing is identified by the finest lattice sub-edge that contains it, so
 // no crack can appear and every edge of the output has exactly two

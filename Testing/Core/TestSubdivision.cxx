@@ -48,6 +48,12 @@ TEST(Subdivision, SphereIsAdaptiveClosedAndWithinTolerance)
   EXPECT_TRUE(coarseEmptyLeaf);
   EXPECT_LT(static_cast<double>(r.Subdivision.Octree.Nodes.size()), 0.1 * std::pow(8.0, deepest));
 
+  // A smooth surface: loops are triangulated from their own points as
+  // Marching Cubes does (k - 2 triangles for a loop of k crossings), not as
+  // fans around a centre (k triangles): 2.0 triangles per cell here, 3.5 with
+  // centres.
+  EXPECT_LT(r.Extraction.Mesh.Triangles.size(), 3 * r.Subdivision.SurfaceCells);
+
   // Two-sided Hausdorff distance <= tolerance: every vertex is within it of
   // the sphere, and every sampled sphere point is within it of a vertex.
   const auto& mesh = r.Extraction.Mesh;
