@@ -14,7 +14,7 @@ namespace tpc
 namespace vtkadapter
 {
 
-bool ConvertPolyData(vtkPolyData* input, MeshInput& mesh, std::string& error)
+bool ConvertPolyData(vtkPolyData* input, MeshInput& mesh, std::string& error, const ParallelFor& parallelFor)
 {
   mesh.IgnoredLines = input->GetLines() ? static_cast<std::size_t>(input->GetLines()->GetNumberOfCells()) : 0;
   mesh.IgnoredVertices = input->GetVerts() ? static_cast<std::size_t>(input->GetVerts()->GetNumberOfCells()) : 0;
@@ -62,7 +62,7 @@ bool ConvertPolyData(vtkPolyData* input, MeshInput& mesh, std::string& error)
         static_cast<std::uint32_t>(ids[2]) });
     }
   }
-  mesh.Repair = RepairMesh(points, faces);
+  mesh.Repair = RepairMesh(points, faces, true, 100, parallelFor);
   mesh.Solid = MeshSolid(std::move(points), std::move(faces));
   return true;
 }

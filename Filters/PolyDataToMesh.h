@@ -25,7 +25,8 @@ struct MeshInput
 
 /// Converts and repairs. Returns false (with `error` set) when the data
 /// cannot describe a solid at all: no triangles, or non-finite coordinates.
-bool ConvertPolyData(vtkPolyData* input, MeshInput& mesh, std::string& error);
+bool ConvertPolyData(vtkPolyData* input, MeshInput& mesh, std::string& error,
+  const ParallelFor& parallelFor = SequentialFor);
 
 } // namespace vtkadapter
 } // namespace tpc

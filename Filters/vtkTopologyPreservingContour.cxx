@@ -174,7 +174,7 @@ int vtkTopologyPreservingContour::RequestData(
       continue;
     }
     tpc::vtkadapter::MeshInput in;
-    if (!tpc::vtkadapter::ConvertPolyData(mesh, in, error))
+    if (!tpc::vtkadapter::ConvertPolyData(mesh, in, error, ParallelForSMP))
     {
       vtkErrorMacro("Input " << i << " cannot be used as a solid: " << error << ".");
       return 1;

@@ -154,7 +154,7 @@ double LatticeShiftPenalty(const LatticeCreases& creases, const Vec3& origin, co
 }
 
 std::vector<Vec3> RankLatticeShifts(const PrimitiveSet& primitives, const RootGrid& base,
-  double hausdorffTolerance, int maximumDepth, int count)
+  double hausdorffTolerance, int maximumDepth, int count, const ParallelFor& parallelFor)
 {
   LatticeSpacings spacings;
   int level = 0;
@@ -169,26 +169,29 @@ std::vector<Vec3> RankLatticeShifts(const PrimitiveSet& primitives, const RootGr
   // Candidates: no shift, then a low-discrepancy (R3) sequence of fractions
   // of the surface cells (MakeRootGrid leaves a margin of a cell).
   constexpr int Candidates = 64;
-  std::vector<std::pair<double, Vec3>> ranked;
   const LatticeCreases creases = primitives.Meshes.empty()
     ? LatticeCreases{}
     : FindLatticeCreases(primitives, 4.0 * spacings.Surface, spacings.Finest);
   const Vec3 step(0.8191725134, 0.6710436067, 0.5497004779);
-  for (int k = 0; k < Candidates && (k < count || !primitives.Meshes.empty()); ++k)
-  {
-    Vec3 shift;
-    for (int a = 0; a < 3; ++a)
+  std::vector<std::pair<double, Vec3>> ranked(
+    static_cast<std::size_t>(primitives.Meshes.empty() ? std::max(0, std::min(count, Candidates)) : Candidates));
+  parallelFor(ranked.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
     {
-      const double f = k * step[a];
-      shift[a] = (f - std::floor(f)) * spacings.Surface;
+      Vec3 shift;
+      for (int a = 0; a < 3; ++a)
+      {
+        const double f = static_cast<double>(k) * step[a];
+        shift[a] = (f - std::floor(f)) * spacings.Surface;
+      }
+      Vec3 origin = base.Origin;
+      for (int a = 0; a < 3; ++a)
+      {
+        origin[a] -= shift[a];
+      }
+      ranked[k] = { LatticeShiftPenalty(creases, origin, spacings), shift };
     }
-    Vec3 origin = base.Origin;
-    for (int a = 0; a < 3; ++a)
-    {
-      origin[a] -= shift[a];
-    }
-    ranked.emplace_back(LatticeShiftPenalty(creases, origin, spacings), shift);
-  }
+  });
   std::stable_sort(ranked.begin(), ranked.end(),
     [](const auto& x, const auto& y) { return x.first < y.first; });
   std::vector<Vec3> shifts;

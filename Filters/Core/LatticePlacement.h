@@ -17,6 +17,7 @@
 #pragma once
 
 #include "CsgExpression.h"
+#include "Parallel.h"
 #include "RootGrid.h"
 
 #include <array>
@@ -66,6 +67,6 @@ double LatticeShiftPenalty(const LatticeCreases& creases, const Vec3& origin, co
 /// the origin of `base`) best first, at most `count`. The zero shift comes
 /// first among equals, so scenes without meshes keep MakeRootGrid's lattice.
 std::vector<Vec3> RankLatticeShifts(const PrimitiveSet& primitives, const RootGrid& base,
-  double hausdorffTolerance, int maximumDepth, int count);
+  double hausdorffTolerance, int maximumDepth, int count, const ParallelFor& parallelFor = SequentialFor);
 
 } // namespace tpc

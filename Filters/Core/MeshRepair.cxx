@@ -297,7 +297,7 @@ void OrientOutward(const std::vector<Vec3>& P, std::vector<Triangle>& triangles,
 } // namespace
 
 MeshRepairReport RepairMesh(std::vector<Vec3>& points, std::vector<Triangle>& triangles,
-  bool checkSelfIntersections, std::size_t maxReported)
+  bool checkSelfIntersections, std::size_t maxReported, const ParallelFor& parallelFor)
 {
   MeshRepairReport r;
   r.InputTriangles = triangles.size();
@@ -314,7 +314,7 @@ MeshRepairReport RepairMesh(std::vector<Vec3>& points, std::vector<Triangle>& tr
   }
   if (checkSelfIntersections)
   {
-    r.SelfIntersections = CountSelfIntersections(points, triangles, maxReported);
+    r.SelfIntersections = CountSelfIntersections(points, triangles, maxReported, parallelFor);
     r.SelfIntersectionsChecked = true;
   }
   // Topology of the input surface.

@@ -11,6 +11,7 @@
 // decides whether the mesh is still usable.
 #pragma once
 
+#include "Parallel.h"
 #include "Vector3.h"
 
 #include <array>
@@ -55,6 +56,6 @@ struct MeshRepairReport
 /// (at most `maxReported` are counted).
 MeshRepairReport RepairMesh(std::vector<Vec3>& points,
   std::vector<std::array<std::uint32_t, 3>>& triangles, bool checkSelfIntersections = true,
-  std::size_t maxReported = 100);
+  std::size_t maxReported = 100, const ParallelFor& parallelFor = SequentialFor);
 
 } // namespace tpc

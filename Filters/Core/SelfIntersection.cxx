@@ -226,7 +226,8 @@ bool MeetImproperly(const std::vector<Vec3>& P, const std::array<std::uint32_t, 
 } // namespace
 
 std::size_t CountSelfIntersections(const std::vector<Vec3>& points,
-  const std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t limit)
+  const std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t limit,
+  const ParallelFor& parallelFor)
 {
   const std::size_t n = triangles.size();
   if (n < 2)
@@ -326,15 +327,26 @@ std::size_t CountSelfIntersections(const std::vector<Vec3>& points,
   }
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  std::size_t found = 0;
-  for (const auto& pr : pairs)
-  {
-    if (MeetImproperly(points, triangles[pr.first], triangles[pr.second]) && ++found >= limit)
+  // Fixed blocks, each counting up to the limit: the capped sum is
+  // min(total, limit) whatever the thread count.
+  constexpr std::size_t Blocks = 64;
+  std::vector<std::size_t> found(Blocks, 0);
+  parallelFor(Blocks, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t b = begin; b < end; ++b)
     {
-      break;
+      const std::size_t first = pairs.size() * b / Blocks, last = pairs.size() * (b + 1) / Blocks;
+      for (std::size_t i = first; i < last && found[b] < limit; ++i)
+      {
+        found[b] += MeetImproperly(points, triangles[pairs[i].first], triangles[pairs[i].second]) ? 1 : 0;
+      }
     }
+  });
+  std::size_t total = 0;
+  for (const std::size_t f : found)
+  {
+    total += f;
   }
-  return found;
+  return std::min(total, limit);
 }
 
 } // namespace tpc

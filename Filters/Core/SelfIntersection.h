@@ -6,6 +6,7 @@
 // (Orient3D/Orient2D), coplanar pairs included.
 #pragma once
 
+#include "Parallel.h"
 #include "Vector3.h"
 
 #include <array>
@@ -16,9 +17,12 @@
 namespace tpc
 {
 
-/// Number of improperly meeting triangle pairs, counting at most `limit`.
+/// Number of improperly meeting triangle pairs, counting at most `limit`
+/// (the candidate pairs are tested in parallel; the count does not depend on
+/// the number of threads).
 std::size_t CountSelfIntersections(const std::vector<Vec3>& points,
-  const std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t limit = 100);
+  const std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t limit = 100,
+  const ParallelFor& parallelFor = SequentialFor);
 
 /// Exact: do the closed triangles (a, b, c) and (d, e, f), which share no
 /// vertex, intersect?

@@ -153,25 +153,51 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
       return result;
     }
 
-    // 1. Exact signs at corners not seen before, each evaluated once.
-    std::vector<std::pair<PointKey, std::uint32_t>> pending;
-    for (const std::uint32_t n : active)
-    {
-      for (int c = 0; c < 8; ++c)
+    // 1. Exact signs at corners not seen before, each evaluated once (with
+    // the smallest cell index among the cells sharing it). Blocks of cells
+    // gather their unseen corners in parallel (table lookups only) into
+    // buckets by key; each bucket is sorted and deduplicated on its own.
+    constexpr std::size_t Blocks = 64, Buckets = 64;
+    std::vector<std::vector<std::pair<PointKey, std::uint32_t>>> parts(Blocks * Buckets);
+    parallelFor(Blocks, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t b = begin; b < end; ++b)
       {
-        std::uint32_t p[3];
-        CornerLattice(grid, tree.Nodes[n], c, p);
-        const PointKey key = MakePointKey(p[0], p[1], p[2]);
-        if (tree.Signs.Find(key) < 0)
+        for (std::size_t i = active.size() * b / Blocks; i < active.size() * (b + 1) / Blocks; ++i)
         {
-          pending.emplace_back(key, n);
+          const std::uint32_t n = active[i];
+          for (int c = 0; c < 8; ++c)
+          {
+            std::uint32_t p[3];
+            CornerLattice(grid, tree.Nodes[n], c, p);
+            const PointKey key = MakePointKey(p[0], p[1], p[2]);
+            if (tree.Signs.Find(key) < 0)
+            {
+              parts[b * Buckets + ((key * 0x9E3779B97F4A7C15ULL) >> 58)].emplace_back(key, n);
+            }
+          }
         }
       }
+    });
+    std::vector<std::vector<std::pair<PointKey, std::uint32_t>>> buckets(Buckets);
+    parallelFor(Buckets, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t k = begin; k < end; ++k)
+      {
+        auto& bucket = buckets[k];
+        for (std::size_t b = 0; b < Blocks; ++b)
+        {
+          bucket.insert(bucket.end(), parts[b * Buckets + k].begin(), parts[b * Buckets + k].end());
+        }
+        std::sort(bucket.begin(), bucket.end());
+        bucket.erase(std::unique(bucket.begin(), bucket.end(),
+                       [](const auto& x, const auto& y) { return x.first == y.first; }),
+          bucket.end());
+      }
+    });
+    std::vector<std::pair<PointKey, std::uint32_t>> pending;
+    for (const auto& bucket : buckets)
+    {
+      pending.insert(pending.end(), bucket.begin(), bucket.end());
     }
-    std::sort(pending.begin(), pending.end());
-    pending.erase(std::unique(pending.begin(), pending.end(),
-                    [](const auto& a, const auto& b) { return a.first == b.first; }),
-      pending.end());
     std::vector<std::uint8_t> inside(pending.size());
     parallelFor(pending.size(), [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i)
@@ -315,7 +341,7 @@ PlacedSubdivision RunOnBestLatticePlacement(const ImplicitScene& scene, const Bo
 {
   const RootGrid base = MakeRootGrid(domain, parameters.HausdorffTolerance, parameters.MaximumDepth);
   const std::vector<Vec3> shifts = RankLatticeShifts(scene.Primitives, base, parameters.HausdorffTolerance,
-    parameters.MaximumDepth, std::max(1, maximumPlacements));
+    parameters.MaximumDepth, std::max(1, maximumPlacements), parallelFor);
   PlacedSubdivision best;
   // Progress stays monotonic: the first placement (usually the only one)
   // reports over most of [0, 1], each retry over a share of what is left.
