@@ -3,6 +3,7 @@
 #include "ImplicitFunctionToCsg.h"
 #include "OctreeToHyperTreeGrid.h"
 #include "PolyDataToMesh.h"
+#include "SelfIntersection.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -161,6 +162,7 @@ int vtkTopologyPreservingContour::RequestData(
   // The solids: one per mesh input, then the implicit function.
   tpc::ImplicitScene scene;
   std::vector<tpc::CsgTerm> solids;
+  std::vector<int> meshInputs; // input connection of each mesh primitive
   tpc::CsgTerm implicitTerm;
   bool assumptionsMet = true;
   std::string error;
@@ -203,7 +205,41 @@ int vtkTopologyPreservingContour::RequestData(
       vtkWarningMacro("Input " << i << " was repaired: " << problems << ".");
     }
     scene.Primitives.Meshes.push_back(std::move(in.Solid));
+    meshInputs.push_back(i);
     solids.push_back(tpc::CsgTerm::Mesh(static_cast<int>(scene.Primitives.Meshes.size() - 1)));
+  }
+  // Two inputs with coincident faces whose solids touch there (faces facing
+  // each other in a union or an intersection; flush faces where one side is
+  // subtracted: a difference complements its later inputs) meet without
+  // crossing: a tangential contact over an area, which no refinement
+  // resolves and which refining to MaximumDepth turns into millions of cells.
+  for (std::size_t a = 0; a < scene.Primitives.Meshes.size(); ++a)
+  {
+    for (std::size_t b = a + 1; b < scene.Primitives.Meshes.size(); ++b)
+    {
+      const bool oneSubtracted = this->Operation == DIFFERENCE && a == 0; // (the first mesh is the minuend)
+      const tpc::MeshSolid& ma = scene.Primitives.Meshes[a];
+      const tpc::MeshSolid& mb = scene.Primitives.Meshes[b];
+      bool apart = false;
+      for (int k = 0; k < 3; ++k)
+      {
+        apart = apart || ma.Bounds().lo[k] > mb.Bounds().hi[k] || mb.Bounds().lo[k] > ma.Bounds().hi[k];
+      }
+      const std::size_t touching = apart
+        ? 0
+        : tpc::CountCoincidentFaces(
+            ma.Points(), ma.Triangles(), mb.Points(), mb.Triangles(), !oneSubtracted, 100, ParallelForSMP);
+      if (touching > 0)
+      {
+        assumptionsMet = false;
+        vtkWarningMacro("Inputs " << meshInputs[a] << " and " << meshInputs[b] << " touch along coincident faces ("
+                                  << touching << (touching >= 100 ? " or more" : "")
+                                  << " pairs of triangles in one plane): their surfaces meet without crossing, a "
+                                     "tangential contact that no refinement resolves. The surface is computed but "
+                                     "TopologyGuaranteed will be 0; move one input slightly, or merge them into "
+                                     "one mesh.");
+      }
+    }
   }
   if (this->ImplicitFunction)
   {

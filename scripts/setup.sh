@@ -10,7 +10,8 @@ cd "$(dirname "$0")/.."
 # (../shared/SETUP-NOTES.md); the last lines are our own build and test
 # tools: GLPK is the tests' independent LP oracle, libcgal-demo holds the
 # real test meshes with known topology, OpenVDB (with the Boost part its CMake
-# module asks for) is the benchmark's baseline.
+# module asks for) is the benchmark's baseline; clang with its libFuzzer and
+# sanitizer runtimes, and valgrind, check the core (scripts/test.sh).
 packages=(
   paraview paraview-dev python3-paraview xvfb xauth
   qtbase5-dev qttools5-dev libqt5svg5-dev qtxmlpatterns5-dev-tools libutfcpp-dev
@@ -21,6 +22,7 @@ packages=(
   libavformat-dev libavcodec-dev libavutil-dev libswscale-dev libxt-dev libtbb-dev
   cmake ninja-build g++ libgtest-dev
   libglpk-dev libcgal-demo libopenvdb-dev libboost-iostreams-dev
+  clang libclang-rt-14-dev valgrind
 )
 missing=()
 for p in "${packages[@]}"; do

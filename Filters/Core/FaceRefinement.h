@@ -54,6 +54,7 @@ private:
   const CsgExpression& Expression;
   const PrimitiveSet& Primitives;
   std::vector<std::pair<PointKey, bool>> Fresh;
+  LatticeSignTable Local; ///< index of Fresh, once it is long
 };
 
 struct FaceRefinementResult

@@ -225,14 +225,17 @@ bool MeetImproperly(const std::vector<Vec3>& P, const std::array<std::uint32_t, 
 }
 } // namespace
 
-std::size_t CountSelfIntersections(const std::vector<Vec3>& points,
-  const std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t limit,
-  const ParallelFor& parallelFor)
+namespace
+{
+/// Pairs of triangles whose bounding boxes overlap (each pair once, smaller
+/// index first): a uniform grid over the boxes.
+std::vector<std::pair<std::uint32_t, std::uint32_t>> CandidatePairs(
+  const std::vector<Vec3>& points, const std::vector<std::array<std::uint32_t, 3>>& triangles)
 {
   const std::size_t n = triangles.size();
   if (n < 2)
   {
-    return 0;
+    return {};
   }
   std::vector<Box3> boxes(n);
   Box3 all{ { HUGE_VAL, HUGE_VAL, HUGE_VAL }, { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL } };
@@ -327,8 +330,16 @@ std::size_t CountSelfIntersections(const std::vector<Vec3>& points,
   }
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  // Fixed blocks, each counting up to the limit: the capped sum is
-  // min(total, limit) whatever the thread count.
+  return pairs;
+}
+
+/// How many candidate pairs `accept` takes, counting at most `limit`: fixed
+/// blocks, each counting up to the limit, so the capped sum is
+/// min(total, limit) whatever the thread count.
+template <typename Accept>
+std::size_t CountAccepted(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs,
+  std::size_t limit, const ParallelFor& parallelFor, const Accept& accept)
+{
   constexpr std::size_t Blocks = 64;
   std::vector<std::size_t> found(Blocks, 0);
   parallelFor(Blocks, [&](std::size_t begin, std::size_t end) {
@@ -337,7 +348,7 @@ std::size_t CountSelfIntersections(const std::vector<Vec3>& points,
       const std::size_t first = pairs.size() * b / Blocks, last = pairs.size() * (b + 1) / Blocks;
       for (std::size_t i = first; i < last && found[b] < limit; ++i)
       {
-        found[b] += MeetImproperly(points, triangles[pairs[i].first], triangles[pairs[i].second]) ? 1 : 0;
+        found[b] += accept(pairs[i].first, pairs[i].second) ? 1 : 0;
       }
     }
   });
@@ -347,6 +358,54 @@ std::size_t CountSelfIntersections(const std::vector<Vec3>& points,
     total += f;
   }
   return std::min(total, limit);
+}
+} // namespace
+
+std::size_t CountSelfIntersections(const std::vector<Vec3>& points,
+  const std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t limit,
+  const ParallelFor& parallelFor)
+{
+  return CountAccepted(CandidatePairs(points, triangles), limit, parallelFor,
+    [&](std::uint32_t t1, std::uint32_t t2) { return MeetImproperly(points, triangles[t1], triangles[t2]); });
+}
+
+std::size_t CountCoincidentFaces(const std::vector<Vec3>& pointsA,
+  const std::vector<std::array<std::uint32_t, 3>>& trianglesA, const std::vector<Vec3>& pointsB,
+  const std::vector<std::array<std::uint32_t, 3>>& trianglesB, bool facingEachOther, std::size_t limit,
+  const ParallelFor& parallelFor)
+{
+  // Both meshes in one list, B's indices after A's.
+  std::vector<Vec3> points = pointsA;
+  points.insert(points.end(), pointsB.begin(), pointsB.end());
+  std::vector<std::array<std::uint32_t, 3>> triangles = trianglesA;
+  const auto offset = static_cast<std::uint32_t>(pointsA.size());
+  for (const auto& t : trianglesB)
+  {
+    triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+  }
+  const auto fromA = static_cast<std::uint32_t>(trianglesA.size());
+  return CountAccepted(CandidatePairs(points, triangles), limit, parallelFor,
+    [&](std::uint32_t t1, std::uint32_t t2) {
+      if ((t1 < fromA) == (t2 < fromA))
+      {
+        return false; // both from one mesh
+      }
+      const Vec3 p[3] = { points[triangles[t1][0]], points[triangles[t1][1]], points[triangles[t1][2]] };
+      const Vec3 q[3] = { points[triangles[t2][0]], points[triangles[t2][1]], points[triangles[t2][2]] };
+      for (const Vec3& v : q)
+      {
+        if (Orient3D(p[0], p[1], p[2], v) != 0)
+        {
+          return false;
+        }
+      }
+      // Facing each other: opposite windings in a common projection.
+      const int k = ProjectionAxis(p[0], p[1], p[2]);
+      const Projected pp[3] = { Project(p[0], k), Project(p[1], k), Project(p[2], k) };
+      const Projected qq[3] = { Project(q[0], k), Project(q[1], k), Project(q[2], k) };
+      const bool opposite = O2(pp[0], pp[1], pp[2]) * O2(qq[0], qq[1], qq[2]) < 0;
+      return opposite == facingEachOther && CoplanarTrianglesMeet(p, q, k);
+    });
 }
 
 } // namespace tpc

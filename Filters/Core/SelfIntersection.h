@@ -24,6 +24,18 @@ std::size_t CountSelfIntersections(const std::vector<Vec3>& points,
   const std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t limit = 100,
   const ParallelFor& parallelFor = SequentialFor);
 
+/// Number of triangle pairs, one from each mesh, that lie in one plane and
+/// meet (exact), with opposite windings (`facingEachOther`) or the same
+/// winding, counting at most `limit`. In a union or an intersection, faces
+/// facing each other make the two surfaces meet without crossing - a
+/// tangential contact (paper 5.3.3) spread over an area, which no refinement
+/// resolves; a difference complements its subtracted solids, and there flush
+/// faces (the same winding) are the contact.
+std::size_t CountCoincidentFaces(const std::vector<Vec3>& pointsA,
+  const std::vector<std::array<std::uint32_t, 3>>& trianglesA, const std::vector<Vec3>& pointsB,
+  const std::vector<std::array<std::uint32_t, 3>>& trianglesB, bool facingEachOther, std::size_t limit = 100,
+  const ParallelFor& parallelFor = SequentialFor);
+
 /// Exact: do the closed triangles (a, b, c) and (d, e, f), which share no
 /// vertex, intersect?
 bool TrianglesIntersect(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e,

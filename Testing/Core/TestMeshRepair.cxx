@@ -147,3 +147,28 @@ TEST(SelfIntersection, ExactTriangleTests)
   const tpc::MeshSolid torus = tpctest::TorusMesh({ 0, 0, 0 }, 0.6, 0.25, 48, 24);
   EXPECT_EQ(tpc::CountSelfIntersections(torus.Points(), torus.Triangles()), 0u);
 }
+
+TEST(SelfIntersection, CoincidentFacesOfTwoMeshesAreFoundByWinding)
+{
+  auto count = [](const tpc::MeshSolid& a, const tpc::MeshSolid& b, bool facing) {
+    return tpc::CountCoincidentFaces(a.Points(), a.Triangles(), b.Points(), b.Triangles(), facing);
+  };
+  const tpc::MeshSolid a = tpctest::CubeMesh({ 0, 0, 0 }, { 1, 1, 1 });
+  // Touching along x = 1, facing each other.
+  const tpc::MeshSolid touching = tpctest::CubeMesh({ 1, 0.2, 0.3 }, { 1.5, 0.6, 0.7 });
+  EXPECT_GT(count(a, touching, true), 0u);
+  EXPECT_EQ(count(a, touching, false), 0u);
+  // Flush inside x = 1: the same winding.
+  const tpc::MeshSolid flush = tpctest::CubeMesh({ 0.5, 0.25, 0.25 }, { 1, 0.75, 0.75 });
+  EXPECT_EQ(count(a, flush, true), 0u);
+  EXPECT_GT(count(a, flush, false), 0u);
+  // A gap of one part in 1e12, and cubes that cross, have none.
+  const tpc::MeshSolid gap = tpctest::CubeMesh({ 1 + 1e-12, 0, 0 }, { 2, 1, 1 });
+  const tpc::MeshSolid crossing = tpctest::CubeMesh({ 0.5, 0.25, 0.25 }, { 1.5, 0.75, 0.75 });
+  for (const bool facing : { true, false })
+  {
+    EXPECT_EQ(count(a, gap, facing), 0u);
+    EXPECT_EQ(count(a, crossing, facing), 0u);
+    EXPECT_EQ(count(tpctest::SphereMesh({ 0, 0, 0 }, 1.0, 2), tpctest::SphereMesh({ 0.5, 0.1, 0 }, 1.0, 2), facing), 0u);
+  }
+}

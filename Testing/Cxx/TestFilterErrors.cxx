@@ -6,12 +6,14 @@
 #include "vtkAppendPolyData.h"
 #include "vtkBox.h"
 #include "vtkCellData.h"
+#include "vtkCubeSource.h"
 #include "vtkCylinder.h"
 #include "vtkImplicitBoolean.h"
 #include "vtkPlane.h"
 #include "vtkSphere.h"
 #include "vtkSphereSource.h"
 #include "vtkSuperquadric.h"
+#include "vtkTriangleFilter.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <gtest/gtest.h>
@@ -91,6 +93,56 @@ TEST(FilterErrors, SelfIntersectingMeshIsComputedQuicklyWithoutGuarantee)
     deepest = std::max(deepest, static_cast<int>(depth->GetTuple1(i)));
   }
   EXPECT_LT(deepest, f->GetMaximumDepth());
+}
+
+TEST(FilterErrors, InputsTouchingAlongAFaceStopEarlyWithoutGuarantee)
+{
+  // Two cubes sharing a face, united: their surfaces meet without crossing
+  // over a whole square, a tangential contact over an area. Refining it to
+  // MaximumDepth took more than ten minutes (millions of cells); the filter
+  // now says so and stops three levels below the tolerance's cells.
+  vtkNew<vtkCubeSource> a, b;
+  b->SetCenter(1, 0, 0);
+  vtkNew<vtkTriangleFilter> ta, tb;
+  ta->SetInputConnection(a->GetOutputPort());
+  tb->SetInputConnection(b->GetOutputPort());
+  vtkNew<vtkTopologyPreservingContour> f;
+  f->AddInputConnection(ta->GetOutputPort());
+  f->AddInputConnection(tb->GetOutputPort());
+  f->SetTolerance(0.05);
+  MessageRecorder messages(f);
+  const FilterResult r = tpctest::Run(f);
+  EXPECT_NE(messages.Warnings.find("Inputs 0 and 1 touch along coincident faces"), std::string::npos)
+    << messages.Warnings;
+  EXPECT_NE(messages.Warnings.find("refinement stops at depth"), std::string::npos) << messages.Warnings;
+  EXPECT_EQ(r.Guaranteed, 0);
+  const tpctest::IndependentTopology t = tpctest::Measure(r.Surface);
+  EXPECT_EQ(t.BoundaryEdges, 0);
+  EXPECT_EQ(t.NonManifoldEdges, 0);
+  EXPECT_LT(r.Grid->GetNumberOfCells(), 200000);
+
+  // Apart by a visible gap, they are two guaranteed boxes.
+  b->SetCenter(1.2, 0, 0);
+  const FilterResult apart = tpctest::Run(f);
+  EXPECT_EQ(apart.Guaranteed, 1);
+  EXPECT_EQ(apart.Components, 2);
+
+  // In a difference the subtracted solid is complemented: there a smaller
+  // box flush with a face (a notch) is the contact, one touching from
+  // outside removes nothing and is resolved.
+  f->SetOperationToDifference();
+  b->SetBounds(0.2, 0.5, -0.3, 0.3, -0.2, 0.2);
+  MessageRecorder notch(f);
+  const FilterResult flush = tpctest::Run(f);
+  EXPECT_NE(notch.Warnings.find("coincident faces"), std::string::npos) << notch.Warnings;
+  EXPECT_EQ(flush.Guaranteed, 0);
+  EXPECT_EQ(tpctest::Measure(flush.Surface).BoundaryEdges, 0);
+  b->SetBounds(0.5, 0.8, -0.3, 0.3, -0.2, 0.2);
+  MessageRecorder outside(f);
+  const FilterResult cut = tpctest::Run(f);
+  EXPECT_EQ(outside.Warnings.find("coincident faces"), std::string::npos) << outside.Warnings;
+  EXPECT_EQ(cut.Guaranteed, 1);
+  EXPECT_EQ(cut.Components, 1);
 }
 
 TEST(FilterErrors, BoxFacesOnTheBoundsAreResolved)
