@@ -16,13 +16,10 @@ struct ContourRun
   double Tolerance = 0.0; ///< absolute
 };
 
-/// Contours `scene` over `bounds` grown by 5 % of its diagonal, with the
-/// tolerance relative to the diagonal of `bounds`, trying up to
-/// `placements` lattice placements.
-inline ContourRun Contour(const tpc::ImplicitScene& scene, const tpc::Box3& bounds,
-  double relativeTolerance, int maxDepth = 16, int placements = tpc::LatticePlacements)
+/// `bounds` grown by 5 % of its diagonal on every side (as the filter does,
+/// so that the surface stays off the grid's outer boundary).
+inline tpc::Box3 GrownDomain(const tpc::Box3& bounds)
 {
-  ContourRun r;
   tpc::Box3 domain = bounds;
   const double d = bounds.Diagonal();
   for (int a = 0; a < 3; ++a)
@@ -30,6 +27,18 @@ inline ContourRun Contour(const tpc::ImplicitScene& scene, const tpc::Box3& boun
     domain.lo[a] -= 0.05 * d;
     domain.hi[a] += 0.05 * d;
   }
+  return domain;
+}
+
+/// Contours `scene` over `bounds` grown by 5 % of its diagonal, with the
+/// tolerance relative to the diagonal of `bounds`, trying up to
+/// `placements` lattice placements.
+inline ContourRun Contour(const tpc::ImplicitScene& scene, const tpc::Box3& bounds,
+  double relativeTolerance, int maxDepth = 16, int placements = tpc::LatticePlacements)
+{
+  ContourRun r;
+  const tpc::Box3 domain = GrownDomain(bounds);
+  const double d = bounds.Diagonal();
   tpc::SubdivisionParameters p;
   p.HausdorffTolerance = relativeTolerance * d;
   p.MaximumDepth = maxDepth;

@@ -105,6 +105,28 @@ tpc::CsgTerm::Op RandomOperation(FuzzedDataProvider& in)
 /// output must still be closed and manifold (set per input).
 bool tightLimits = false;
 
+/// The scene and parameters, for reproducing a failing input:
+/// TPC_FUZZ_VERBOSE=1 FuzzCore <file>.
+void Describe(const tpc::ImplicitScene& scene, const tpc::SubdivisionParameters& p, const tpc::Box3& domain)
+{
+  std::fprintf(stderr, "tolerance %.17g, depth %d, cells %zu, domain [%g %g %g]-[%g %g %g]\n", p.HausdorffTolerance,
+    p.MaximumDepth, p.MaximumNumberOfCells, domain.lo[0], domain.lo[1], domain.lo[2], domain.hi[0], domain.hi[1],
+    domain.hi[2]);
+  for (const tpc::Quadric& q : scene.Primitives.Quadrics)
+  {
+    std::fprintf(stderr, "quadric");
+    for (const double c : q.Coefficients())
+    {
+      std::fprintf(stderr, " %.17g", c);
+    }
+    std::fprintf(stderr, "\n");
+  }
+  for (const tpc::MeshSolid& m : scene.Primitives.Meshes)
+  {
+    std::fprintf(stderr, "mesh of %zu triangles\n", m.TriangleCount());
+  }
+}
+
 /// Runs the core with small limits and checks the properties that hold for
 /// every input. Returns the run for further checks.
 tpctest::ContourRun RunAndCheck(FuzzedDataProvider& in, const tpc::ImplicitScene& scene, const tpc::Box3& bounds)
@@ -114,38 +136,16 @@ tpctest::ContourRun RunAndCheck(FuzzedDataProvider& in, const tpc::ImplicitScene
   {
     return r;
   }
-  tpc::Box3 domain = bounds;
-  const double d = bounds.Diagonal();
-  for (int a = 0; a < 3; ++a)
-  {
-    domain.lo[a] -= 0.05 * d;
-    domain.hi[a] += 0.05 * d;
-  }
+  const tpc::Box3 domain = tpctest::GrownDomain(bounds);
   tpc::SubdivisionParameters p;
   // (An exhausted input gives the coarsest tolerance and the deepest limit.)
-  p.HausdorffTolerance = (0.3 - Number(in, 0.0, 0.26)) * d;
+  p.HausdorffTolerance = (0.3 - Number(in, 0.0, 0.26)) * bounds.Diagonal();
   p.MaximumDepth = tightLimits ? 2 + in.ConsumeIntegralInRange<int>(0, 3) : 9 - in.ConsumeIntegralInRange<int>(0, 5);
   p.MaximumNumberOfCells = tightLimits ? 3000 : 300000;
   r.Tolerance = p.HausdorffTolerance;
   if (std::getenv("TPC_FUZZ_VERBOSE"))
   {
-    // To reproduce a failing input: TPC_FUZZ_VERBOSE=1 FuzzCore <file>.
-    std::fprintf(stderr, "tolerance %.17g, depth %d, cells %zu, domain [%g %g %g]-[%g %g %g]\n",
-      p.HausdorffTolerance, p.MaximumDepth, p.MaximumNumberOfCells, domain.lo[0], domain.lo[1], domain.lo[2],
-      domain.hi[0], domain.hi[1], domain.hi[2]);
-    for (const tpc::Quadric& q : scene.Primitives.Quadrics)
-    {
-      std::fprintf(stderr, "quadric");
-      for (const double c : q.Coefficients())
-      {
-        std::fprintf(stderr, " %.17g", c);
-      }
-      std::fprintf(stderr, "\n");
-    }
-    for (const tpc::MeshSolid& m : scene.Primitives.Meshes)
-    {
-      std::fprintf(stderr, "mesh of %zu triangles\n", m.TriangleCount());
-    }
+    Describe(scene, p, domain);
   }
   tpc::PlacedSubdivision placed = tpc::RunOnBestLatticePlacement(scene, domain, p, 1);
   r.Subdivision = std::move(placed.Result);
@@ -172,19 +172,24 @@ bool Guaranteed(const tpctest::ContourRun& r)
   return r.Subdivision.UnresolvedCells == 0 && !r.Subdivision.CellLimitReached;
 }
 
-void RandomCsg(FuzzedDataProvider& in)
+/// `t` combined with `more` random primitives by random operations, clipped
+/// to a box (as the filter clips to its Bounds), contoured and checked.
+void CombineClipAndRun(FuzzedDataProvider& in, SceneBuilder& b, tpc::CsgTerm t, int more)
 {
-  SceneBuilder b;
-  tpc::CsgTerm t = RandomPrimitive(in, b);
-  const int more = in.ConsumeIntegralInRange<int>(0, 4);
   for (int k = 0; k < more; ++k)
   {
     t = tpc::CsgTerm::Combine(RandomOperation(in), { t, RandomPrimitive(in, b) });
   }
-  // Clipped to a box, as the filter clips to its Bounds.
   const tpc::Box3 clip{ { -1.2, -1.2, -1.2 }, { 1.2, 1.2, 1.2 } };
   b.Finish(SceneBuilder::Intersection({ t, b.Box(clip.lo, clip.hi) }));
   RunAndCheck(in, b.Scene, clip);
+}
+
+void RandomCsg(FuzzedDataProvider& in)
+{
+  SceneBuilder b;
+  const tpc::CsgTerm first = RandomPrimitive(in, b);
+  CombineClipAndRun(in, b, first, in.ConsumeIntegralInRange<int>(0, 4));
 }
 
 void KnownTopology(FuzzedDataProvider& in)
@@ -309,14 +314,7 @@ void MeshScene(FuzzedDataProvider& in, bool withPrimitives)
   tpc::CsgTerm t = b.Mesh(std::move(mesh));
   if (withPrimitives)
   {
-    const int more = in.ConsumeIntegralInRange<int>(1, 3);
-    for (int k = 0; k < more; ++k)
-    {
-      t = tpc::CsgTerm::Combine(RandomOperation(in), { t, RandomPrimitive(in, b) });
-    }
-    const tpc::Box3 clip{ { -1.2, -1.2, -1.2 }, { 1.2, 1.2, 1.2 } };
-    b.Finish(SceneBuilder::Intersection({ t, b.Box(clip.lo, clip.hi) }));
-    RunAndCheck(in, b.Scene, clip);
+    CombineClipAndRun(in, b, t, in.ConsumeIntegralInRange<int>(1, 3));
     return;
   }
   b.Finish(t);
