@@ -1,0 +1,228 @@
+// The README's table of bad inputs, row by row (issue 6): each gets defined
+// behaviour and a message that says what is wrong and what to do; the
+// pipeline keeps running. Rows tested elsewhere: no solid, open mesh,
+// self-intersecting mesh, unsupported function, unbounded solid, tolerance
+// <= 0, depth limit, coincident faces (TestFilterErrors.cxx); tangential
+// contact (Core: Subdivision.TangentialContact...).
+#include "FilterTestHelpers.h"
+
+#include "vtkCellArray.h"
+#include "vtkLineSource.h"
+#include "vtkPoints.h"
+#include "vtkSphereSource.h"
+#include "vtkTransform.h"
+#include "vtkTransformPolyDataFilter.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+using tpctest::FilterResult;
+using tpctest::MessageRecorder;
+
+namespace
+{
+vtkSmartPointer<vtkPolyData> Sphere()
+{
+  vtkNew<vtkSphereSource> s;
+  s->SetThetaResolution(16);
+  s->SetPhiResolution(12);
+  s->Update();
+  return s->GetOutput();
+}
+
+/// The sphere's triangles rebuilt from `ids` (each triangle's point ids,
+/// possibly edited) over `points`.
+vtkSmartPointer<vtkPolyData> Rebuilt(vtkPoints* points, const std::vector<std::array<vtkIdType, 3>>& ids)
+{
+  vtkNew<vtkCellArray> polys;
+  for (const auto& t : ids)
+  {
+    polys->InsertNextCell(3, t.data());
+  }
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->SetPoints(points);
+  out->SetPolys(polys);
+  return out;
+}
+
+std::vector<std::array<vtkIdType, 3>> Triangles(vtkPolyData* mesh)
+{
+  std::vector<std::array<vtkIdType, 3>> ids;
+  vtkCellArray* polys = mesh->GetPolys();
+  vtkIdType n;
+  const vtkIdType* p;
+  for (polys->InitTraversal(); polys->GetNextCell(n, p);)
+  {
+    ids.push_back({ p[0], p[1], p[2] });
+  }
+  return ids;
+}
+
+struct Outcome
+{
+  FilterResult Result;
+  std::string Errors, Warnings;
+};
+
+Outcome Contour(vtkPolyData* mesh, double tolerance = 0.05)
+{
+  vtkNew<vtkTopologyPreservingContour> f;
+  f->AddInputData(mesh);
+  f->SetTolerance(tolerance);
+  MessageRecorder messages(f);
+  Outcome o;
+  o.Result = tpctest::Run(f);
+  o.Errors = messages.Errors;
+  o.Warnings = messages.Warnings;
+  return o;
+}
+
+bool Empty(const Outcome& o)
+{
+  return o.Result.Surface->GetNumberOfPoints() == 0 && o.Result.Grid->GetNumberOfCells() == 0;
+}
+} // namespace
+
+TEST(BadInputs, EmptyMeshIsIgnoredWithAWarning)
+{
+  vtkNew<vtkPolyData> empty;
+  const Outcome o = Contour(empty);
+  EXPECT_NE(o.Warnings.find("Input 0 is empty"), std::string::npos) << o.Warnings;
+  EXPECT_NE(o.Errors.find("No solid to contour"), std::string::npos) << o.Errors;
+  EXPECT_TRUE(Empty(o));
+}
+
+TEST(BadInputs, NonFiniteCoordinatesAreRefused)
+{
+  for (const double bad : { std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity() })
+  {
+    vtkSmartPointer<vtkPolyData> mesh = Sphere();
+    mesh->GetPoints()->SetPoint(3, bad, 0.0, 0.0);
+    const Outcome o = Contour(mesh);
+    EXPECT_NE(o.Errors.find("non-finite coordinate"), std::string::npos) << o.Errors;
+    EXPECT_TRUE(Empty(o));
+  }
+}
+
+TEST(BadInputs, LinesAndVerticesAloneAreRefused)
+{
+  vtkNew<vtkLineSource> line;
+  line->Update();
+  const Outcome o = Contour(line->GetOutput());
+  EXPECT_NE(o.Errors.find("no polygons"), std::string::npos) << o.Errors;
+  EXPECT_TRUE(Empty(o));
+}
+
+TEST(BadInputs, InvertedAndInconsistentOrientationIsRepaired)
+{
+  vtkSmartPointer<vtkPolyData> sphere = Sphere();
+  std::vector<std::array<vtkIdType, 3>> inverted = Triangles(sphere);
+  for (auto& t : inverted)
+  {
+    std::swap(t[0], t[1]);
+  }
+  const Outcome a = Contour(Rebuilt(sphere->GetPoints(), inverted));
+  EXPECT_NE(a.Warnings.find("turned to face outward"), std::string::npos) << a.Warnings;
+  EXPECT_EQ(a.Result.Guaranteed, 1);
+  EXPECT_EQ(a.Result.Genus, 0);
+
+  std::vector<std::array<vtkIdType, 3>> mixed = Triangles(sphere);
+  std::swap(mixed[5][0], mixed[5][1]);
+  const Outcome b = Contour(Rebuilt(sphere->GetPoints(), mixed));
+  EXPECT_NE(b.Warnings.find("inconsistent orientation repaired"), std::string::npos) << b.Warnings;
+  EXPECT_EQ(b.Result.Guaranteed, 1);
+}
+
+TEST(BadInputs, DuplicateVerticesDegenerateAndDuplicateTrianglesAreRepaired)
+{
+  // Every triangle with its own three points (an STL-like soup), plus a
+  // triangle repeating a vertex and a repeated triangle.
+  vtkSmartPointer<vtkPolyData> sphere = Sphere();
+  vtkNew<vtkPoints> soup;
+  std::vector<std::array<vtkIdType, 3>> ids;
+  for (const auto& t : Triangles(sphere))
+  {
+    std::array<vtkIdType, 3> own;
+    for (int k = 0; k < 3; ++k)
+    {
+      own[k] = soup->InsertNextPoint(sphere->GetPoint(t[k]));
+    }
+    ids.push_back(own);
+  }
+  ids.push_back({ ids[0][0], ids[0][0], ids[0][1] });
+  ids.push_back(ids[7]);
+  const Outcome o = Contour(Rebuilt(soup, ids));
+  EXPECT_NE(o.Warnings.find("duplicate vertices merged"), std::string::npos) << o.Warnings;
+  EXPECT_NE(o.Warnings.find("degenerate"), std::string::npos) << o.Warnings;
+  EXPECT_NE(o.Warnings.find("duplicate triangles"), std::string::npos) << o.Warnings;
+  EXPECT_TRUE(o.Errors.empty()) << o.Errors;
+  EXPECT_EQ(o.Result.Guaranteed, 1);
+  EXPECT_EQ(o.Result.Components, 1);
+  EXPECT_EQ(o.Result.Genus, 0);
+}
+
+TEST(BadInputs, NonManifoldEdgesAreComputedWithoutGuarantee)
+{
+  // Two tetrahedra sharing one edge: four triangles on that edge.
+  vtkNew<vtkPoints> p;
+  for (const auto& q : { std::array<double, 3>{ 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 0, 0, -1 },
+         { 1, 1, -1 } })
+  {
+    p->InsertNextPoint(q.data());
+  }
+  const Outcome o = Contour(Rebuilt(p, { { 0, 2, 1 }, { 0, 1, 3 }, { 1, 2, 3 }, { 0, 3, 2 }, { 0, 1, 4 },
+                                          { 1, 5, 4 }, { 0, 4, 5 }, { 0, 5, 1 } }));
+  EXPECT_NE(o.Warnings.find("non-manifold edges"), std::string::npos) << o.Warnings;
+  EXPECT_NE(o.Warnings.find("TopologyGuaranteed will be 0"), std::string::npos) << o.Warnings;
+  EXPECT_EQ(o.Result.Guaranteed, 0);
+  const tpctest::IndependentTopology t = tpctest::Measure(o.Result.Surface);
+  EXPECT_EQ(t.BoundaryEdges, 0);
+  EXPECT_EQ(t.NonManifoldEdges, 0);
+}
+
+TEST(BadInputs, HugeAndTinyCoordinatesGiveTheSameAnswer)
+{
+  for (const double scale : { 1e-9, 1e9 })
+  {
+    vtkNew<vtkTransform> t;
+    t->Translate(3 * scale, -2 * scale, scale);
+    t->Scale(scale, scale, scale);
+    vtkNew<vtkTransformPolyDataFilter> scaled;
+    scaled->SetTransform(t);
+    scaled->SetInputData(Sphere());
+    scaled->Update();
+    const Outcome o = Contour(scaled->GetOutput());
+    EXPECT_TRUE(o.Errors.empty()) << o.Errors;
+    EXPECT_EQ(o.Result.Guaranteed, 1) << scale;
+    EXPECT_EQ(o.Result.Components, 1) << scale;
+    EXPECT_EQ(o.Result.Genus, 0) << scale;
+    EXPECT_LE(o.Result.HausdorffBound, o.Result.Tolerance * (1 + 1e-9)) << scale;
+    EXPECT_GT(o.Result.Tolerance, 0.01 * scale) << scale;
+  }
+}
+
+TEST(BadInputs, ToleranceLargerThanTheDomainGivesACoarseClosedSurface)
+{
+  const Outcome o = Contour(Sphere(), 5.0);
+  EXPECT_TRUE(o.Errors.empty()) << o.Errors;
+  EXPECT_EQ(o.Result.Guaranteed, 1);
+  EXPECT_EQ(o.Result.Components, 1);
+  EXPECT_EQ(o.Result.Genus, 0);
+}
+
+TEST(BadInputs, AbsurdMaximumDepthIsClamped)
+{
+  vtkNew<vtkTopologyPreservingContour> f;
+  f->SetMaximumDepth(1000);
+  EXPECT_LE(f->GetMaximumDepth(), 19);
+  f->SetMaximumDepth(-3);
+  EXPECT_GE(f->GetMaximumDepth(), 0);
+  f->AddInputData(Sphere());
+  f->SetTolerance(0.05);
+  f->SetMaximumDepth(1000);
+  const FilterResult r = tpctest::Run(f);
+  EXPECT_EQ(r.Guaranteed, 1);
+  EXPECT_EQ(r.Genus, 0);
+}
