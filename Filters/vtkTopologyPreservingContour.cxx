@@ -220,12 +220,7 @@ int vtkTopologyPreservingContour::RequestData(
       const bool oneSubtracted = this->Operation == DIFFERENCE && a == 0; // (the first mesh is the minuend)
       const tpc::MeshSolid& ma = scene.Primitives.Meshes[a];
       const tpc::MeshSolid& mb = scene.Primitives.Meshes[b];
-      bool apart = false;
-      for (int k = 0; k < 3; ++k)
-      {
-        apart = apart || ma.Bounds().lo[k] > mb.Bounds().hi[k] || mb.Bounds().lo[k] > ma.Bounds().hi[k];
-      }
-      const std::size_t touching = apart
+      const std::size_t touching = !ma.Bounds().Overlaps(mb.Bounds())
         ? 0
         : tpc::CountCoincidentFaces(
             ma.Points(), ma.Triangles(), mb.Points(), mb.Triangles(), !oneSubtracted, 100, ParallelForSMP);

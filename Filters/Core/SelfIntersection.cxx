@@ -315,12 +315,7 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> CandidatePairs(
       for (std::size_t q = p + 1; q < j; ++q)
       {
         const std::uint32_t t1 = entries[p].second, t2 = entries[q].second;
-        bool apart = false;
-        for (int a = 0; a < 3 && !apart; ++a)
-        {
-          apart = boxes[t1].lo[a] > boxes[t2].hi[a] || boxes[t2].lo[a] > boxes[t1].hi[a];
-        }
-        if (!apart)
+        if (boxes[t1].Overlaps(boxes[t2]))
         {
           pairs.emplace_back(std::min(t1, t2), std::max(t1, t2));
         }

@@ -494,7 +494,8 @@ ExtractionResult ExtractSurface(
       const OctreeNode& node = tree.Nodes[cells[i]];
       const Box3 box = grid.CellBox(node.Level, node.Ijk);
       const int shift = grid.MaxDepth - node.Level;
-      const std::uint32_t base[3] = { node.Ijk[0] << shift, node.Ijk[1] << shift, node.Ijk[2] << shift };
+      std::uint32_t base[3];
+      CornerLattice(grid, node, 0, base);
       std::size_t offset = 0;
       for (const std::uint32_t size : loops[i].LoopSizes)
       {

@@ -75,6 +75,18 @@ struct Box3
     }
     return true;
   }
+  /// The closed boxes share at least a point.
+  bool Overlaps(const Box3& o) const
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      if (lo[a] > o.hi[a] || o.lo[a] > hi[a])
+      {
+        return false;
+      }
+    }
+    return true;
+  }
   Vec3 Clamp(const Vec3& p) const
   {
     return { std::clamp(p[0], lo[0], hi[0]), std::clamp(p[1], lo[1], hi[1]),
