@@ -25,10 +25,33 @@ struct Arrays
   vtkUnsignedCharArray* Failed;
 };
 
+/// Counts visited cells, asks `Progress` every 2^16 of them.
+struct VisitProgress
+{
+  const ProgressCallback& Progress;
+  std::size_t Total;
+  std::size_t Visited = 0;
+  bool Aborted = false;
+
+  bool Stop()
+  {
+    if (this->Progress && (++this->Visited & 0xFFFF) == 0)
+    {
+      this->Aborted = this->Aborted || this->Progress(static_cast<double>(this->Visited) / this->Total);
+    }
+    return this->Aborted;
+  }
+};
+
 /// `sizeReason`: why the parent was split, i.e. why this cell is this small.
 void Visit(const AdaptiveOctree& tree, std::size_t node, SplitReason sizeReason,
-  vtkHyperTreeGridNonOrientedCursor* cursor, const Arrays& arrays, std::vector<vtkIdType>& nodeToCell)
+  vtkHyperTreeGridNonOrientedCursor* cursor, const Arrays& arrays, std::vector<vtkIdType>& nodeToCell,
+  VisitProgress& progress)
 {
+  if (progress.Stop())
+  {
+    return;
+  }
   const OctreeNode& n = tree.Nodes[node];
   const vtkIdType id = cursor->GetGlobalNodeIndex();
   nodeToCell[node] = id;
@@ -46,14 +69,14 @@ void Visit(const AdaptiveOctree& tree, std::size_t node, SplitReason sizeReason,
   {
     // Our child c = x + 2y + 4z is also vtkHyperTree's child order.
     cursor->ToChild(static_cast<unsigned char>(c));
-    Visit(tree, static_cast<std::size_t>(n.FirstChild + c), n.Reason, cursor, arrays, nodeToCell);
+    Visit(tree, static_cast<std::size_t>(n.FirstChild + c), n.Reason, cursor, arrays, nodeToCell, progress);
     cursor->ToParent();
   }
 }
 } // namespace
 
-void ConvertOctree(
-  const AdaptiveOctree& tree, vtkHyperTreeGrid* grid, std::vector<vtkIdType>& nodeToCell)
+bool ConvertOctree(const AdaptiveOctree& tree, vtkHyperTreeGrid* grid, std::vector<vtkIdType>& nodeToCell,
+  const ProgressCallback& progress)
 {
   const RootGrid& g = tree.Grid;
   grid->Initialize();
@@ -83,14 +106,15 @@ void ConvertOctree(
 
   vtkNew<vtkHyperTreeGridNonOrientedCursor> cursor;
   vtkIdType offset = 0;
-  for (int t = 0; t < g.TreeCount(); ++t)
+  VisitProgress visits{ progress, tree.Nodes.size() };
+  for (int t = 0; t < g.TreeCount() && !visits.Aborted; ++t)
   {
     const OctreeNode& root = tree.Nodes[static_cast<std::size_t>(t)];
     vtkIdType index = 0;
     grid->GetIndexFromLevelZeroCoordinates(index, root.Ijk[0], root.Ijk[1], root.Ijk[2]);
     grid->InitializeNonOrientedCursor(cursor, index, true);
     cursor->SetGlobalIndexStart(offset);
-    Visit(tree, static_cast<std::size_t>(t), SplitReason::None, cursor, arrays, nodeToCell);
+    Visit(tree, static_cast<std::size_t>(t), SplitReason::None, cursor, arrays, nodeToCell, visits);
     offset += cursor->GetTree()->GetNumberOfVertices();
   }
   grid->GetCellData()->AddArray(depth);
@@ -117,6 +141,7 @@ void ConvertOctree(
   }
   grid->GetFieldData()->AddArray(reasonNames);
   grid->GetFieldData()->AddArray(stateNames);
+  return !visits.Aborted;
 }
 
 } // namespace vtkadapter

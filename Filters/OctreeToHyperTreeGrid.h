@@ -5,6 +5,7 @@
 #define OctreeToHyperTreeGrid_h
 
 #include "AdaptiveOctree.h"
+#include "Parallel.h"
 
 #include "vtkType.h"
 
@@ -18,9 +19,10 @@ namespace vtkadapter
 {
 
 /// Fills `grid`. `nodeToCell[n]` receives the HTG cell (global node) index of
-/// octree node n.
-void ConvertOctree(
-  const AdaptiveOctree& octree, vtkHyperTreeGrid* grid, std::vector<vtkIdType>& nodeToCell);
+/// octree node n. Reports progress every 2^16 cells; returns false (with
+/// `grid` incomplete) when it asks to abort.
+bool ConvertOctree(const AdaptiveOctree& octree, vtkHyperTreeGrid* grid, std::vector<vtkIdType>& nodeToCell,
+  const ProgressCallback& progress = nullptr);
 
 } // namespace vtkadapter
 } // namespace tpc

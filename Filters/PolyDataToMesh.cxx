@@ -14,7 +14,8 @@ namespace tpc
 namespace vtkadapter
 {
 
-bool ConvertPolyData(vtkPolyData* input, MeshInput& mesh, std::string& error, const ParallelFor& parallelFor)
+bool ConvertPolyData(vtkPolyData* input, MeshInput& mesh, std::string& error, const ParallelFor& parallelFor,
+  const ProgressCallback& progress)
 {
   mesh.IgnoredLines = input->GetLines() ? static_cast<std::size_t>(input->GetLines()->GetNumberOfCells()) : 0;
   mesh.IgnoredVertices = input->GetVerts() ? static_cast<std::size_t>(input->GetVerts()->GetNumberOfCells()) : 0;
@@ -62,7 +63,7 @@ bool ConvertPolyData(vtkPolyData* input, MeshInput& mesh, std::string& error, co
         static_cast<std::uint32_t>(ids[2]) });
     }
   }
-  mesh.Repair = RepairMesh(points, faces, true, 100, parallelFor);
+  mesh.Repair = RepairMesh(points, faces, true, 100, parallelFor, progress);
   mesh.Solid = MeshSolid(std::move(points), std::move(faces));
   return true;
 }

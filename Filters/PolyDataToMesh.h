@@ -23,10 +23,11 @@ struct MeshInput
   std::size_t IgnoredVertices = 0; ///< vertex cells
 };
 
-/// Converts and repairs. Returns false (with `error` set) when the data
+/// Converts and repairs (stopping early, with a partial result, when
+/// `progress` asks to abort). Returns false (with `error` set) when the data
 /// cannot describe a solid at all: no triangles, or non-finite coordinates.
 bool ConvertPolyData(vtkPolyData* input, MeshInput& mesh, std::string& error,
-  const ParallelFor& parallelFor = SequentialFor);
+  const ParallelFor& parallelFor = SequentialFor, const ProgressCallback& progress = nullptr);
 
 } // namespace vtkadapter
 } // namespace tpc

@@ -153,11 +153,29 @@ int vtkTopologyPreservingContour::RequestData(
     vtkErrorMacro("Output data objects are missing.");
     return 0;
   }
-  gridOut->Initialize();
-  surfaceOut->Initialize();
   Report report;
-  AddReport(gridOut, report);
-  AddReport(surfaceOut, report);
+  auto clearOutputs = [&]() {
+    gridOut->Initialize();
+    surfaceOut->Initialize();
+    AddReport(gridOut, Report());
+    AddReport(surfaceOut, Report());
+  };
+  clearOutputs();
+  // Progress over the stages: inputs [0, 0.1], subdivision [0.1, 0.85],
+  // extraction [0.85, 0.95], topology report and grid output [0.95, 1]. Every long loop reports
+  // in chunks, so Abort stops any stage within a chunk (a fraction of a
+  // second); the outputs are then empty.
+  auto stage = [this](double lo, double hi) -> tpc::ProgressCallback {
+    return [this, lo, hi](double f) {
+      this->UpdateProgress(lo + (hi - lo) * f);
+      return this->GetAbortExecute() != 0;
+    };
+  };
+  auto aborted = [&]() {
+    clearOutputs();
+    vtkWarningMacro("Aborted: outputs are empty.");
+    return 1;
+  };
 
   // The solids: one per mesh input, then the implicit function.
   tpc::ImplicitScene scene;
@@ -176,7 +194,13 @@ int vtkTopologyPreservingContour::RequestData(
       continue;
     }
     tpc::vtkadapter::MeshInput in;
-    if (!tpc::vtkadapter::ConvertPolyData(mesh, in, error, ParallelForSMP))
+    const bool converted = tpc::vtkadapter::ConvertPolyData(
+      mesh, in, error, ParallelForSMP, stage(0.08 * i / connections, 0.08 * (i + 1) / connections));
+    if (this->GetAbortExecute())
+    {
+      return aborted();
+    }
+    if (!converted)
     {
       vtkErrorMacro("Input " << i << " cannot be used as a solid: " << error << ".");
       return 1;
@@ -222,8 +246,12 @@ int vtkTopologyPreservingContour::RequestData(
       const tpc::MeshSolid& mb = scene.Primitives.Meshes[b];
       const std::size_t touching = !ma.Bounds().Overlaps(mb.Bounds())
         ? 0
-        : tpc::CountCoincidentFaces(
-            ma.Points(), ma.Triangles(), mb.Points(), mb.Triangles(), !oneSubtracted, 100, ParallelForSMP);
+        : tpc::CountCoincidentFaces(ma.Points(), ma.Triangles(), mb.Points(), mb.Triangles(), !oneSubtracted,
+            100, ParallelForSMP, stage(0.08, 0.1));
+      if (this->GetAbortExecute())
+      {
+        return aborted();
+      }
       if (touching > 0)
       {
         assumptionsMet = false;
@@ -378,27 +406,34 @@ int vtkTopologyPreservingContour::RequestData(
   // Another lattice placement usually resolves cells a first one leaves to
   // the depth limit (a crease a hair from a lattice plane); inputs violating
   // the method's assumptions are not worth the retries.
-  auto progress = [this](double f) {
-    this->UpdateProgress(0.85 * f);
-    return this->GetAbortExecute() != 0;
-  };
   tpc::PlacedSubdivision placed = tpc::RunOnBestLatticePlacement(scene, rootDomain, params,
-    assumptionsMet ? tpc::LatticePlacements : 1, ParallelForSMP, progress);
+    assumptionsMet ? tpc::LatticePlacements : 1, ParallelForSMP, stage(0.1, 0.85));
   if (placed.Result.Aborted)
   {
-    vtkWarningMacro("Aborted: outputs are empty.");
-    return 1;
+    return aborted();
   }
   const tpc::RootGrid& rootGrid = placed.Grid;
   const tpc::SubdivisionResult& sub = placed.Result;
   const int placementsTried = placed.PlacementsTried;
-  const tpc::ExtractionResult extraction = tpc::ExtractSurface(sub.Octree, scene, ParallelForSMP);
-  this->UpdateProgress(0.95);
-  const tpc::TopologyReport topo = tpc::ComputeTopologyReport(extraction.Mesh);
+  const tpc::ExtractionResult extraction =
+    tpc::ExtractSurface(sub.Octree, scene, ParallelForSMP, stage(0.85, 0.95));
+  if (extraction.Aborted)
+  {
+    return aborted();
+  }
+  const tpc::TopologyReport topo =
+    tpc::ComputeTopologyReport(extraction.Mesh, ParallelForSMP, stage(0.95, 0.97));
+  if (this->GetAbortExecute())
+  {
+    return aborted();
+  }
 
   // Grid output.
   std::vector<vtkIdType> nodeToCell;
-  tpc::vtkadapter::ConvertOctree(sub.Octree, gridOut, nodeToCell);
+  if (!tpc::vtkadapter::ConvertOctree(sub.Octree, gridOut, nodeToCell, stage(0.97, 1.0)))
+  {
+    return aborted();
+  }
 
   // Surface output.
   const tpc::TriangleMesh& mesh = extraction.Mesh;
@@ -454,17 +489,17 @@ int vtkTopologyPreservingContour::RequestData(
   {
     std::ostringstream why;
     why << "The topology guarantee does not hold: " << sub.UnresolvedCells
-        << " surface cell(s) were stopped by";
+        << " surface cell(s) were stopped";
     if (sub.DepthLimitReached)
     {
-      why << " MaximumDepth (" << params.MaximumDepth << ")";
+      why << " by MaximumDepth (" << params.MaximumDepth << ")";
     }
     if (sub.CellLimitReached)
     {
-      why << " MaximumNumberOfCells (" << this->MaximumNumberOfCells << ")";
+      why << " by MaximumNumberOfCells (" << this->MaximumNumberOfCells << ")";
     }
     why << " with a test still failing:";
-    for (int r = 1; r < 10; ++r)
+    for (int r = 1; r < tpc::SplitReasonCount; ++r)
     {
       if (sub.UnresolvedByReason[r] > 0)
       {
@@ -472,12 +507,29 @@ int vtkTopologyPreservingContour::RequestData(
             << sub.UnresolvedByReason[r] << ";";
       }
     }
+    if (sub.FacingSurfaceCells > 0)
+    {
+      why << " " << sub.FacingSurfaceCells
+          << " of them because two surfaces face each other there closer than the finest cell ("
+          << std::ldexp(rootGrid.RootSize, -std::min(params.MaximumDepth, rootGrid.MaxDepth))
+          << "): solids touching along a face, or a gap or slab thinner than that, which no "
+             "refinement separates (SplitReason 10, SURFACES_TOO_CLOSE);";
+    }
     if (placementsTried > 1)
     {
       why << " (best of " << placementsTried << " lattice placements tried);";
     }
-    why << " they are marked CellState=3 in the grid output. Tangential contact between "
-           "primitives never passes the tests; otherwise raise the limits.";
+    why << " they are marked CellState=3 in the grid output.";
+    if (sub.UnresolvedCells > sub.FacingSurfaceCells)
+    {
+      why << " Tangential contact between primitives never passes the tests; otherwise raise the "
+             "limits.";
+    }
+    if (sub.FacingSurfaceCells > 0)
+    {
+      why << " Overlap touching solids (or move them apart) by more than the finest cell; for a "
+             "real thin gap or slab, raise MaximumDepth.";
+    }
     if (extraction.InconsistentCells > 0)
     {
       why << " " << extraction.InconsistentCells << " cell(s) gave inconsistent loops.";

@@ -11,7 +11,8 @@ cd "$(dirname "$0")/.."
 # tools: GLPK is the tests' independent LP oracle, libcgal-demo holds the
 # real test meshes with known topology, OpenVDB (with the Boost part its CMake
 # module asks for) is the benchmark's baseline; clang with its libFuzzer and
-# sanitizer runtimes, and valgrind, check the core (scripts/test.sh).
+# sanitizer runtimes, and valgrind, check the core (scripts/test.sh);
+# openscad-testing-data holds broken STL files for the bad-input tests.
 packages=(
   paraview paraview-dev python3-paraview xvfb xauth
   qtbase5-dev qttools5-dev libqt5svg5-dev qtxmlpatterns5-dev-tools libutfcpp-dev
@@ -22,7 +23,7 @@ packages=(
   libavformat-dev libavcodec-dev libavutil-dev libswscale-dev libxt-dev libtbb-dev
   cmake ninja-build g++ libgtest-dev
   libglpk-dev libcgal-demo libopenvdb-dev libboost-iostreams-dev
-  clang libclang-rt-14-dev valgrind
+  clang libclang-rt-14-dev valgrind openscad-testing-data
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -7,6 +7,7 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkHyperTreeGrid.h"
 #include "vtkNew.h"
@@ -26,6 +27,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <sys/stat.h>
@@ -114,54 +116,6 @@ vtkSmartPointer<Reader> MakeReader(const std::string& file)
   return reader;
 }
 
-/// Reads one mesh, or returns null with `error` set.
-vtkSmartPointer<vtkPolyData> Read(const std::string& file, std::string& error)
-{
-  struct stat st;
-  if (stat(file.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
-  {
-    error = "cannot read '" + file + "': no such file";
-    return nullptr;
-  }
-  const std::string e = Extension(file);
-  vtkSmartPointer<vtkAlgorithm> reader;
-  if (e == "stl")
-  {
-    auto stl = MakeReader<vtkSTLReader>(file);
-    stl->MergingOn(); // STL repeats vertices per triangle
-    reader = stl;
-  }
-  else if (e == "obj")
-  {
-    reader = MakeReader<vtkOBJReader>(file);
-  }
-  else if (e == "ply")
-  {
-    reader = MakeReader<vtkPLYReader>(file);
-  }
-  else if (e == "vtp")
-  {
-    reader = MakeReader<vtkXMLPolyDataReader>(file);
-  }
-  else if (e == "off")
-  {
-    reader = MakeReader<vtkOFFReader>(file);
-  }
-  else
-  {
-    error = "'" + file + "': unknown format (expected .stl, .obj, .ply, .vtp or .off)";
-    return nullptr;
-  }
-  reader->Update();
-  auto* mesh = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
-  if (!mesh || mesh->GetNumberOfPolys() + mesh->GetNumberOfStrips() == 0)
-  {
-    error = "'" + file + "' holds no triangles (unreadable or empty)";
-    return nullptr;
-  }
-  return mesh;
-}
-
 /// Collects the filter's errors and warnings; draws the progress bar.
 struct Messages
 {
@@ -213,6 +167,94 @@ void OnEvent(vtkObject* caller, unsigned long event, void* clientData, void* cal
   {
     m->Warnings.push_back(text);
   }
+}
+
+/// Reads one mesh, or returns null with `error` set; the reader's warnings
+/// are added to `warnings`.
+vtkSmartPointer<vtkPolyData> Read(const std::string& file, std::string& error, std::vector<std::string>& warnings)
+{
+  struct stat st;
+  if (stat(file.c_str(), &st) != 0 || !S_ISREG(st.st_mode))
+  {
+    error = "cannot read '" + file + "': no such file";
+    return nullptr;
+  }
+  const std::string e = Extension(file);
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (e == "stl")
+  {
+    auto stl = MakeReader<vtkSTLReader>(file);
+    stl->MergingOn(); // STL repeats vertices per triangle
+    reader = stl;
+  }
+  else if (e == "obj")
+  {
+    reader = MakeReader<vtkOBJReader>(file);
+  }
+  else if (e == "ply")
+  {
+    reader = MakeReader<vtkPLYReader>(file);
+  }
+  else if (e == "vtp")
+  {
+    reader = MakeReader<vtkXMLPolyDataReader>(file);
+  }
+  else if (e == "off")
+  {
+    reader = MakeReader<vtkOFFReader>(file);
+  }
+  else
+  {
+    error = "'" + file + "': unknown format (expected .stl, .obj, .ply, .vtp or .off)";
+    return nullptr;
+  }
+  // The reader's own messages (a parse error and its line) say best what is
+  // wrong with a broken file; a file it complained about is refused whole
+  // (part of a mesh would be open or a different solid).
+  Messages messages;
+  vtkNew<vtkCallbackCommand> observer;
+  observer->SetCallback(&OnEvent);
+  observer->SetClientData(&messages);
+  for (vtkObject* source : { static_cast<vtkObject*>(reader), static_cast<vtkObject*>(reader->GetExecutive()) })
+  {
+    source->AddObserver(vtkCommand::ErrorEvent, observer);
+    source->AddObserver(vtkCommand::WarningEvent, observer);
+  }
+  reader->Update();
+  auto* mesh = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+  const std::size_t failure = messages.Errors.find("\nAlgorithm "); // the executive's echo
+  if (!messages.Errors.empty())
+  {
+    error = "cannot read '" + file + "': " + messages.Errors.substr(0, failure);
+    return nullptr;
+  }
+  if (!mesh || mesh->GetNumberOfPolys() + mesh->GetNumberOfStrips() == 0)
+  {
+    error = "'" + file + "' holds no triangles (empty, or no polygons in it)";
+    return nullptr;
+  }
+  for (const std::string& w : messages.Warnings)
+  {
+    warnings.push_back("reading '" + file + "': " + w);
+  }
+  return mesh;
+}
+
+
+/// The filter calls its inputs "Input k"; the user knows them by file name.
+std::string NameInputs(const std::string& text, const std::vector<std::string>& files)
+{
+  static const std::regex input(R"(\bInput (\d+)\b)");
+  std::string out;
+  std::size_t last = 0;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), input); it != std::sregex_iterator(); ++it)
+  {
+    const std::size_t k = std::stoul((*it)[1].str());
+    out += text.substr(last, static_cast<std::size_t>(it->position()) - last);
+    out += k < files.size() ? "'" + files[k] + "' (input " + std::to_string(k) + ")" : it->str();
+    last = static_cast<std::size_t>(it->position() + it->length());
+  }
+  return out + text.substr(last);
 }
 
 std::string JsonString(const std::string& s)
@@ -340,10 +382,11 @@ int main(int argc, char* argv[])
 
   vtkNew<vtkTopologyPreservingContour> filter;
   std::vector<vtkSmartPointer<vtkPolyData>> meshes;
+  std::vector<std::string> readWarnings;
   for (const std::string& file : o.Inputs)
   {
     std::string error;
-    vtkSmartPointer<vtkPolyData> mesh = Read(file, error);
+    vtkSmartPointer<vtkPolyData> mesh = Read(file, error, readWarnings);
     if (!mesh)
     {
       return Fail(error);
@@ -360,6 +403,7 @@ int main(int argc, char* argv[])
   filter->SetMaximumNumberOfCells(o.MaxCells);
 
   Messages messages;
+  messages.Warnings = readWarnings;
   messages.Bar = !o.Quiet && isatty(STDERR_FILENO);
   vtkNew<vtkCallbackCommand> observer;
   observer->SetCallback(&OnEvent);
@@ -374,6 +418,11 @@ int main(int argc, char* argv[])
   {
     std::fprintf(stderr, "\r%60s\r", "");
   }
+  for (std::string& w : messages.Warnings)
+  {
+    w = NameInputs(w, o.Inputs);
+  }
+  messages.Errors = NameInputs(messages.Errors, o.Inputs);
   if (!o.Quiet)
   {
     for (const std::string& w : messages.Warnings)

@@ -29,6 +29,8 @@ const char* SplitReasonName(SplitReason r)
       return "Hausdorff size";
     case SplitReason::LimitReached:
       return "limit reached";
+    case SplitReason::SurfacesTooClose:
+      return "surfaces too close";
   }
   return "unknown";
 }

@@ -154,7 +154,8 @@ double LatticeShiftPenalty(const LatticeCreases& creases, const Vec3& origin, co
 }
 
 std::vector<Vec3> RankLatticeShifts(const PrimitiveSet& primitives, const RootGrid& base,
-  double hausdorffTolerance, int maximumDepth, int count, const ParallelFor& parallelFor)
+  double hausdorffTolerance, int maximumDepth, int count, const ParallelFor& parallelFor,
+  const ProgressCallback& progress)
 {
   LatticeSpacings spacings;
   int level = 0;
@@ -175,7 +176,11 @@ std::vector<Vec3> RankLatticeShifts(const PrimitiveSet& primitives, const RootGr
   const Vec3 step(0.8191725134, 0.6710436067, 0.5497004779);
   std::vector<std::pair<double, Vec3>> ranked(
     static_cast<std::size_t>(primitives.Meshes.empty() ? std::max(0, std::min(count, Candidates)) : Candidates));
-  parallelFor(ranked.size(), [&](std::size_t begin, std::size_t end) {
+  if (progress && progress(0.1))
+  {
+    return {};
+  }
+  const bool done = ChunkedFor(ranked.size(), 8, parallelFor, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k)
     {
       Vec3 shift;
@@ -191,7 +196,11 @@ std::vector<Vec3> RankLatticeShifts(const PrimitiveSet& primitives, const RootGr
       }
       ranked[k] = { LatticeShiftPenalty(creases, origin, spacings), shift };
     }
-  });
+  }, ProgressRange(progress, 0.1, 1.0));
+  if (!done)
+  {
+    return {};
+  }
   std::stable_sort(ranked.begin(), ranked.end(),
     [](const auto& x, const auto& y) { return x.first < y.first; });
   std::vector<Vec3> shifts;

@@ -66,7 +66,9 @@ double LatticeShiftPenalty(const LatticeCreases& creases, const Vec3& origin, co
 /// Shifts (each component in [0, LatticeSpacings::Surface), to subtract from
 /// the origin of `base`) best first, at most `count`. The zero shift comes
 /// first among equals, so scenes without meshes keep MakeRootGrid's lattice.
+/// Stops early, returning no shift, when `progress` asks to abort.
 std::vector<Vec3> RankLatticeShifts(const PrimitiveSet& primitives, const RootGrid& base,
-  double hausdorffTolerance, int maximumDepth, int count, const ParallelFor& parallelFor = SequentialFor);
+  double hausdorffTolerance, int maximumDepth, int count, const ParallelFor& parallelFor = SequentialFor,
+  const ProgressCallback& progress = nullptr);
 
 } // namespace tpc

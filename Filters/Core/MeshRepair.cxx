@@ -297,25 +297,46 @@ void OrientOutward(const std::vector<Vec3>& P, std::vector<Triangle>& triangles,
 } // namespace
 
 MeshRepairReport RepairMesh(std::vector<Vec3>& points, std::vector<Triangle>& triangles,
-  bool checkSelfIntersections, std::size_t maxReported, const ParallelFor& parallelFor)
+  bool checkSelfIntersections, std::size_t maxReported, const ParallelFor& parallelFor,
+  const ProgressCallback& progress)
 {
+  // Progress after each step (a 1M-triangle mesh takes a few tenths of a
+  // second per step); the exact self-intersection test is most of the work.
+  auto stop = [&progress](double f) { return progress && progress(f); };
   MeshRepairReport r;
   r.InputTriangles = triangles.size();
   MergeCoincidentVertices(points, triangles, r);
+  if (stop(0.03))
+  {
+    return r;
+  }
   DropDegenerateAndDuplicates(points, triangles, r);
-  if (triangles.empty())
+  if (triangles.empty() || stop(0.06))
   {
     return r;
   }
   const std::vector<std::uint32_t> component = OrientConsistently(triangles, r);
+  if (stop(0.08))
+  {
+    return r;
+  }
   if (r.Orientable)
   {
     OrientOutward(points, triangles, component, r);
   }
+  if (stop(0.1))
+  {
+    return r;
+  }
   if (checkSelfIntersections)
   {
-    r.SelfIntersections = CountSelfIntersections(points, triangles, maxReported, parallelFor);
+    r.SelfIntersections =
+      CountSelfIntersections(points, triangles, maxReported, parallelFor, ProgressRange(progress, 0.1, 0.95));
     r.SelfIntersectionsChecked = true;
+    if (stop(0.95))
+    {
+      return r;
+    }
   }
   // Topology of the input surface.
   std::vector<bool> used(points.size(), false);

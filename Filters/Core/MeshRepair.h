@@ -56,6 +56,7 @@ struct MeshRepairReport
 /// (at most `maxReported` are counted).
 MeshRepairReport RepairMesh(std::vector<Vec3>& points,
   std::vector<std::array<std::uint32_t, 3>>& triangles, bool checkSelfIntersections = true,
-  std::size_t maxReported = 100, const ParallelFor& parallelFor = SequentialFor);
+  std::size_t maxReported = 100, const ParallelFor& parallelFor = SequentialFor,
+  const ProgressCallback& progress = nullptr);
 
 } // namespace tpc

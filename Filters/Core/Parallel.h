@@ -4,8 +4,10 @@
 // the number of threads.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <functional>
+#include <vector>
 
 namespace tpc
 {
@@ -23,7 +25,82 @@ inline void SequentialFor(
   }
 }
 
-/// Progress in [0, 1]; returning true requests an abort.
+/// Progress in [0, 1]; returning true requests an abort. Called on the
+/// calling thread only (VTK's UpdateProgress and its observers are not
+/// thread-safe). A core function asked to abort stops early and returns a
+/// partial result: the caller that asked discards it.
 using ProgressCallback = std::function<bool(double)>;
+
+/// `progress` restricted to [lo, hi] of the caller's range (null stays null).
+inline ProgressCallback ProgressRange(const ProgressCallback& progress, double lo, double hi)
+{
+  if (!progress)
+  {
+    return nullptr;
+  }
+  return [progress, lo, hi](double f) { return progress(lo + (hi - lo) * f); };
+}
+
+/// parallelFor over [0, count) in consecutive chunks of at most `chunk`
+/// items, reporting the fraction done after each chunk: a long loop stops
+/// within one chunk of an abort request instead of at its end. Returns false
+/// when aborted.
+inline bool ChunkedFor(std::size_t count, std::size_t chunk, const ParallelFor& parallelFor,
+  const std::function<void(std::size_t, std::size_t)>& body, const ProgressCallback& progress)
+{
+  if (!progress)
+  {
+    parallelFor(count, body);
+    return true;
+  }
+  for (std::size_t first = 0; first < count; first += chunk)
+  {
+    const std::size_t n = count - first < chunk ? count - first : chunk;
+    parallelFor(n, [&](std::size_t begin, std::size_t end) { body(first + begin, first + end); });
+    if (progress(static_cast<double>(first + n) / static_cast<double>(count)))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Sorts `v` by `less`: 64 blocks sorted in parallel, then merged pairwise
+/// in parallel rounds, reporting progress between them (a sequential sort of
+/// millions of records takes seconds without an abort check). Returns false,
+/// with `v` unsorted, when aborted.
+template <typename T, typename Less>
+bool ParallelSort(
+  std::vector<T>& v, const Less& less, const ParallelFor& parallelFor, const ProgressCallback& progress)
+{
+  constexpr std::size_t Blocks = 64; // a power of two: the merge rounds pair them up exactly
+  const std::size_t n = v.size();
+  auto at = [&](std::size_t block) { return v.begin() + static_cast<std::ptrdiff_t>(n * block / Blocks); };
+  if (!ChunkedFor(Blocks, 8, parallelFor, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t b = begin; b < end; ++b)
+        {
+          std::sort(at(b), at(b + 1), less);
+        }
+      }, ProgressRange(progress, 0.0, 0.6)))
+  {
+    return false;
+  }
+  double done = 0.6;
+  for (std::size_t width = 1; width < Blocks; width *= 2)
+  {
+    parallelFor(Blocks / (2 * width), [&](std::size_t begin, std::size_t end) {
+      for (std::size_t m = begin; m < end; ++m)
+      {
+        std::inplace_merge(at(2 * m * width), at((2 * m + 1) * width), at((2 * m + 2) * width), less);
+      }
+    });
+    done += 0.4 / 6.0;
+    if (progress && progress(done))
+    {
+      return false;
+    }
+  }
+  return true;
+}
 
 } // namespace tpc

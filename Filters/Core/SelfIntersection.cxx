@@ -229,9 +229,11 @@ namespace
 {
 /// Pairs of triangles whose bounding boxes overlap (each pair once, smaller
 /// index first): a uniform grid over the boxes.
-std::vector<std::pair<std::uint32_t, std::uint32_t>> CandidatePairs(
-  const std::vector<Vec3>& points, const std::vector<std::array<std::uint32_t, 3>>& triangles)
+std::vector<std::pair<std::uint32_t, std::uint32_t>> CandidatePairs(const std::vector<Vec3>& points,
+  const std::vector<std::array<std::uint32_t, 3>>& triangles, const ProgressCallback& progress)
 {
+  // (Progress between the phases; an abort returns no pairs.)
+  auto stop = [&progress](double f) { return progress && progress(f); };
   const std::size_t n = triangles.size();
   if (n < 2)
   {
@@ -301,7 +303,15 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> CandidatePairs(
       }
     }
   }
+  if (stop(0.1))
+  {
+    return {};
+  }
   std::sort(entries.begin(), entries.end());
+  if (stop(0.4))
+  {
+    return {};
+  }
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
   for (std::size_t i = 0; i < entries.size();)
   {
@@ -323,34 +333,48 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> CandidatePairs(
     }
     i = j;
   }
+  if (stop(0.6))
+  {
+    return {};
+  }
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   return pairs;
 }
 
 /// How many candidate pairs `accept` takes, counting at most `limit`: fixed
-/// blocks, each counting up to the limit, so the capped sum is
-/// min(total, limit) whatever the thread count.
+/// blocks of pairs, each counting up to the limit, so the capped sum is
+/// min(total, limit) whatever the thread count. Blocks run in chunks that
+/// report progress; counting stops once the limit is reached.
 template <typename Accept>
 std::size_t CountAccepted(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs,
-  std::size_t limit, const ParallelFor& parallelFor, const Accept& accept)
+  std::size_t limit, const ParallelFor& parallelFor, const ProgressCallback& progress, const Accept& accept)
 {
-  constexpr std::size_t Blocks = 64;
-  std::vector<std::size_t> found(Blocks, 0);
-  parallelFor(Blocks, [&](std::size_t begin, std::size_t end) {
+  constexpr std::size_t BlockSize = 4096, BlocksPerChunk = 8;
+  const std::size_t blocks = (pairs.size() + BlockSize - 1) / BlockSize;
+  std::vector<std::size_t> found(blocks, 0);
+  std::size_t total = 0, counted = 0;
+  ChunkedFor(blocks, BlocksPerChunk, parallelFor, [&](std::size_t begin, std::size_t end) {
     for (std::size_t b = begin; b < end; ++b)
     {
-      const std::size_t first = pairs.size() * b / Blocks, last = pairs.size() * (b + 1) / Blocks;
-      for (std::size_t i = first; i < last && found[b] < limit; ++i)
+      const std::size_t last = std::min(pairs.size(), (b + 1) * BlockSize);
+      for (std::size_t i = b * BlockSize; i < last && found[b] < limit; ++i)
       {
         found[b] += accept(pairs[i].first, pairs[i].second) ? 1 : 0;
       }
     }
+  }, [&](double f) {
+    // (Called between chunks, on the calling thread.)
+    const std::size_t done = std::min(blocks, static_cast<std::size_t>(f * blocks + 0.5));
+    for (; counted < done; ++counted)
+    {
+      total += found[counted];
+    }
+    return total >= limit || (progress && progress(f));
   });
-  std::size_t total = 0;
-  for (const std::size_t f : found)
+  for (; counted < blocks; ++counted)
   {
-    total += f;
+    total += found[counted];
   }
   return std::min(total, limit);
 }
@@ -358,16 +382,17 @@ std::size_t CountAccepted(const std::vector<std::pair<std::uint32_t, std::uint32
 
 std::size_t CountSelfIntersections(const std::vector<Vec3>& points,
   const std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t limit,
-  const ParallelFor& parallelFor)
+  const ParallelFor& parallelFor, const ProgressCallback& progress)
 {
-  return CountAccepted(CandidatePairs(points, triangles), limit, parallelFor,
+  return CountAccepted(CandidatePairs(points, triangles, ProgressRange(progress, 0.0, 0.2)), limit, parallelFor,
+    ProgressRange(progress, 0.2, 1.0),
     [&](std::uint32_t t1, std::uint32_t t2) { return MeetImproperly(points, triangles[t1], triangles[t2]); });
 }
 
 std::size_t CountCoincidentFaces(const std::vector<Vec3>& pointsA,
   const std::vector<std::array<std::uint32_t, 3>>& trianglesA, const std::vector<Vec3>& pointsB,
   const std::vector<std::array<std::uint32_t, 3>>& trianglesB, bool facingEachOther, std::size_t limit,
-  const ParallelFor& parallelFor)
+  const ParallelFor& parallelFor, const ProgressCallback& progress)
 {
   // Both meshes in one list, B's indices after A's.
   std::vector<Vec3> points = pointsA;
@@ -379,8 +404,8 @@ std::size_t CountCoincidentFaces(const std::vector<Vec3>& pointsA,
     triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
   }
   const auto fromA = static_cast<std::uint32_t>(trianglesA.size());
-  return CountAccepted(CandidatePairs(points, triangles), limit, parallelFor,
-    [&](std::uint32_t t1, std::uint32_t t2) {
+  return CountAccepted(CandidatePairs(points, triangles, ProgressRange(progress, 0.0, 0.2)), limit, parallelFor,
+    ProgressRange(progress, 0.2, 1.0), [&](std::uint32_t t1, std::uint32_t t2) {
       if ((t1 < fromA) == (t2 < fromA))
       {
         return false; // both from one mesh

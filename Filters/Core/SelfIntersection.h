@@ -19,10 +19,11 @@ namespace tpc
 
 /// Number of improperly meeting triangle pairs, counting at most `limit`
 /// (the candidate pairs are tested in parallel; the count does not depend on
-/// the number of threads).
+/// the number of threads). Both counts report progress over the candidate
+/// pairs and stop early when it asks to (Parallel.h).
 std::size_t CountSelfIntersections(const std::vector<Vec3>& points,
   const std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t limit = 100,
-  const ParallelFor& parallelFor = SequentialFor);
+  const ParallelFor& parallelFor = SequentialFor, const ProgressCallback& progress = nullptr);
 
 /// Number of triangle pairs, one from each mesh, that lie in one plane and
 /// meet (exact), with opposite windings (`facingEachOther`) or the same
@@ -34,7 +35,7 @@ std::size_t CountSelfIntersections(const std::vector<Vec3>& points,
 std::size_t CountCoincidentFaces(const std::vector<Vec3>& pointsA,
   const std::vector<std::array<std::uint32_t, 3>>& trianglesA, const std::vector<Vec3>& pointsB,
   const std::vector<std::array<std::uint32_t, 3>>& trianglesB, bool facingEachOther, std::size_t limit = 100,
-  const ParallelFor& parallelFor = SequentialFor);
+  const ParallelFor& parallelFor = SequentialFor, const ProgressCallback& progress = nullptr);
 
 /// Exact: do the closed triangles (a, b, c) and (d, e, f), which share no
 /// vertex, intersect?

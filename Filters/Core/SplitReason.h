@@ -20,8 +20,10 @@ enum class SplitReason : std::uint8_t
   NotStarShapedVoxel = 6, ///< no witness found for the solid restricted to the voxel
   NotStarShapedFace = 7,  ///< no witness found for the solid restricted to a face
   HausdorffSize = 8,      ///< cell on the surface larger than the tolerance allows
-  LimitReached = 9        ///< leaf kept because of MaximumDepth/MaximumNumberOfCells
+  LimitReached = 9,       ///< leaf kept because of MaximumDepth/MaximumNumberOfCells
                           ///< while a criterion still failed
+  SurfacesTooClose = 10   ///< leaf kept while a criterion failed: two surfaces face
+                          ///< each other closer than the finest cell throughout it
 };
 
 const char* SplitReasonName(SplitReason r);
@@ -38,7 +40,7 @@ enum class CellState : std::uint8_t
 const char* CellStateName(CellState s);
 
 /// One past the largest value of each enum (to list their names).
-constexpr int SplitReasonCount = 10;
+constexpr int SplitReasonCount = 11;
 constexpr int CellStateCount = 5;
 
 } // namespace tpc

@@ -35,9 +35,11 @@ struct ExtractionResult
   /// Cells whose boundary crossings did not close into loops (never expected;
   /// reported rather than hidden).
   std::size_t InconsistentCells = 0;
+  /// `progress` asked to stop: the mesh is incomplete.
+  bool Aborted = false;
 };
 
 ExtractionResult ExtractSurface(const AdaptiveOctree& octree, const ImplicitScene& scene,
-  const ParallelFor& parallelFor = SequentialFor);
+  const ParallelFor& parallelFor = SequentialFor, const ProgressCallback& progress = nullptr);
 
 } // namespace tpc

@@ -1,5 +1,6 @@
 #include "TopologyPreservingSubdivision.h"
 
+#include "FacingSurfaces.h"
 #include "LatticePlacement.h"
 #include "McCompatibilityTest.h"
 
@@ -142,11 +143,26 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
     }
   }
 
+  const double finestWidth = std::ldexp(grid.RootSize, -std::min(params.MaximumDepth, grid.MaxDepth));
   const int expectedLevels = std::max(1,
     static_cast<int>(std::ceil(std::log2(grid.RootSize * std::sqrt(3.0) / params.HausdorffTolerance))) + 3);
 
+  // Long loops run in chunks reporting progress, so that an abort request
+  // stops them within a chunk (Parallel.h).
+  constexpr std::size_t Chunk = 4096;
   for (int level = 0; !active.empty(); ++level)
   {
+    // Within a level: corner signs [0, 0.2] (gather, sort, evaluate), tests [0.2, 0.7], verdicts
+    // [0.7, 0.8], children [0.8, 1]; the sequential loops ask every 2^16 cells.
+    auto within = [&](double lo, double hi) -> ProgressCallback {
+      if (!progress)
+      {
+        return nullptr;
+      }
+      return [&progress, level, lo, hi, expectedLevels](double f) {
+        return progress(std::min(0.95, (level + lo + (hi - lo) * f) / expectedLevels));
+      };
+    };
     if (progress && progress(std::min(0.95, static_cast<double>(level) / expectedLevels)))
     {
       result.Aborted = true;
@@ -159,7 +175,7 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
     // buckets by key; each bucket is sorted and deduplicated on its own.
     constexpr std::size_t Blocks = 64, Buckets = 64;
     std::vector<std::vector<std::pair<PointKey, std::uint32_t>>> parts(Blocks * Buckets);
-    parallelFor(Blocks, [&](std::size_t begin, std::size_t end) {
+    const bool gathered = ChunkedFor(Blocks, 8, parallelFor, [&](std::size_t begin, std::size_t end) {
       for (std::size_t b = begin; b < end; ++b)
       {
         for (std::size_t i = active.size() * b / Blocks; i < active.size() * (b + 1) / Blocks; ++i)
@@ -177,9 +193,9 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
           }
         }
       }
-    });
+    }, within(0.0, 0.05));
     std::vector<std::vector<std::pair<PointKey, std::uint32_t>>> buckets(Buckets);
-    parallelFor(Buckets, [&](std::size_t begin, std::size_t end) {
+    if (!gathered || !ChunkedFor(Buckets, 8, parallelFor, [&](std::size_t begin, std::size_t end) {
       for (std::size_t k = begin; k < end; ++k)
       {
         auto& bucket = buckets[k];
@@ -192,32 +208,69 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
                        [](const auto& x, const auto& y) { return x.first == y.first; }),
           bucket.end());
       }
-    });
+    }, within(0.05, 0.1)))
+    {
+      result.Aborted = true;
+      return result;
+    }
     std::vector<std::pair<PointKey, std::uint32_t>> pending;
     for (const auto& bucket : buckets)
     {
       pending.insert(pending.end(), bucket.begin(), bucket.end());
     }
+    auto stopAt = [&](double lo, std::size_t i) {
+      if ((i & 0xFFFF) != 0xFFFF || !progress || !within(lo, lo)(0.0))
+      {
+        return false;
+      }
+      result.Aborted = true;
+      return true;
+    };
+    if (stopAt(0.1, 0xFFFF))
+    {
+      return result;
+    }
     std::vector<std::uint8_t> inside(pending.size());
-    parallelFor(pending.size(), [&](std::size_t begin, std::size_t end) {
+    if (!ChunkedFor(pending.size(), 8 * Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i)
       {
         inside[i] = tree.Expressions[pending[i].second]->IsInside(grid.Point(pending[i].first), prims);
       }
-    });
+    }, within(0.1, 0.2)))
+    {
+      result.Aborted = true;
+      return result;
+    }
     for (std::size_t i = 0; i < pending.size(); ++i)
     {
       tree.Signs.Insert(pending[i].first, inside[i] != 0);
+      if (stopAt(0.2, i))
+      {
+        return result;
+      }
     }
 
-    // 2. The paper's tests on every cell of this level.
+    // 2. The paper's tests on every cell of this level. A failing cell as
+    // small as the tolerance asks, where two surfaces face each other closer
+    // than the finest cell allowed, is stopped (FacingSurfaces.h).
+    const bool toleranceSize = grid.CellDiagonal(level) <= params.HausdorffTolerance;
     std::vector<McCompatibility> verdicts(active.size());
-    parallelFor(active.size(), [&](std::size_t begin, std::size_t end) {
+    std::vector<std::uint8_t> facing(active.size(), 0);
+    if (!ChunkedFor(active.size(), Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i)
       {
         verdicts[i] = TestMcCompatibility(tree, active[i], prims, params.HausdorffTolerance);
+        if (toleranceSize && verdicts[i].Kind == McVerdict::Split)
+        {
+          facing[i] = HasFacingSurfaces(*tree.Expressions[active[i]], prims,
+            grid.CellBox(level, tree.Nodes[active[i]].Ijk), finestWidth);
+        }
       }
-    });
+    }, within(0.2, 0.7)))
+    {
+      result.Aborted = true;
+      return result;
+    }
 
     // 3. Apply verdicts; limits turn splits into unresolved leaves.
     std::size_t splits = 0;
@@ -228,12 +281,14 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
     const bool atDepthLimit = level >= std::min(params.MaximumDepth, grid.MaxDepth);
     const bool atCellLimit =
       !atDepthLimit && tree.Nodes.size() + 8 * splits > params.MaximumNumberOfCells;
-    result.DepthLimitReached |= atDepthLimit && splits > 0;
-    result.CellLimitReached |= atCellLimit && splits > 0;
 
     std::vector<std::uint32_t> parents;
     for (std::size_t i = 0; i < active.size(); ++i)
     {
+      if (stopAt(0.7, i))
+      {
+        return result;
+      }
       const std::uint32_t n = active[i];
       OctreeNode& node = tree.Nodes[n];
       const McCompatibility& v = verdicts[i];
@@ -259,10 +314,13 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
         node.State = StateOf(v.Sign);
         tree.Expressions[n].reset();
       }
-      else if (atDepthLimit || atCellLimit)
+      else if (atDepthLimit || atCellLimit || facing[i])
       {
         node.State = CellState::Unresolved;
-        node.Reason = SplitReason::LimitReached;
+        node.Reason = facing[i] ? SplitReason::SurfacesTooClose : SplitReason::LimitReached;
+        result.FacingSurfaceCells += facing[i];
+        result.DepthLimitReached |= atDepthLimit && !facing[i];
+        result.CellLimitReached |= atCellLimit && !facing[i];
         node.FailedTest = v.Reason;
         ++result.UnresolvedCells;
         result.HausdorffBound = std::max(result.HausdorffBound, grid.CellDiagonal(level));
@@ -285,7 +343,7 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
     {
       tree.Nodes[parents[i]].FirstChild = static_cast<std::int32_t>(first + 8 * i);
     }
-    parallelFor(parents.size(), [&](std::size_t begin, std::size_t end) {
+    const bool childrenDone = ChunkedFor(parents.size(), Chunk / 8, parallelFor, [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i)
       {
         const OctreeNode& parent = tree.Nodes[parents[i]];
@@ -312,7 +370,12 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
           }
         }
       }
-    });
+    }, within(0.8, 1.0));
+    if (!childrenDone)
+    {
+      result.Aborted = true;
+      return result;
+    }
     active.clear();
     for (std::size_t i = 0; i < parents.size(); ++i)
     {
@@ -339,10 +402,21 @@ PlacedSubdivision RunOnBestLatticePlacement(const ImplicitScene& scene, const Bo
   const SubdivisionParameters& parameters, int maximumPlacements, const ParallelFor& parallelFor,
   const ProgressCallback& progress)
 {
+  PlacedSubdivision best;
+  if (progress && progress(0.0))
+  {
+    best.Result.Aborted = true;
+    return best;
+  }
   const RootGrid base = MakeRootGrid(domain, parameters.HausdorffTolerance, parameters.MaximumDepth);
   const std::vector<Vec3> shifts = RankLatticeShifts(scene.Primitives, base, parameters.HausdorffTolerance,
-    parameters.MaximumDepth, std::max(1, maximumPlacements), parallelFor);
-  PlacedSubdivision best;
+    parameters.MaximumDepth, std::max(1, maximumPlacements), parallelFor,
+    progress ? ProgressCallback([&progress](double) { return progress(0.0); }) : nullptr);
+  if (shifts.empty())
+  {
+    best.Result.Aborted = true;
+    return best;
+  }
   // Progress stays monotonic: the first placement (usually the only one)
   // reports over most of [0, 1], each retry over a share of what is left.
   double start = 0.0;
@@ -373,9 +447,25 @@ PlacedSubdivision RunOnBestLatticePlacement(const ImplicitScene& scene, const Bo
       run.UnresolvedCells < best.Result.UnresolvedCells)
     {
       best.Grid = grid;
-      best.Result = std::move(run);
+      std::swap(best.Result, run);
     }
-    if (best.Result.Aborted || best.Result.UnresolvedCells == 0 || best.Result.CellLimitReached)
+    // The run left over holds millions of expressions: freeing them takes
+    // about a second, so in chunks, each followed by an abort check.
+    auto& expressions = run.Octree.Expressions;
+    for (std::size_t first = 0; first < expressions.size(); first += 1 << 16)
+    {
+      const std::size_t last = std::min(expressions.size(), first + (1 << 16));
+      std::for_each(expressions.begin() + static_cast<std::ptrdiff_t>(first),
+        expressions.begin() + static_cast<std::ptrdiff_t>(last), [](CsgExpressionPtr& e) { e.reset(); });
+      if (progress && progress(start) && !best.Result.Aborted)
+      {
+        best.Result.Aborted = true;
+        return best;
+      }
+    }
+    // (Facing surfaces do not move away on another lattice.)
+    if (best.Result.Aborted || best.Result.UnresolvedCells == best.Result.FacingSurfaceCells ||
+      best.Result.CellLimitReached)
     {
       break;
     }

@@ -8,7 +8,9 @@
 // surface, not the volume. MaximumDepth and MaximumNumberOfCells only stop
 // runaway refinement (tangential contact never passes the tests, 5.3.3); cells
 // stopped by them are marked Unresolved and the result says the guarantee is
-// lost. Surface cells whose surface is a plane section stay as large as the
+// lost. So are cells where two surfaces face each other closer than the
+// finest cell (touching solids), once they are as small as the tolerance asks:
+// refining them grows like an area and never succeeds (FacingSurfaces.h). Surface cells whose surface is a plane section stay as large as the
 // tests allow (error-driven acceptance, PlanarCell.h).
 #pragma once
 
@@ -46,6 +48,9 @@ struct SubdivisionResult
   bool CellLimitReached = false;
   std::size_t SurfaceCells = 0;
   std::size_t UnresolvedCells = 0;
+  /// Of those, cells stopped because two surfaces face each other closer
+  /// than the finest cell there (FacingSurfaces.h).
+  std::size_t FacingSurfaceCells = 0;
   std::size_t RefinedFaces = 0; ///< faces sampled finer than their cell (FaceRefinement.h)
   /// Surface cells accepted larger than the tolerance as plane sections
   /// (PlanarCell.h).
@@ -57,8 +62,8 @@ struct SubdivisionResult
   double HausdorffBound = 0.0;
   /// Number of cells split for each SplitReason (and leaves left unresolved
   /// with that failing test, in UnresolvedByReason).
-  std::array<std::size_t, 10> SplitsByReason{};
-  std::array<std::size_t, 10> UnresolvedByReason{};
+  std::array<std::size_t, SplitReasonCount> SplitsByReason{};
+  std::array<std::size_t, SplitReasonCount> UnresolvedByReason{};
 };
 
 /// The level at which cells covering `domain` (its largest width, as the root

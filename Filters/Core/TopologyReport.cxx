@@ -30,8 +30,10 @@ struct UnionFind
 };
 } // namespace
 
-TopologyReport ComputeTopologyReport(const TriangleMesh& mesh)
+TopologyReport ComputeTopologyReport(
+  const TriangleMesh& mesh, const ParallelFor& parallelFor, const ProgressCallback& progress)
 {
+  auto stop = [&progress](double f) { return progress && progress(f); };
   TopologyReport r;
   const std::size_t nv = mesh.Points.size();
   std::vector<bool> used(nv, false);
@@ -45,6 +47,10 @@ TopologyReport ComputeTopologyReport(const TriangleMesh& mesh)
   UnionFind uf(nv);
   for (const auto& t : mesh.Triangles)
   {
+    if ((half.size() & 0xFFFFF) == 0 && stop(0.2 * static_cast<double>(half.size()) / (3.0 * mesh.Triangles.size())))
+    {
+      return r;
+    }
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
     {
       ++r.DegenerateTriangles;
@@ -70,7 +76,10 @@ TopologyReport ComputeTopologyReport(const TriangleMesh& mesh)
     const std::uint32_t lo = std::min(h.A, h.B), hi = std::max(h.A, h.B);
     edges.emplace_back((static_cast<std::uint64_t>(lo) << 32) | hi, h.A < h.B ? 1 : -1);
   }
-  std::sort(edges.begin(), edges.end());
+  if (!ParallelSort(edges, std::less<>(), parallelFor, ProgressRange(progress, 0.2, 0.6)))
+  {
+    return r;
+  }
   bool oriented = true;
   for (std::size_t i = 0; i < edges.size();)
   {
@@ -133,6 +142,10 @@ TopologyReport ComputeTopologyReport(const TriangleMesh& mesh)
     }
     for (std::size_t v = 0; v < nv; ++v)
     {
+      if ((v & 0x3FFFF) == 0 && stop(0.6 + 0.4 * static_cast<double>(v) / static_cast<double>(nv)))
+      {
+        return r;
+      }
       const std::uint32_t b = start[v], e = start[v + 1];
       if (b == e)
       {

@@ -5,6 +5,7 @@
 // consistently oriented, and outward (positive enclosed volume).
 #pragma once
 
+#include "Parallel.h"
 #include "TriangleMesh.h"
 
 #include <cstdint>
@@ -34,6 +35,10 @@ struct TopologyReport
   std::string ToString() const;
 };
 
-TopologyReport ComputeTopologyReport(const TriangleMesh& mesh);
+/// The edge sort runs in parallel; `progress` is asked between the steps
+/// and through the vertex links, and stops the count early (a partial
+/// report) when it asks to abort.
+TopologyReport ComputeTopologyReport(const TriangleMesh& mesh, const ParallelFor& parallelFor = SequentialFor,
+  const ProgressCallback& progress = nullptr);
 
 } // namespace tpc

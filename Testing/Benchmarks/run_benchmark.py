@@ -9,6 +9,7 @@ grows from epsilon to epsilon/2.
 
     python3 Testing/Benchmarks/run_benchmark.py            # the full run (~30 min)
     python3 Testing/Benchmarks/run_benchmark.py --quick    # 1/64 and 1/128 only
+    python3 Testing/Benchmarks/run_benchmark.py --limits   # memory budget and abort latency
     ... --scenes plate-ellipsoids --epsilons 64,128        # a subset
 
 The filter runs first; the others get its surface-cell edge as their spacing.
@@ -27,11 +28,32 @@ LABEL = {("tpc", 1): "filter, 1 thread", ("tpc", 2): "filter, 2 threads",
          ("vtk", 2): "VTK sample+FE, 2 thr", ("vdb", 2): "OpenVDB, 2 threads"}
 
 
-def run(program, meshes, method, scene, epsilon, threads, cell_size, timeout):
+# The memory budget the README documents: a run's peak memory grows by at
+# most this much over what the inputs take, for MaximumNumberOfCells = N.
+BUDGET_BASE_MIB = 100
+BUDGET_BYTES_PER_CELL = 600
+LIMITS = [1_000_000, 2_500_000, 5_000_000, 10_000_000]
+
+
+def budget_mib(max_cells):
+    return BUDGET_BASE_MIB + BUDGET_BYTES_PER_CELL * max_cells / 2**20
+
+
+# Abort requests at these fractions of the progress bar: inputs [0, 0.1],
+# subdivision [0.1, 0.85], extraction [0.85, 0.95], grid output [0.95, 1].
+ABORT_POINTS = [("inputs", 0.01), ("subdivision", 0.3), ("subdivision", 0.8), ("extraction", 0.9),
+                ("grid output", 0.96)]
+
+
+def run(program, meshes, method, scene, epsilon, threads, cell_size, timeout, max_cells=None, abort_at=None):
     cmd = [program, "--method", method, "--scene", scene, "--epsilon", repr(epsilon),
            "--threads", str(threads), "--meshes", meshes]
     if cell_size:
         cmd += ["--cell-size", repr(cell_size)]
+    if max_cells:
+        cmd += ["--max-cells", str(max_cells)]
+    if abort_at:
+        cmd += ["--abort-at", repr(abort_at)]
     if method == "tpc":
         # The lattice's deepest level: at 1/256 the default MaximumDepth (16)
         # stops a few cells that need more levels below the tolerance's.
@@ -85,6 +107,50 @@ def ratio(a, b, at_least=False):
     return (">" if at_least else "") + f"{a / b:.2f}"
 
 
+def limits(a):
+    """MaximumNumberOfCells bounds time and memory: armadillo at 1/2048 of its
+    diagonal needs tens of millions of cells; each run stops at the limit.
+    Prints each run's peak memory next to the documented budget."""
+    print("Machine:", machine())
+    print(f"\nLimits: armadillo at epsilon 1/2048, 2 threads; budget = {BUDGET_BASE_MIB} MiB + "
+          f"{BUDGET_BYTES_PER_CELL} bytes x MaximumNumberOfCells")
+    rows = [["MaximumNumberOfCells", "grid cells", "seconds", "peak MiB", "budget MiB", "bytes per cell",
+             "within budget"]]
+    over = []
+    for n in LIMITS:
+        r = run(a.program, a.meshes, "tpc", "armadillo", 1.0 / 2048, 2, None, 4 * 3600, max_cells=n)
+        if "error" in r:
+            rows.append([f"{n:,}", "-", "-", "-", f"{budget_mib(n):.0f}", "-", r["error"]])
+            over.append(n)
+            continue
+        within = r["peak_mib"] <= budget_mib(n) and r["grid_cells"] <= n
+        over += [] if within else [n]
+        rows.append([f"{n:,}", f"{r['grid_cells']:,}", f"{r['seconds']:.1f}", f"{r['peak_mib']:.0f}",
+                     f"{budget_mib(n):.0f}", f"{r['peak_mib'] * 2**20 / r['grid_cells']:.0f}",
+                     "yes" if within else "NO"])
+    table(rows)
+
+    print("\nAbort: armadillo at epsilon 1/1024, 2 threads; the longest time between two progress reports "
+          "(the filter checks Abort at each), then an abort requested at points of each stage")
+    r = run(a.program, a.meshes, "tpc", "armadillo", 1.0 / 1024, 2, None, 3600)
+    if "error" in r:
+        print("  run failed:", r["error"])
+        return 1
+    print(f"  whole run {r['seconds']:.1f} s, {r['grid_cells']:,} cells; longest gap between progress reports "
+          f"{r['longest_progress_gap_s']:.3f} s (from progress {r['longest_progress_gap_at']:.3f})")
+    rows = [["stage", "abort at", "seconds to the request", "latency s"]]
+    for stage, at in ABORT_POINTS:
+        r = run(a.program, a.meshes, "tpc", "armadillo", 1.0 / 1024, 2, None, 3600, abort_at=at)
+        ok = "error" not in r
+        rows.append([stage, f"{at:.2f}", f"{r['seconds'] - r['abort_latency_s']:.2f}" if ok else "-",
+                     f"{r['abort_latency_s']:.3f}" if ok else r["error"]])
+    table(rows)
+    if over:
+        print("\nOver the budget at MaximumNumberOfCells =", over)
+        return 1
+    return 0
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--program", default=os.path.join(HERE, "../../build/bin/tpc_benchmark"))
@@ -96,7 +162,11 @@ def main():
     parser.add_argument("--json", help="also write every run to this file")
     parser.add_argument("--time-limit", type=int, default=900,
                         help="seconds after which a VTK or OpenVDB run is stopped (reported as a lower bound)")
+    parser.add_argument("--limits", action="store_true",
+                        help="only the limits: memory vs MaximumNumberOfCells, abort latency (~3 min)")
     a = parser.parse_args()
+    if a.limits:
+        return limits(a)
     scenes = a.scenes.split(",")
     denominators = [int(d) for d in ("64,128" if a.quick else a.epsilons).split(",")]
     if a.smoke:

@@ -3,7 +3,7 @@
 // run_benchmark.py, runs every case and prints the tables.
 //
 //   tpc_benchmark --method tpc|vtk|vdb --scene NAME --epsilon E --threads N
-//                 --meshes DIR [--cell-size H] [--max-depth D]
+//                 --meshes DIR [--cell-size H] [--max-depth D] [--max-cells N] [--abort-at P]
 //
 // tpc: vtkTopologyPreservingContour, epsilon relative to the diagonal of
 //      the scene's domain (Bounds set to it);
@@ -20,7 +20,9 @@
 #include "TopologyReport.h"
 #include "TriangleMesh.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
+#include "vtkCommand.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCubeSource.h"
 #include "vtkDataArray.h"
@@ -54,6 +56,7 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -68,6 +71,36 @@ struct RunResult
   double SurfaceCellSize = 0.0; ///< tpc only
   long PlanarCells = 0;         ///< tpc only
   bool Guaranteed = false;      ///< tpc only
+  /// tpc only: the longest time between two progress reports (the filter
+  /// checks Abort at each), the progress it started from, and with
+  /// --abort-at the time from the abort request to the filter's return.
+  double LongestProgressGap = 0.0;
+  double LongestProgressGapAt = 0.0;
+  double AbortLatency = -1.0;
+};
+
+/// Records the filter's progress reports; requests an abort at `AbortAt`.
+struct ProgressWatch
+{
+  vtkAlgorithm* Filter = nullptr;
+  double AbortAt = 2.0;
+  Clock::time_point Start = Clock::now();
+  Clock::time_point AbortRequested;
+  bool Aborted = false;
+  std::vector<std::pair<double, double>> Reports; ///< (seconds, progress)
+
+  static void OnProgress(vtkObject*, unsigned long, void* clientData, void* callData)
+  {
+    auto* w = static_cast<ProgressWatch*>(clientData);
+    const double f = *static_cast<double*>(callData);
+    w->Reports.emplace_back(std::chrono::duration<double>(Clock::now() - w->Start).count(), f);
+    if (!w->Aborted && f >= w->AbortAt)
+    {
+      w->Aborted = true;
+      w->AbortRequested = Clock::now();
+      w->Filter->SetAbortExecute(1);
+    }
+  }
 };
 
 /// Resident memory now, in MiB.
@@ -118,9 +151,21 @@ double Diagonal(const std::array<double, 6>& b)
   return std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
 }
 
-RunResult RunFilter(const tpcbench::Scene& scene, double epsilon, int maximumDepth)
+RunResult RunFilter(
+  const tpcbench::Scene& scene, double epsilon, int maximumDepth, long long maximumCells, double abortAt)
 {
   vtkNew<vtkTopologyPreservingContour> filter;
+  ProgressWatch watch;
+  watch.Filter = filter;
+  watch.AbortAt = abortAt > 0.0 ? abortAt : 2.0;
+  vtkNew<vtkCallbackCommand> onProgress;
+  onProgress->SetCallback(&ProgressWatch::OnProgress);
+  onProgress->SetClientData(&watch);
+  filter->AddObserver(vtkCommand::ProgressEvent, onProgress);
+  if (maximumCells > 0)
+  {
+    filter->SetMaximumNumberOfCells(static_cast<vtkIdType>(maximumCells));
+  }
   for (const auto& mesh : scene.Meshes)
   {
     filter->AddInputData(mesh);
@@ -138,9 +183,28 @@ RunResult RunFilter(const tpcbench::Scene& scene, double epsilon, int maximumDep
     filter->SetMaximumDepth(maximumDepth);
   }
   const auto start = Clock::now();
+  watch.Start = start;
   filter->Update();
+  const auto end = Clock::now();
   RunResult r;
-  r.Seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  r.Seconds = std::chrono::duration<double>(end - start).count();
+  double last = 0.0, lastProgress = 0.0;
+  watch.Reports.emplace_back(r.Seconds, 1.0);
+  for (const auto& report : watch.Reports)
+  {
+    if (report.first - last > r.LongestProgressGap)
+    {
+      r.LongestProgressGap = report.first - last;
+      r.LongestProgressGapAt = lastProgress;
+    }
+    last = report.first;
+    lastProgress = report.second;
+  }
+  if (watch.Aborted)
+  {
+    r.AbortLatency = std::chrono::duration<double>(end - watch.AbortRequested).count();
+    return r;
+  }
   auto* surface = vtkPolyData::SafeDownCast(filter->GetOutputDataObject(1));
   auto* grid = vtkHyperTreeGrid::SafeDownCast(filter->GetOutputDataObject(0));
   r.Triangles = surface->GetNumberOfPolys();
@@ -285,7 +349,7 @@ int main(int argc, char* argv[])
     if (!args.count(required))
     {
       std::cerr << "usage: tpc_benchmark --method tpc|vtk|vdb --scene NAME --epsilon E --threads N "
-                   "--meshes DIR [--cell-size H] [--max-depth D]\n";
+                   "--meshes DIR [--cell-size H] [--max-depth D] [--max-cells N] [--abort-at P]\n";
       return 1;
     }
   }
@@ -304,7 +368,9 @@ int main(int argc, char* argv[])
     RunResult r;
     if (method == "tpc")
     {
-      r = RunFilter(scene, epsilon, args.count("--max-depth") ? std::stoi(args["--max-depth"]) : 0);
+      r = RunFilter(scene, epsilon, args.count("--max-depth") ? std::stoi(args["--max-depth"]) : 0,
+        args.count("--max-cells") ? std::stoll(args["--max-cells"]) : 0,
+        args.count("--abort-at") ? std::stod(args["--abort-at"]) : 0.0);
     }
     else if (method == "vtk")
     {
@@ -333,7 +399,10 @@ int main(int argc, char* argv[])
          << (closed && t.Components == scene.Components && t.Genus == scene.Genus ? "true" : "false")
          << ", \"cell_size\": " << (method == "tpc" ? r.SurfaceCellSize : h)
          << ", \"planar_cells\": " << r.PlanarCells
-         << ", \"guaranteed\": " << (r.Guaranteed ? "true" : "false") << "}";
+         << ", \"guaranteed\": " << (r.Guaranteed ? "true" : "false")
+         << ", \"longest_progress_gap_s\": " << r.LongestProgressGap
+         << ", \"longest_progress_gap_at\": " << r.LongestProgressGapAt
+         << ", \"abort_latency_s\": " << r.AbortLatency << "}";
     std::cout << json.str() << std::endl;
   }
   catch (const std::exception& e)

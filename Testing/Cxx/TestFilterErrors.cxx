@@ -221,6 +221,69 @@ TEST(FilterErrors, ProgressIsReportedAndAbortIsHonoured)
   }
 }
 
+TEST(FilterErrors, AbortIsHonouredAtEveryStage)
+{
+  // Progress: inputs [0, 0.1), subdivision [0.1, 0.85), extraction
+  // [0.85, 0.95), grid output [0.95, 1). An abort requested at a stage's
+  // first report stops the filter at the first check that sees it: at most
+  // one report follows besides the executive's final 1.0 (how long apart the
+  // checks are is measured by the benchmark: run_benchmark.py --limits).
+  vtkNew<vtkSphereSource> source;
+  source->SetThetaResolution(200);
+  source->SetPhiResolution(200);
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(source->GetOutputPort());
+  triangles->Update();
+  struct Watch
+  {
+    vtkTopologyPreservingContour* Filter = nullptr;
+    double From = 0.0, To = 1.0;
+    std::vector<double> Before, After;
+  };
+  auto onProgress = [](vtkObject*, unsigned long, void* clientData, void* callData) {
+    auto* w = static_cast<Watch*>(clientData);
+    const double f = *static_cast<double*>(callData);
+    if (w->Filter->GetAbortExecute())
+    {
+      w->After.push_back(f);
+      return;
+    }
+    w->Before.push_back(f);
+    if (f >= w->From && f < w->To)
+    {
+      w->Filter->SetAbortExecute(1);
+    }
+  };
+  const std::pair<double, double> stages[] = { { 0.0, 0.1 }, { 0.1, 0.85 }, { 0.85, 0.95 }, { 0.95, 1.0 } };
+  for (const auto& stage : stages)
+  {
+    vtkNew<vtkTopologyPreservingContour> f;
+    f->SetInputData(triangles->GetOutput());
+    f->SetTolerance(0.005);
+    Watch watch;
+    watch.Filter = f;
+    watch.From = stage.first;
+    watch.To = stage.second;
+    vtkNew<vtkCallbackCommand> cb;
+    cb->SetCallback(onProgress);
+    cb->SetClientData(&watch);
+    f->AddObserver(vtkCommand::ProgressEvent, cb);
+    MessageRecorder messages(f);
+    f->Update();
+    SCOPED_TRACE("stage [" + std::to_string(stage.first) + ", " + std::to_string(stage.second) + ")");
+    ASSERT_FALSE(watch.Before.empty());
+    EXPECT_GE(watch.Before.back(), stage.first) << "the stage reported progress";
+    EXPECT_LT(watch.Before.back(), stage.second);
+    // (A request made at the executive's own 0.0 report is seen at the
+    // filter's first check, which reports once.)
+    EXPECT_LE(std::count_if(watch.After.begin(), watch.After.end(), [](double p) { return p < 1.0; }), 1)
+      << watch.After.size() << " reports after the abort, the first " << watch.After.front();
+    EXPECT_NE(messages.Warnings.find("Aborted"), std::string::npos) << messages.Warnings;
+    EXPECT_EQ(f->GetSurfaceOutput()->GetNumberOfPoints(), 0);
+    EXPECT_EQ(f->GetGridOutput()->GetNumberOfCells(), 0);
+  }
+}
+
 TEST(FilterErrors, UnsupportedFunctionsAreRefused)
 {
   vtkNew<vtkSuperquadric> superquadric;
@@ -284,53 +347,143 @@ TEST(FilterErrors, NonPositiveToleranceIsRefused)
   EXPECT_EQ(f->GetSurfaceOutput()->GetNumberOfPoints(), 0);
 }
 
-TEST(FilterErrors, DepthLimitWarnsMarksCellsAndKeepsAClosedManifold)
+namespace
 {
-  // Two spheres 0.001 apart along the diagonal cannot be separated at depth
-  // 5 (no lattice plane separates them: whatever the lattice placement, it
-  // takes cells about the size of the gap).
+/// Two unit spheres 0.001 apart along the diagonal: whatever the lattice
+/// placement, separating them takes cells about the size of the gap.
+vtkSmartPointer<vtkImplicitBoolean> SpheresAThousandthApart()
+{
   const double c = 0.5005 / std::sqrt(3.0);
   vtkNew<vtkSphere> a, b;
   a->SetCenter(-c, -c, -c);
   a->SetRadius(0.5);
   b->SetCenter(c, c, c);
   b->SetRadius(0.5);
-  vtkNew<vtkImplicitBoolean> u;
+  auto u = vtkSmartPointer<vtkImplicitBoolean>::New();
   u->AddFunction(a);
   u->AddFunction(b);
+  return u;
+}
+
+/// Two vtkBox solids, united.
+vtkSmartPointer<vtkImplicitBoolean> TwoBoxes(const double a[6], const double b[6])
+{
+  vtkNew<vtkBox> first, second;
+  first->SetBounds(a);
+  second->SetBounds(b);
+  auto u = vtkSmartPointer<vtkImplicitBoolean>::New();
+  u->AddFunction(first);
+  u->AddFunction(second);
+  return u;
+}
+
+/// Number of grid cells in state 3 (unresolved); each must carry `reason`.
+int CountMarkedCells(vtkHyperTreeGrid* grid, int reason)
+{
+  auto* state = vtkUnsignedCharArray::SafeDownCast(grid->GetCellData()->GetArray("CellState"));
+  auto* split = vtkUnsignedCharArray::SafeDownCast(grid->GetCellData()->GetArray("SplitReason"));
+  EXPECT_TRUE(state && split);
+  int marked = 0;
+  for (vtkIdType i = 0; state && split && i < state->GetNumberOfTuples(); ++i)
+  {
+    if (state->GetValue(i) == 3)
+    {
+      EXPECT_EQ(split->GetValue(i), reason);
+      ++marked;
+    }
+  }
+  return marked;
+}
+
+/// A run some cells of which were stopped: no guarantee, every stopped cell
+/// marked with `reason`, and still a closed manifold surface.
+void ExpectStoppedCellsMarkedAndClosed(const FilterResult& r, int reason)
+{
+  EXPECT_EQ(r.Guaranteed, 0);
+  EXPECT_GT(r.Unresolved, 0);
+  EXPECT_EQ(CountMarkedCells(r.Grid, reason), r.Unresolved);
+  const tpctest::IndependentTopology t = tpctest::Measure(r.Surface);
+  EXPECT_EQ(t.BoundaryEdges, 0);
+  EXPECT_EQ(t.NonManifoldEdges, 0);
+}
+} // namespace
+
+TEST(FilterErrors, DepthLimitWarnsMarksCellsAndKeepsAClosedManifold)
+{
+  // MaximumDepth 5 stops the cells before they are as small as the tolerance
+  // (1/200 of the diagonal) asks.
   vtkNew<vtkTopologyPreservingContour> f;
-  f->SetImplicitFunction(u);
-  f->SetTolerance(0.05);
+  f->SetImplicitFunction(SpheresAThousandthApart());
+  f->SetTolerance(0.005);
   f->SetMaximumDepth(5);
   MessageRecorder messages(f);
   const FilterResult r = tpctest::Run(f);
   EXPECT_NE(messages.Warnings.find("guarantee does not hold"), std::string::npos) << messages.Warnings;
+  EXPECT_NE(messages.Warnings.find("MaximumDepth (5)"), std::string::npos) << messages.Warnings;
   EXPECT_NE(messages.Warnings.find("3 lattice placements"), std::string::npos) << messages.Warnings;
-  EXPECT_EQ(r.Guaranteed, 0);
-  EXPECT_GT(r.Unresolved, 0);
-  const tpctest::IndependentTopology t = tpctest::Measure(r.Surface);
-  EXPECT_EQ(t.BoundaryEdges, 0);
-  EXPECT_EQ(t.NonManifoldEdges, 0);
-
-  // The stopped cells are marked in the grid.
-  auto* state = vtkUnsignedCharArray::SafeDownCast(r.Grid->GetCellData()->GetArray("CellState"));
-  auto* reason = vtkUnsignedCharArray::SafeDownCast(r.Grid->GetCellData()->GetArray("SplitReason"));
-  ASSERT_NE(state, nullptr);
-  ASSERT_NE(reason, nullptr);
-  int marked = 0;
-  for (vtkIdType i = 0; i < state->GetNumberOfTuples(); ++i)
-  {
-    if (state->GetValue(i) == 3)
-    {
-      EXPECT_EQ(reason->GetValue(i), vtkTopologyPreservingContour::LIMIT_REACHED);
-      ++marked;
-    }
-  }
-  EXPECT_EQ(marked, r.Unresolved);
+  ExpectStoppedCellsMarkedAndClosed(r, vtkTopologyPreservingContour::LIMIT_REACHED);
 
   // Raising the limit resolves it.
   f->SetMaximumDepth(16);
   const FilterResult full = tpctest::Run(f);
   EXPECT_EQ(full.Guaranteed, 1);
   EXPECT_EQ(full.Components, 2);
+}
+
+TEST(FilterErrors, CellLimitWarnsMarksCellsAndKeepsAClosedManifold)
+{
+  // A sphere at 1/500 of the diagonal needs far more than 20 000 cells: the
+  // level that would pass the limit is not split, its cells are marked.
+  vtkNew<vtkSphere> sphere;
+  sphere->SetRadius(0.5);
+  vtkNew<vtkTopologyPreservingContour> f;
+  f->SetImplicitFunction(sphere);
+  f->SetTolerance(0.002);
+  f->SetMaximumNumberOfCells(20000);
+  MessageRecorder messages(f);
+  const FilterResult r = tpctest::Run(f);
+  EXPECT_NE(messages.Warnings.find("by MaximumNumberOfCells (20000)"), std::string::npos) << messages.Warnings;
+  EXPECT_EQ(messages.Warnings.find("lattice placements"), std::string::npos) << "no retry after the cell limit";
+  ExpectStoppedCellsMarkedAndClosed(r, vtkTopologyPreservingContour::LIMIT_REACHED);
+  EXPECT_LE(r.Grid->GetNumberOfCells(), 20000);
+  EXPECT_EQ(r.Components, 1);
+}
+
+TEST(FilterErrors, SurfacesCloserThanTheFinestCellStopAtTheToleranceSize)
+{
+  // Two boxes 0.005 apart: at MaximumDepth 6 the finest cell is ten times
+  // wider than the gap, so the cells across it stop as soon as they are as
+  // small as the tolerance asks, on one lattice placement (another cannot
+  // help); at MaximumDepth 16 the gap is resolved.
+  const double a[6] = { 0, 1, 0, 0.2, 0, 0.2 }, b[6] = { 1.005, 2, 0, 0.2, 0, 0.2 };
+  vtkNew<vtkTopologyPreservingContour> f;
+  f->SetImplicitFunction(TwoBoxes(a, b));
+  f->SetTolerance(0.05);
+  f->SetMaximumDepth(6);
+  MessageRecorder messages(f);
+  const FilterResult r = tpctest::Run(f);
+  EXPECT_NE(messages.Warnings.find("closer than the finest cell"), std::string::npos) << messages.Warnings;
+  EXPECT_NE(messages.Warnings.find("raise MaximumDepth"), std::string::npos) << messages.Warnings;
+  EXPECT_EQ(messages.Warnings.find("lattice placements"), std::string::npos) << messages.Warnings;
+  EXPECT_EQ(messages.Warnings.find("by MaximumDepth"), std::string::npos) << messages.Warnings;
+  ExpectStoppedCellsMarkedAndClosed(r, vtkTopologyPreservingContour::SURFACES_TOO_CLOSE);
+
+  f->SetMaximumDepth(16);
+  const FilterResult full = tpctest::Run(f);
+  EXPECT_EQ(full.Guaranteed, 1);
+  EXPECT_EQ(full.Components, 2);
+}
+
+TEST(FilterErrors, BoxesSharingAFaceStopQuicklyWithoutGuarantee)
+{
+  // Two vtkBox solids touching along a face: refining the contact grows like
+  // its area (half a minute at MaximumDepth 10, hours at the default 16).
+  const double a[6] = { 0, 1, 0, 1, 0, 1 }, b[6] = { 1, 2, 0, 1, 0, 1 };
+  vtkNew<vtkTopologyPreservingContour> f;
+  f->SetImplicitFunction(TwoBoxes(a, b));
+  MessageRecorder messages(f);
+  const FilterResult r = tpctest::Run(f);
+  EXPECT_NE(messages.Warnings.find("solids touching along a face"), std::string::npos) << messages.Warnings;
+  ExpectStoppedCellsMarkedAndClosed(r, vtkTopologyPreservingContour::SURFACES_TOO_CLOSE);
+  EXPECT_LT(r.Grid->GetNumberOfCells(), 100000);
 }
