@@ -6,6 +6,7 @@
 
 #include "BoundaryLoops.h"
 #include "CsgExpression.h"
+#include "ForestPartition.h"
 #include "LatticeSignTable.h"
 #include "RootGrid.h"
 #include "SplitReason.h"
@@ -65,6 +66,14 @@ class AdaptiveOctree
 {
 public:
   RootGrid Grid;
+  /// Role of each tree in a run split into pieces (ForestPartition.h);
+  /// empty: one piece, every tree its own.
+  std::vector<TreeRole> Roles;
+  TreeRole RoleOf(const OctreeNode& n) const
+  {
+    return this->Roles.empty() ? TreeRole::Own
+                               : this->Roles[static_cast<std::size_t>(TreeOf(this->Grid, n.Level, n.Ijk))];
+  }
   /// Roots first: node t is the root of tree t (t = i + Dims0 * (j + Dims1 * k)).
   std::vector<OctreeNode> Nodes;
   /// Pruned expression of each node that meets the surface (null elsewhere).

@@ -436,9 +436,13 @@ ExtractionResult ExtractSurface(const AdaptiveOctree& tree, const ImplicitScene&
       }
     }
   });
+  // In a piece of a split run, ghost cells take part in choosing each shared
+  // vertex's cell (as in the whole run) but give no triangles.
+  std::vector<std::uint8_t> own(cells.size());
   for (std::size_t i = 0; i < cells.size(); ++i)
   {
-    result.InconsistentCells += loops[i].Consistent ? 0 : 1;
+    own[i] = tree.RoleOf(tree.Nodes[cells[i]]) == TreeRole::Own;
+    result.InconsistentCells += loops[i].Consistent || !own[i] ? 0 : 1;
   }
   std::vector<std::vector<Record>> buckets(Buckets);
   if (!ChunkedFor(Buckets, 16, parallelFor, [&](std::size_t begin, std::size_t end) {
@@ -549,6 +553,10 @@ ExtractionResult ExtractSurface(const AdaptiveOctree& tree, const ImplicitScene&
     std::vector<unsigned> faces;
     for (std::size_t i = begin; i < end; ++i)
     {
+      if (!own[i])
+      {
+        continue;
+      }
       const OctreeNode& node = tree.Nodes[cells[i]];
       const Box3 box = grid.CellBox(node.Level, node.Ijk);
       const int shift = grid.MaxDepth - node.Level;
@@ -643,6 +651,38 @@ ExtractionResult ExtractSurface(const AdaptiveOctree& tree, const ImplicitScene&
   for (std::size_t v = crossings; v < mesh.Normals.size(); ++v)
   {
     mesh.Normals[v] = Normalized(mesh.Normals[v]);
+  }
+  if (!tree.Roles.empty())
+  {
+    // Only the vertices of own cells' triangles.
+    std::vector<std::uint32_t> index(mesh.Points.size(), UINT32_MAX);
+    for (const auto& t : mesh.Triangles)
+    {
+      for (const auto v : t)
+      {
+        index[v] = 0;
+      }
+    }
+    std::uint32_t kept = 0;
+    for (std::size_t v = 0; v < index.size(); ++v)
+    {
+      if (index[v] == 0)
+      {
+        index[v] = kept;
+        mesh.Points[kept] = mesh.Points[v];
+        mesh.Normals[kept] = mesh.Normals[v];
+        ++kept;
+      }
+    }
+    mesh.Points.resize(kept);
+    mesh.Normals.resize(kept);
+    for (auto& t : mesh.Triangles)
+    {
+      for (auto& v : t)
+      {
+        v = index[v];
+      }
+    }
   }
   return result;
 }

@@ -111,6 +111,7 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
   SubdivisionResult result;
   AdaptiveOctree& tree = result.Octree;
   tree.Grid = grid;
+  tree.Roles = params.TreeRoles;
   const auto& prims = scene.Primitives;
 
   // Roots.
@@ -125,7 +126,7 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
     n.Ijk[1] = static_cast<std::uint32_t>((t / grid.Dims[0]) % grid.Dims[1]);
     n.Ijk[2] = static_cast<std::uint32_t>(t / (grid.Dims[0] * grid.Dims[1]));
     n.Level = 0;
-    if (!scene.Expression)
+    if (!scene.Expression || tree.RoleOf(n) == TreeRole::Skipped)
     {
       n.State = CellState::Outside;
       continue;

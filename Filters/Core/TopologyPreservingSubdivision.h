@@ -38,6 +38,9 @@ struct SubdivisionParameters
   double HausdorffTolerance = 0.01;
   int MaximumDepth = 12;
   std::size_t MaximumNumberOfCells = 20000000;
+  /// A piece of a split run (ForestPartition.h): the role of each tree of
+  /// the root grid; skipped trees stay empty roots. Empty: every tree.
+  std::vector<TreeRole> TreeRoles;
 };
 
 struct SubdivisionResult
