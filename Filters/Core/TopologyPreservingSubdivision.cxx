@@ -1,6 +1,7 @@
 #include "TopologyPreservingSubdivision.h"
 
 #include "FacingSurfaces.h"
+#include "ForestPartition.h"
 #include "LatticePlacement.h"
 #include "McCompatibilityTest.h"
 
@@ -293,13 +294,15 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
       const std::uint32_t n = active[i];
       OctreeNode& node = tree.Nodes[n];
       const McCompatibility& v = verdicts[i];
+      // (A piece of a split run counts its own trees' cells only.)
+      const std::size_t mine = tree.RoleOf(node) == TreeRole::Own ? 1 : 0;
       if (v.Kind == McVerdict::Pass)
       {
         node.State = CellState::Surface;
-        ++result.SurfaceCells;
-        result.PlanarSurfaceCells += v.Planar ? 1 : 0;
+        result.SurfaceCells += mine;
+        result.PlanarSurfaceCells += v.Planar ? mine : 0;
         result.HausdorffBound = std::max(result.HausdorffBound,
-          grid.CellDiagonal(v.Planar ? grid.MaxDepth : level));
+          mine * grid.CellDiagonal(v.Planar ? grid.MaxDepth : level));
         for (const auto& s : v.NewSigns)
         {
           tree.Signs.Insert(s.first, s.second);
@@ -308,7 +311,7 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
         {
           tree.FaceRefinements.emplace(r.first, r.second); // the first one stays
         }
-        result.RefinedFaces += v.Refinements.size();
+        result.RefinedFaces += mine * v.Refinements.size();
       }
       else if (v.Kind == McVerdict::Constant)
       {
@@ -319,19 +322,19 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
       {
         node.State = CellState::Unresolved;
         node.Reason = facing[i] ? SplitReason::SurfacesTooClose : SplitReason::LimitReached;
-        result.FacingSurfaceCells += facing[i];
-        result.DepthLimitReached |= atDepthLimit && !facing[i];
-        result.CellLimitReached |= atCellLimit && !facing[i];
+        result.FacingSurfaceCells += mine * facing[i];
+        result.DepthLimitReached |= mine && atDepthLimit && !facing[i];
+        result.CellLimitReached |= mine && atCellLimit && !facing[i];
         node.FailedTest = v.Reason;
-        ++result.UnresolvedCells;
-        result.HausdorffBound = std::max(result.HausdorffBound, grid.CellDiagonal(level));
-        ++result.UnresolvedByReason[static_cast<int>(v.Reason)];
+        result.UnresolvedCells += mine;
+        result.HausdorffBound = std::max(result.HausdorffBound, mine * grid.CellDiagonal(level));
+        result.UnresolvedByReason[static_cast<int>(v.Reason)] += mine;
       }
       else
       {
         node.State = CellState::Refined;
         node.Reason = v.Reason;
-        ++result.SplitsByReason[static_cast<int>(v.Reason)];
+        result.SplitsByReason[static_cast<int>(v.Reason)] += mine;
         parents.push_back(n);
       }
     }
@@ -401,8 +404,21 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
 
 PlacedSubdivision RunOnBestLatticePlacement(const ImplicitScene& scene, const Box3& domain,
   const SubdivisionParameters& parameters, int maximumPlacements, const ParallelFor& parallelFor,
-  const ProgressCallback& progress)
+  const ProgressCallback& reportAndAsk, const PieceOfRun& piece)
 {
+  // A piece of a split run reports progress but stops only where every
+  // piece agrees (after a placement): the pieces' calls to Sum must match.
+  const bool split = piece.Pieces > 1;
+  bool abortAsked = false;
+  ProgressCallback progress = reportAndAsk;
+  if (split && reportAndAsk)
+  {
+    progress = [&reportAndAsk, &abortAsked](double f) {
+      abortAsked = reportAndAsk(f) || abortAsked;
+      return false;
+    };
+  }
+  auto sum = [&piece, split](std::size_t x) { return split ? piece.Sum(x) : x; };
   PlacedSubdivision best;
   if (progress && progress(0.0))
   {
@@ -441,13 +457,34 @@ PlacedSubdivision RunOnBestLatticePlacement(const ImplicitScene& scene, const Bo
         grid.Origin[a] -= shift[a];
       }
     }
+    SubdivisionParameters params = parameters;
+    if (split)
+    {
+      // Enough trees for every piece; the same finest cell as one piece.
+      int levels = 0;
+      while ((std::max({ grid.Dims[0], grid.Dims[1], grid.Dims[2] }) << levels) < 2 * piece.Pieces &&
+        levels < grid.MaxDepth)
+      {
+        ++levels;
+      }
+      grid = SplitRootCells(grid, levels, domain);
+      params.MaximumDepth = std::max(0, parameters.MaximumDepth - levels);
+      params.MaximumNumberOfCells = std::max<std::size_t>(8, parameters.MaximumNumberOfCells / piece.Pieces);
+      params.TreeRoles = TreeRoles(grid, PartitionTrees(grid, piece.Pieces), piece.Piece);
+    }
     SubdivisionResult run =
-      RunTopologyPreservingSubdivision(scene, grid, parameters, parallelFor, placementProgress);
+      RunTopologyPreservingSubdivision(scene, grid, params, parallelFor, placementProgress);
     ++best.PlacementsTried;
-    if (best.PlacementsTried == 1 || run.Aborted ||
-      run.UnresolvedCells < best.Result.UnresolvedCells)
+    // Decisions every piece takes alike.
+    const std::size_t unresolved = sum(run.UnresolvedCells);
+    const std::size_t facing = sum(run.FacingSurfaceCells);
+    const bool cellLimit = sum(run.CellLimitReached ? 1 : 0) > 0;
+    const bool aborted = sum(run.Aborted || abortAsked ? 1 : 0) > 0;
+    run.Aborted = aborted;
+    if (best.PlacementsTried == 1 || aborted || unresolved < best.UnresolvedCellsOfAllPieces)
     {
       best.Grid = grid;
+      best.UnresolvedCellsOfAllPieces = unresolved;
       std::swap(best.Result, run);
     }
     // The run left over holds millions of expressions: freeing them takes
@@ -465,8 +502,8 @@ PlacedSubdivision RunOnBestLatticePlacement(const ImplicitScene& scene, const Bo
       }
     }
     // (Facing surfaces do not move away on another lattice.)
-    if (best.Result.Aborted || best.Result.UnresolvedCells == best.Result.FacingSurfaceCells ||
-      best.Result.CellLimitReached)
+    if (aborted || best.UnresolvedCellsOfAllPieces == 0 ||
+      (best.UnresolvedCellsOfAllPieces == unresolved && unresolved == facing) || cellLimit)
     {
       break;
     }

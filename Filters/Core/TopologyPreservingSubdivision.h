@@ -20,6 +20,7 @@
 
 #include <array>
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace tpc
@@ -108,9 +109,27 @@ struct PlacedSubdivision
   RootGrid Grid;
   SubdivisionResult Result;
   int PlacementsTried = 0;
+  /// Unresolved cells of all pieces (= Result.UnresolvedCells for one piece).
+  std::size_t UnresolvedCellsOfAllPieces = 0;
 };
+
+/// One piece of a run split among processes (ForestPartition.h): the root
+/// cells are split so that the longest axis has at least two trees per
+/// piece, this piece subdivides its slab of trees and the ghost ring.
+/// Decisions that must agree (another lattice placement, stop) use `Sum`
+/// over the pieces, called the same number of times by every piece (an MPI
+/// all-reduce). An abort is honoured after a placement, when `Sum` says
+/// some piece asked for it, so that no piece is left waiting.
+struct PieceOfRun
+{
+  int Piece = 0;
+  int Pieces = 1;
+  std::function<std::size_t(std::size_t)> Sum;
+};
+
 PlacedSubdivision RunOnBestLatticePlacement(const ImplicitScene& scene, const Box3& domain,
   const SubdivisionParameters& parameters, int maximumPlacements = LatticePlacements,
-  const ParallelFor& parallelFor = SequentialFor, const ProgressCallback& progress = nullptr);
+  const ParallelFor& parallelFor = SequentialFor, const ProgressCallback& progress = nullptr,
+  const PieceOfRun& piece = PieceOfRun());
 
 } // namespace tpc

@@ -4,6 +4,7 @@
 #include "CoreContour.h"
 #include "ForestPartition.h"
 #include "MeshBuilders.h"
+#include "PieceTopology.h"
 #include "SceneBuilder.h"
 
 #include <gtest/gtest.h>
@@ -83,6 +84,7 @@ void ExpectPiecesFit(const tpc::ImplicitScene& scene, const Box3& bounds, double
 
   const std::vector<int> pieceOfTree = tpc::PartitionTrees(grid, pieces);
   std::vector<Triangle> merged;
+  std::vector<double> seams; // as each piece would send them
   for (int piece = 0; piece < pieces; ++piece)
   {
     tpc::SubdivisionParameters own = p;
@@ -95,7 +97,19 @@ void ExpectPiecesFit(const tpc::ImplicitScene& scene, const Box3& bounds, double
     EXPECT_GT(surface.Mesh.Triangles.size(), 0u) << "piece " << piece;
     const std::vector<Triangle> t = TrianglesByCoordinates(surface.Mesh);
     merged.insert(merged.end(), t.begin(), t.end());
+    const std::vector<double> sent = tpc::DescribePiece(surface.Mesh).Serialize();
+    seams.insert(seams.end(), sent.begin(), sent.end());
   }
+  // The report from the pieces' counts and seams alone.
+  const tpc::TopologyReport combined = tpc::CombinePieces(tpc::PieceSeams::DeserializeAll(seams));
+  EXPECT_TRUE(combined.Closed);
+  EXPECT_TRUE(combined.Manifold);
+  EXPECT_TRUE(combined.Oriented);
+  EXPECT_EQ(combined.Vertices, wholeTopology.Vertices);
+  EXPECT_EQ(combined.Edges, wholeTopology.Edges);
+  EXPECT_EQ(combined.EulerCharacteristic, wholeTopology.EulerCharacteristic);
+  EXPECT_EQ(combined.Components, wholeTopology.Components);
+  EXPECT_EQ(combined.Genus, wholeTopology.Genus);
   std::sort(merged.begin(), merged.end());
   EXPECT_TRUE(merged == TrianglesByCoordinates(wholeSurface.Mesh))
     << merged.size() << " triangles in the pieces, " << wholeSurface.Mesh.Triangles.size() << " in the whole run";
