@@ -110,6 +110,10 @@ bool ConvertOctree(const AdaptiveOctree& tree, vtkHyperTreeGrid* grid, std::vect
   for (int t = 0; t < g.TreeCount() && !visits.Aborted; ++t)
   {
     const OctreeNode& root = tree.Nodes[static_cast<std::size_t>(t)];
+    if (tree.RoleOf(root) != TreeRole::Own)
+    {
+      continue; // another piece's tree: absent here (a distributed grid)
+    }
     vtkIdType index = 0;
     grid->GetIndexFromLevelZeroCoordinates(index, root.Ijk[0], root.Ijk[1], root.Ijk[2]);
     grid->InitializeNonOrientedCursor(cursor, index, true);

@@ -22,8 +22,11 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkMultiProcessController.h"
 #include "vtkSMPTools.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 
+#include "PieceTopology.h"
 #include "SurfaceExtraction.h"
 #include "TopologyPreservingSubdivision.h"
 #include "TopologyReport.h"
@@ -135,6 +138,29 @@ vtkPolyData* vtkTopologyPreservingContour::GetSurfaceOutput()
 vtkTypeBool vtkTopologyPreservingContour::ProcessRequest(
   vtkInformation* request, vtkInformationVector** inInfo, vtkInformationVector* outInfo)
 {
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_INFORMATION()))
+  {
+    // Pieces are trees of the root grid (ForestPartition.h).
+    for (int i = 0; i < outInfo->GetNumberOfInformationObjects(); ++i)
+    {
+      outInfo->GetInformationObject(i)->Set(vtkAlgorithm::CAN_HANDLE_PIECE_REQUEST(), 1);
+    }
+    return 1;
+  }
+  if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT()))
+  {
+    // Every piece needs whole solids: the exact inside test casts rays across
+    // the whole mesh. So each rank asks its inputs for all of them (meshes
+    // are small next to the grid and surface, which are split).
+    for (int c = 0; c < this->GetNumberOfInputConnections(0); ++c)
+    {
+      vtkInformation* in = inInfo[0]->GetInformationObject(c);
+      in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+      in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+      in->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+    }
+    return 1;
+  }
   if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()))
   {
     return this->RequestData(request, inInfo, outInfo);
@@ -406,8 +432,45 @@ int vtkTopologyPreservingContour::RequestData(
   // Another lattice placement usually resolves cells a first one leaves to
   // the depth limit (a crease a hair from a lattice plane); inputs violating
   // the method's assumptions are not worth the retries.
-  tpc::PlacedSubdivision placed = tpc::RunOnBestLatticePlacement(scene, rootDomain, params,
-    assumptionsMet ? tpc::LatticePlacements : 1, ParallelForSMP, stage(0.1, 0.85));
+  // The piece requested (UpdatePiece, or the rank under pvbatch/pvserver):
+  // this rank subdivides its slab of root trees and a ghost ring and outputs
+  // its own trees (ForestPartition.h). With the global controller spanning
+  // the pieces, decisions and the report are agreed through reductions;
+  // without it each piece decides alone on one lattice placement (the
+  // pieces still fit) and reports its own piece only.
+  tpc::PieceOfRun piece;
+  for (int port = 0; port < 2; ++port) // (UpdatePiece asks on port 0, a surface consumer on port 1)
+  {
+    vtkInformation* requested = outInfo->GetInformationObject(port);
+    const int pieces = requested->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES());
+    if (pieces > piece.Pieces)
+    {
+      piece.Pieces = pieces;
+      piece.Piece = std::max(0, requested->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()));
+    }
+  }
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  const bool collective = piece.Pieces > 1 && controller &&
+    controller->GetNumberOfProcesses() == piece.Pieces && controller->GetLocalProcessId() == piece.Piece;
+  piece.Sum = [controller, collective](std::size_t x) {
+    if (!collective)
+    {
+      return x;
+    }
+    const vtkIdType in = static_cast<vtkIdType>(x);
+    vtkIdType out = 0;
+    controller->AllReduce(&in, &out, 1, vtkCommunicator::SUM_OP);
+    return static_cast<std::size_t>(out);
+  };
+  if (piece.Pieces > 1 && !collective)
+  {
+    vtkWarningMacro("Piece " << piece.Piece << " of " << piece.Pieces
+                             << " without a global controller over " << piece.Pieces
+                             << " processes: the report describes this piece only.");
+  }
+  const int placements = assumptionsMet && (piece.Pieces == 1 || collective) ? tpc::LatticePlacements : 1;
+  tpc::PlacedSubdivision placed = tpc::RunOnBestLatticePlacement(
+    scene, rootDomain, params, placements, ParallelForSMP, stage(0.1, 0.85), piece);
   if (placed.Result.Aborted)
   {
     return aborted();
@@ -466,52 +529,77 @@ int vtkTopologyPreservingContour::RequestData(
   surfaceOut->GetPointData()->SetNormals(normals);
   surfaceOut->GetCellData()->AddArray(gridCell);
 
-  // Topology report.
-  report.HausdorffBound = sub.HausdorffBound;
-  report.PlanarCells = static_cast<long long>(sub.PlanarSurfaceCells);
+  // Topology report: of the whole surface, also when this rank holds a
+  // piece (counts summed, components joined across the seams: PieceTopology.h).
+  tpc::SubdivisionResult all; // the statistics of all pieces
+  all.UnresolvedCells = placed.UnresolvedCellsOfAllPieces;
+  all.FacingSurfaceCells = piece.Sum(sub.FacingSurfaceCells);
+  all.DepthLimitReached = piece.Sum(sub.DepthLimitReached ? 1 : 0) > 0;
+  all.CellLimitReached = piece.Sum(sub.CellLimitReached ? 1 : 0) > 0;
+  all.PlanarSurfaceCells = piece.Sum(sub.PlanarSurfaceCells);
+  for (int r = 0; r < tpc::SplitReasonCount; ++r)
+  {
+    all.UnresolvedByReason[r] = piece.Sum(sub.UnresolvedByReason[r]);
+  }
+  all.HausdorffBound = sub.HausdorffBound;
+  const std::size_t inconsistent = piece.Sum(extraction.InconsistentCells);
+  tpc::TopologyReport whole = topo;
+  if (collective)
+  {
+    controller->AllReduce(&sub.HausdorffBound, &all.HausdorffBound, 1, vtkCommunicator::MAX_OP);
+    const std::vector<double> mine = tpc::DescribePiece(mesh).Serialize();
+    vtkNew<vtkDoubleArray> send, received;
+    send->SetArray(const_cast<double*>(mine.data()), static_cast<vtkIdType>(mine.size()), 1);
+    controller->AllGatherV(send, received);
+    whole = tpc::CombinePieces(tpc::PieceSeams::DeserializeAll(
+      std::vector<double>(received->GetPointer(0), received->GetPointer(0) + received->GetNumberOfValues())));
+  }
+  report.HausdorffBound = all.HausdorffBound;
+  report.PlanarCells = static_cast<long long>(all.PlanarSurfaceCells);
   report.Tolerance = tolerance;
-  report.Components = topo.Components;
-  report.Genus = topo.Genus;
-  report.Euler = topo.EulerCharacteristic;
-  report.Unresolved = static_cast<long long>(sub.UnresolvedCells);
-  report.Closed = topo.Closed ? 1 : 0;
-  report.Manifold = topo.Manifold ? 1 : 0;
-  const bool empty = mesh.Triangles.empty();
-  report.Guaranteed = (assumptionsMet && sub.UnresolvedCells == 0 && extraction.InconsistentCells == 0 &&
-                        (empty || (topo.Closed && topo.Manifold && topo.Oriented)))
+  report.Components = whole.Components;
+  report.Genus = whole.Genus;
+  report.Euler = whole.EulerCharacteristic;
+  report.Unresolved = static_cast<long long>(all.UnresolvedCells);
+  report.Closed = whole.Closed ? 1 : 0;
+  report.Manifold = whole.Manifold ? 1 : 0;
+  const bool empty = whole.Faces == 0;
+  report.Guaranteed = (assumptionsMet && all.UnresolvedCells == 0 && inconsistent == 0 &&
+                        (piece.Pieces == 1 || collective) &&
+                        (empty || (whole.Closed && whole.Manifold && whole.Oriented)))
     ? 1
     : 0;
   surfaceOut->GetFieldData()->Initialize(); // (ConvertOctree initialized the grid)
   AddReport(gridOut, report);
   AddReport(surfaceOut, report);
 
-  if (!report.Guaranteed)
+  if (!report.Guaranteed && (!collective || piece.Piece == 0)) // (one rank says it)
   {
     std::ostringstream why;
-    why << "The topology guarantee does not hold: " << sub.UnresolvedCells
+    why << "The topology guarantee does not hold: " << all.UnresolvedCells
         << " surface cell(s) were stopped";
-    if (sub.DepthLimitReached)
+    if (all.DepthLimitReached)
     {
       why << " by MaximumDepth (" << params.MaximumDepth << ")";
     }
-    if (sub.CellLimitReached)
+    if (all.CellLimitReached)
     {
       why << " by MaximumNumberOfCells (" << this->MaximumNumberOfCells << ")";
     }
     why << " with a test still failing:";
     for (int r = 1; r < tpc::SplitReasonCount; ++r)
     {
-      if (sub.UnresolvedByReason[r] > 0)
+      if (all.UnresolvedByReason[r] > 0)
       {
         why << " " << tpc::SplitReasonName(static_cast<tpc::SplitReason>(r)) << " "
-            << sub.UnresolvedByReason[r] << ";";
+            << all.UnresolvedByReason[r] << ";";
       }
     }
-    if (sub.FacingSurfaceCells > 0)
+    if (all.FacingSurfaceCells > 0)
     {
-      why << " " << sub.FacingSurfaceCells
+      why << " " << all.FacingSurfaceCells
           << " of them because two surfaces face each other there closer than the finest cell ("
-          << std::ldexp(rootGrid.RootSize, -std::min(params.MaximumDepth, rootGrid.MaxDepth))
+          << placed.FinestCell
           << "): solids touching along a face, or a gap or slab thinner than that, which no "
              "refinement separates (SplitReason 10, SURFACES_TOO_CLOSE);";
     }
@@ -520,19 +608,19 @@ int vtkTopologyPreservingContour::RequestData(
       why << " (best of " << placementsTried << " lattice placements tried);";
     }
     why << " they are marked CellState=3 in the grid output.";
-    if (sub.UnresolvedCells > sub.FacingSurfaceCells)
+    if (all.UnresolvedCells > all.FacingSurfaceCells)
     {
       why << " Tangential contact between primitives never passes the tests; otherwise raise the "
              "limits.";
     }
-    if (sub.FacingSurfaceCells > 0)
+    if (all.FacingSurfaceCells > 0)
     {
       why << " Overlap touching solids (or move them apart) by more than the finest cell; for a "
              "real thin gap or slab, raise MaximumDepth.";
     }
-    if (extraction.InconsistentCells > 0)
+    if (inconsistent > 0)
     {
-      why << " " << extraction.InconsistentCells << " cell(s) gave inconsistent loops.";
+      why << " " << inconsistent << " cell(s) gave inconsistent loops.";
     }
     vtkWarningMacro(<< why.str());
   }

@@ -485,6 +485,7 @@ PlacedSubdivision RunOnBestLatticePlacement(const ImplicitScene& scene, const Bo
     {
       best.Grid = grid;
       best.UnresolvedCellsOfAllPieces = unresolved;
+      best.FinestCell = std::ldexp(grid.RootSize, -std::min(params.MaximumDepth, grid.MaxDepth));
       std::swap(best.Result, run);
     }
     // The run left over holds millions of expressions: freeing them takes

@@ -111,6 +111,8 @@ struct PlacedSubdivision
   int PlacementsTried = 0;
   /// Unresolved cells of all pieces (= Result.UnresolvedCells for one piece).
   std::size_t UnresolvedCellsOfAllPieces = 0;
+  /// Width of the finest cell MaximumDepth allows.
+  double FinestCell = 0.0;
 };
 
 /// One piece of a run split among processes (ForestPartition.h): the root
