@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 namespace tpc
 {
@@ -127,21 +128,80 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
     n.Ijk[1] = static_cast<std::uint32_t>((t / grid.Dims[0]) % grid.Dims[1]);
     n.Ijk[2] = static_cast<std::uint32_t>(t / (grid.Dims[0] * grid.Dims[1]));
     n.Level = 0;
-    if (!scene.Expression || tree.RoleOf(n) == TreeRole::Skipped)
+    n.State = CellState::Outside;
+  }
+  if (scene.Expression)
+  {
+    // The expression pruned to each computed root, by halving blocks of
+    // trees: a split run has thousands of roots, and pruning each from the
+    // whole scene would test every mesh triangle against every root.
+    struct Block
     {
-      n.State = CellState::Outside;
-      continue;
-    }
-    const auto pruned = CsgExpression::Prune(scene.Expression, grid.CellBox(0, n.Ijk), prims);
-    if (pruned.Sign == RegionSign::Mixed)
+      int Lo[3], Hi[3]; // tree index ranges [Lo, Hi)
+    };
+    std::function<void(const Block&, const CsgExpressionPtr&)> prune = [&](const Block& b,
+                                                                          const CsgExpressionPtr& e) {
+      bool computed = false;
+      for (int k = b.Lo[2]; k < b.Hi[2] && !computed; ++k)
+      {
+        for (int j = b.Lo[1]; j < b.Hi[1] && !computed; ++j)
+        {
+          for (int i = b.Lo[0]; i < b.Hi[0] && !computed; ++i)
+          {
+            computed = tree.RoleOf(tree.Nodes[static_cast<std::size_t>(i + grid.Dims[0] * (j + grid.Dims[1] * k))]) !=
+              TreeRole::Skipped;
+          }
+        }
+      }
+      if (!computed)
+      {
+        return;
+      }
+      Box3 box;
+      for (int a = 0; a < 3; ++a)
+      {
+        box.lo[a] = grid.Coordinate(a, static_cast<std::uint32_t>(b.Lo[a]) << grid.MaxDepth);
+        box.hi[a] = grid.Coordinate(a, static_cast<std::uint32_t>(b.Hi[a]) << grid.MaxDepth);
+      }
+      const auto pruned = CsgExpression::Prune(e, box, prims);
+      const bool single = b.Hi[0] - b.Lo[0] == 1 && b.Hi[1] - b.Lo[1] == 1 && b.Hi[2] - b.Lo[2] == 1;
+      if (pruned.Sign != RegionSign::Mixed || single)
+      {
+        for (int k = b.Lo[2]; k < b.Hi[2]; ++k)
+        {
+          for (int j = b.Lo[1]; j < b.Hi[1]; ++j)
+          {
+            for (int i = b.Lo[0]; i < b.Hi[0]; ++i)
+            {
+              const std::size_t t = static_cast<std::size_t>(i + grid.Dims[0] * (j + grid.Dims[1] * k));
+              if (tree.RoleOf(tree.Nodes[t]) == TreeRole::Skipped)
+              {
+                continue;
+              }
+              tree.Nodes[t].State = pruned.Sign == RegionSign::Mixed ? CellState::Surface : StateOf(pruned.Sign);
+              tree.Expressions[t] = pruned.Expression;
+            }
+          }
+        }
+        return;
+      }
+      int axis = 0; // halve the longest side
+      for (int a = 1; a < 3; ++a)
+      {
+        axis = b.Hi[a] - b.Lo[a] > b.Hi[axis] - b.Lo[axis] ? a : axis;
+      }
+      Block low = b, high = b;
+      low.Hi[axis] = high.Lo[axis] = (b.Lo[axis] + b.Hi[axis]) / 2;
+      prune(low, pruned.Expression);
+      prune(high, pruned.Expression);
+    };
+    prune({ { 0, 0, 0 }, { grid.Dims[0], grid.Dims[1], grid.Dims[2] } }, scene.Expression);
+    for (int t = 0; t < treeCount; ++t)
     {
-      n.State = CellState::Surface;
-      tree.Expressions[static_cast<std::size_t>(t)] = pruned.Expression;
-      active.push_back(static_cast<std::uint32_t>(t));
-    }
-    else
-    {
-      n.State = StateOf(pruned.Sign);
+      if (tree.Nodes[static_cast<std::size_t>(t)].State == CellState::Surface)
+      {
+        active.push_back(static_cast<std::uint32_t>(t));
+      }
     }
   }
 
@@ -258,20 +318,48 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
     const bool toleranceSize = grid.CellDiagonal(level) <= params.HausdorffTolerance;
     std::vector<McCompatibility> verdicts(active.size());
     std::vector<std::uint8_t> facing(active.size(), 0);
-    if (!ChunkedFor(active.size(), Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t i = begin; i < end; ++i)
-      {
-        verdicts[i] = TestMcCompatibility(tree, active[i], prims, params.HausdorffTolerance);
-        if (toleranceSize && verdicts[i].Kind == McVerdict::Split)
-        {
-          facing[i] = HasFacingSurfaces(*tree.Expressions[active[i]], prims,
-            grid.CellBox(level, tree.Nodes[active[i]].Ijk), finestWidth);
-        }
-      }
-    }, within(0.2, 0.7)))
+    // After each chunk, the new signs and face tilings of the cells that
+    // passed go into the tables (in cell order, as the first tiling of a face
+    // stays) and every verdict drops them: a level's cells never hold them
+    // all at once (face refinement may sample thousands of points per cell).
+    const ProgressCallback testsProgress = within(0.2, 0.7);
+    for (std::size_t first = 0; first < active.size(); first += Chunk)
     {
-      result.Aborted = true;
-      return result;
+      const std::size_t last = std::min(active.size(), first + Chunk);
+      parallelFor(last - first, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = first + begin; i < first + end; ++i)
+        {
+          verdicts[i] = TestMcCompatibility(tree, active[i], prims, params.HausdorffTolerance);
+          if (toleranceSize && verdicts[i].Kind == McVerdict::Split)
+          {
+            facing[i] = HasFacingSurfaces(*tree.Expressions[active[i]], prims,
+              grid.CellBox(level, tree.Nodes[active[i]].Ijk), finestWidth);
+          }
+        }
+      });
+      for (std::size_t i = first; i < last; ++i)
+      {
+        McCompatibility& v = verdicts[i];
+        if (v.Kind == McVerdict::Pass)
+        {
+          for (const auto& sign : v.NewSigns)
+          {
+            tree.Signs.Insert(sign.first, sign.second);
+          }
+          for (auto& r : v.Refinements)
+          {
+            tree.FaceRefinements.emplace(r.first, std::move(r.second)); // the first one stays
+          }
+          result.RefinedFaces += tree.RoleOf(tree.Nodes[active[i]]) == TreeRole::Own ? v.Refinements.size() : 0;
+        }
+        std::vector<std::pair<PointKey, bool>>().swap(v.NewSigns);
+        std::vector<std::pair<FaceKey, std::vector<FaceTile>>>().swap(v.Refinements);
+      }
+      if (testsProgress && testsProgress(static_cast<double>(last) / static_cast<double>(active.size())))
+      {
+        result.Aborted = true;
+        return result;
+      }
     }
 
     // 3. Apply verdicts; limits turn splits into unresolved leaves.
@@ -303,15 +391,6 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
         result.PlanarSurfaceCells += v.Planar ? mine : 0;
         result.HausdorffBound = std::max(result.HausdorffBound,
           mine * grid.CellDiagonal(v.Planar ? grid.MaxDepth : level));
-        for (const auto& s : v.NewSigns)
-        {
-          tree.Signs.Insert(s.first, s.second);
-        }
-        for (const auto& r : v.Refinements)
-        {
-          tree.FaceRefinements.emplace(r.first, r.second); // the first one stays
-        }
-        result.RefinedFaces += mine * v.Refinements.size();
       }
       else if (v.Kind == McVerdict::Constant)
       {
@@ -460,11 +539,20 @@ PlacedSubdivision RunOnBestLatticePlacement(const ImplicitScene& scene, const Bo
     SubdivisionParameters params = parameters;
     if (split)
     {
-      // Enough trees for every piece; the same finest cell as one piece.
+      // Sixteen trees per piece along the longest axis, so that the ghost
+      // ring (a tree on either side of a slab) costs a fraction of the
+      // piece's own work, while the trees stay at least four times as wide
+      // as the tolerance's cells; the same finest cell as one piece.
+      const int coarsest = std::max(1, ToleranceLevel(domain, parameters.HausdorffTolerance) - 2);
       int levels = 0;
-      while ((std::max({ grid.Dims[0], grid.Dims[1], grid.Dims[2] }) << levels) < 2 * piece.Pieces &&
-        levels < grid.MaxDepth)
+      while ((std::max({ grid.Dims[0], grid.Dims[1], grid.Dims[2] }) << levels) < 2 * piece.Pieces ||
+        ((std::max({ grid.Dims[0], grid.Dims[1], grid.Dims[2] }) << levels) < 16 * piece.Pieces &&
+          levels < coarsest))
       {
+        if (levels >= grid.MaxDepth)
+        {
+          break;
+        }
         ++levels;
       }
       grid = SplitRootCells(grid, levels, domain);

@@ -116,8 +116,9 @@ struct PlacedSubdivision
 };
 
 /// One piece of a run split among processes (ForestPartition.h): the root
-/// cells are split so that the longest axis has at least two trees per
-/// piece, this piece subdivides its slab of trees and the ghost ring.
+/// cells are split so that the longest axis has up to sixteen trees per
+/// piece (at least two; trees no smaller than four tolerance cells), this
+/// piece subdivides its slab of trees and the ghost ring.
 /// Decisions that must agree (another lattice placement, stop) use `Sum`
 /// over the pieces, called the same number of times by every piece (an MPI
 /// all-reduce). An abort is honoured after a placement, when `Sum` says

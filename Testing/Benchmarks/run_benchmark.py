@@ -10,6 +10,7 @@ grows from epsilon to epsilon/2.
     python3 Testing/Benchmarks/run_benchmark.py            # the full run (~30 min)
     python3 Testing/Benchmarks/run_benchmark.py --quick    # 1/64 and 1/128 only
     python3 Testing/Benchmarks/run_benchmark.py --limits   # memory budget and abort latency
+    python3 Testing/Benchmarks/run_benchmark.py --ranks    # 1 vs 2 MPI ranks
     ... --scenes plate-ellipsoids --epsilons 64,128        # a subset
 
 The filter runs first; the others get its surface-cell edge as their spacing.
@@ -151,6 +152,40 @@ def limits(a):
     return 0
 
 
+def ranks(a):
+    """The filter split among MPI ranks (issue 7) next to one rank: armadillo
+    and turbine at 1/64 and 1/128, 1 rank x 1 thread, 2 ranks x 1 thread,
+    1 rank x 2 threads (the machine has 2 cores)."""
+    print("Machine:", machine())
+    script = os.path.join(HERE, "ranks_benchmark.py")
+    site = os.path.join(HERE, "../../build/lib/python3/site-packages")
+    configs = [(1, 1), (2, 1), (1, 2)]
+    rows = [["scene", "epsilon"] + [f"{n} rank{'s' if n > 1 else ''} x {t} thr" for n, t in configs] +
+            ["2 ranks / 1 rank", "topology (2 ranks)"]]
+    failed = False
+    for scene, off in (("armadillo", "armadillo.off"), ("turbine", "turbine.off")):
+        for d in (64, 128):
+            results = []
+            for n, threads in configs:
+                cmd = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", str(n), "pvbatch", "--symmetric",
+                       script, site, os.path.join(a.meshes, off), repr(1.0 / d)]
+                env = dict(os.environ, VTK_SMP_BACKEND_IN_USE="STDThread", VTK_SMP_MAX_THREADS=str(threads))
+                done = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=3600)
+                lines = [line for line in done.stdout.splitlines() if line.startswith("{")]
+                results.append(json.loads(lines[-1]) if lines else {"error": f"exit {done.returncode}"})
+                print(f"  ran {scene} 1/{d} {n} rank(s) x {threads} thread(s)", file=sys.stderr, flush=True)
+            ok = all("error" not in r for r in results)
+            failed |= not ok or not results[1].get("guaranteed")
+            rows.append([scene, f"1/{d}"] + [f"{r['seconds']:.2f} s" if "error" not in r else r["error"]
+                                             for r in results] +
+                        [ratio(results[0].get("seconds"), results[1].get("seconds")) if ok else "-",
+                         f"{results[1]['components']} comp, genus {results[1]['genus']}"
+                         f"{'' if results[1]['guaranteed'] else ' (not guaranteed)'}" if ok else "-"])
+    print("\nSeconds (slowest rank), speed-up of 2 ranks over 1 (each with one thread)")
+    table(rows)
+    return 1 if failed else 0
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--program", default=os.path.join(HERE, "../../build/bin/tpc_benchmark"))
@@ -164,9 +199,13 @@ def main():
                         help="seconds after which a VTK or OpenVDB run is stopped (reported as a lower bound)")
     parser.add_argument("--limits", action="store_true",
                         help="only the limits: memory vs MaximumNumberOfCells, abort latency (~3 min)")
+    parser.add_argument("--ranks", action="store_true",
+                        help="only the MPI runs: 1 vs 2 ranks under pvbatch (~3 min)")
     a = parser.parse_args()
     if a.limits:
         return limits(a)
+    if a.ranks:
+        return ranks(a)
     scenes = a.scenes.split(",")
     denominators = [int(d) for d in ("64,128" if a.quick else a.epsilons).split(",")]
     if a.smoke:

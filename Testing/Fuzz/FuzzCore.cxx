@@ -149,6 +149,17 @@ tpctest::ContourRun RunAndCheck(FuzzedDataProvider& in, const tpc::ImplicitScene
   }
   tpc::PlacedSubdivision placed = tpc::RunOnBestLatticePlacement(scene, domain, p, 1);
   r.Subdivision = std::move(placed.Result);
+  if (std::getenv("TPC_FUZZ_VERBOSE"))
+  {
+    std::size_t tiles = 0;
+    for (const auto& f : r.Subdivision.Octree.FaceRefinements)
+    {
+      tiles += f.second.size();
+    }
+    std::printf("octree: %zu nodes, %zu refined faces with %zu tiles, %zu bytes (nodes, expressions, signs)\n",
+      r.Subdivision.Octree.Nodes.size(), r.Subdivision.Octree.FaceRefinements.size(), tiles,
+      r.Subdivision.Octree.MemoryBytes());
+  }
   r.Extraction = tpc::ExtractSurface(r.Subdivision.Octree, scene);
   r.Report = tpc::ComputeTopologyReport(r.Extraction.Mesh);
   ++tally.Contoured;
