@@ -7,7 +7,7 @@ paraview=$1 plugin=$2 baseline=$3 work=$4
 mkdir -p "$work"
 rm -f "$work/result.txt"
 export TPC_PLUGIN="$plugin" TPC_BASELINE="$baseline" TPC_RESULT="$work/result.txt" TPC_SHOT="$work/screenshot.png"
-timeout 300 xvfb-run -a -n 150 -s "-screen 0 1280x1024x24" "$paraview" --dr \
+timeout 300 bash "$(dirname "$0")/../xvfb-run-retry.sh" -a -n 150 -s "-screen 0 1280x1024x24" "$paraview" --dr \
   --script="$(dirname "$0")/TestParaViewGui.py" --exit > "$work/paraview.log" 2>&1
 cat "$work/result.txt" 2>/dev/null || { echo "FAIL: the GUI script did not report (see $work/paraview.log)"; exit 1; }
 grep -q '^PASS' "$work/result.txt"
