@@ -191,12 +191,53 @@ int vtkTopologyPreservingContour::RequestData(
   // extraction [0.85, 0.95], topology report and grid output [0.95, 1]. Every long loop reports
   // in chunks, so Abort stops any stage within a chunk (a fraction of a
   // second); the outputs are then empty.
-  auto stage = [this](double lo, double hi) -> tpc::ProgressCallback {
-    return [this, lo, hi](double f) {
+  // The piece requested (UpdatePiece, or the rank under pvbatch/pvserver):
+  // this rank subdivides its slab of root trees and a ghost ring and outputs
+  // its own trees (ForestPartition.h). With the global controller spanning
+  // the pieces, decisions and the report are agreed through reductions;
+  // without it each piece decides alone on one lattice placement (the
+  // pieces still fit) and reports its own piece only.
+  tpc::PieceOfRun piece;
+  for (int port = 0; port < 2; ++port) // (UpdatePiece asks on port 0, a surface consumer on port 1)
+  {
+    vtkInformation* requested = outInfo->GetInformationObject(port);
+    const int pieces = requested->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES());
+    if (pieces > piece.Pieces)
+    {
+      piece.Pieces = pieces;
+      piece.Piece = std::max(0, requested->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()));
+    }
+  }
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  const bool collective = piece.Pieces > 1 && controller &&
+    controller->GetNumberOfProcesses() == piece.Pieces && controller->GetLocalProcessId() == piece.Piece;
+  piece.Sum = [controller, collective](std::size_t x) {
+    if (!collective)
+    {
+      return x;
+    }
+    const vtkIdType in = static_cast<vtkIdType>(x);
+    vtkIdType out = 0;
+    controller->AllReduce(&in, &out, 1, vtkCommunicator::SUM_OP);
+    return static_cast<std::size_t>(out);
+  };
+  if (piece.Pieces > 1 && !collective)
+  {
+    vtkWarningMacro("Piece " << piece.Piece << " of " << piece.Pieces
+                             << " without a global controller over " << piece.Pieces
+                             << " processes: the report describes this piece only.");
+  }
+  // Ranks of a split run must all reach every collective call: there an
+  // abort is only honoured where the ranks agree on it, after a lattice
+  // placement (RunOnBestLatticePlacement); the other stages report only.
+  const bool mayAbort = !collective;
+  auto stage = [this](double lo, double hi, bool ask = true) -> tpc::ProgressCallback {
+    return [this, lo, hi, ask](double f) {
       this->UpdateProgress(lo + (hi - lo) * f);
-      return this->GetAbortExecute() != 0;
+      return ask && this->GetAbortExecute() != 0;
     };
   };
+  auto stop = [this, mayAbort]() { return mayAbort && this->GetAbortExecute() != 0; };
   auto aborted = [&]() {
     clearOutputs();
     vtkWarningMacro("Aborted: outputs are empty.");
@@ -221,8 +262,8 @@ int vtkTopologyPreservingContour::RequestData(
     }
     tpc::vtkadapter::MeshInput in;
     const bool converted = tpc::vtkadapter::ConvertPolyData(
-      mesh, in, error, ParallelForSMP, stage(0.08 * i / connections, 0.08 * (i + 1) / connections));
-    if (this->GetAbortExecute())
+      mesh, in, error, ParallelForSMP, stage(0.08 * i / connections, 0.08 * (i + 1) / connections, mayAbort));
+    if (stop())
     {
       return aborted();
     }
@@ -273,8 +314,8 @@ int vtkTopologyPreservingContour::RequestData(
       const std::size_t touching = !ma.Bounds().Overlaps(mb.Bounds())
         ? 0
         : tpc::CountCoincidentFaces(ma.Points(), ma.Triangles(), mb.Points(), mb.Triangles(), !oneSubtracted,
-            100, ParallelForSMP, stage(0.08, 0.1));
-      if (this->GetAbortExecute())
+            100, ParallelForSMP, stage(0.08, 0.1, mayAbort));
+      if (stop())
       {
         return aborted();
       }
@@ -432,42 +473,6 @@ int vtkTopologyPreservingContour::RequestData(
   // Another lattice placement usually resolves cells a first one leaves to
   // the depth limit (a crease a hair from a lattice plane); inputs violating
   // the method's assumptions are not worth the retries.
-  // The piece requested (UpdatePiece, or the rank under pvbatch/pvserver):
-  // this rank subdivides its slab of root trees and a ghost ring and outputs
-  // its own trees (ForestPartition.h). With the global controller spanning
-  // the pieces, decisions and the report are agreed through reductions;
-  // without it each piece decides alone on one lattice placement (the
-  // pieces still fit) and reports its own piece only.
-  tpc::PieceOfRun piece;
-  for (int port = 0; port < 2; ++port) // (UpdatePiece asks on port 0, a surface consumer on port 1)
-  {
-    vtkInformation* requested = outInfo->GetInformationObject(port);
-    const int pieces = requested->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES());
-    if (pieces > piece.Pieces)
-    {
-      piece.Pieces = pieces;
-      piece.Piece = std::max(0, requested->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()));
-    }
-  }
-  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-  const bool collective = piece.Pieces > 1 && controller &&
-    controller->GetNumberOfProcesses() == piece.Pieces && controller->GetLocalProcessId() == piece.Piece;
-  piece.Sum = [controller, collective](std::size_t x) {
-    if (!collective)
-    {
-      return x;
-    }
-    const vtkIdType in = static_cast<vtkIdType>(x);
-    vtkIdType out = 0;
-    controller->AllReduce(&in, &out, 1, vtkCommunicator::SUM_OP);
-    return static_cast<std::size_t>(out);
-  };
-  if (piece.Pieces > 1 && !collective)
-  {
-    vtkWarningMacro("Piece " << piece.Piece << " of " << piece.Pieces
-                             << " without a global controller over " << piece.Pieces
-                             << " processes: the report describes this piece only.");
-  }
   const int placements = assumptionsMet && (piece.Pieces == 1 || collective) ? tpc::LatticePlacements : 1;
   tpc::PlacedSubdivision placed = tpc::RunOnBestLatticePlacement(
     scene, rootDomain, params, placements, ParallelForSMP, stage(0.1, 0.85), piece);
@@ -479,21 +484,21 @@ int vtkTopologyPreservingContour::RequestData(
   const tpc::SubdivisionResult& sub = placed.Result;
   const int placementsTried = placed.PlacementsTried;
   const tpc::ExtractionResult extraction =
-    tpc::ExtractSurface(sub.Octree, scene, ParallelForSMP, stage(0.85, 0.95));
+    tpc::ExtractSurface(sub.Octree, scene, ParallelForSMP, stage(0.85, 0.95, mayAbort));
   if (extraction.Aborted)
   {
     return aborted();
   }
   const tpc::TopologyReport topo =
-    tpc::ComputeTopologyReport(extraction.Mesh, ParallelForSMP, stage(0.95, 0.97));
-  if (this->GetAbortExecute())
+    tpc::ComputeTopologyReport(extraction.Mesh, ParallelForSMP, stage(0.95, 0.97, mayAbort));
+  if (stop())
   {
     return aborted();
   }
 
   // Grid output.
   std::vector<vtkIdType> nodeToCell;
-  if (!tpc::vtkadapter::ConvertOctree(sub.Octree, gridOut, nodeToCell, stage(0.97, 1.0)))
+  if (!tpc::vtkadapter::ConvertOctree(sub.Octree, gridOut, nodeToCell, stage(0.97, 1.0, mayAbort)))
   {
     return aborted();
   }
