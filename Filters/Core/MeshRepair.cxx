@@ -3,6 +3,7 @@
 #include "ExactPredicates.h"
 #include "MeshSolid.h"
 #include "SelfIntersection.h"
+#include "UnionFind.h"
 
 #include <algorithm>
 #include <numeric>
@@ -14,25 +15,6 @@ namespace
 {
 using Triangle = std::array<std::uint32_t, 3>;
 
-struct UnionFind
-{
-  std::vector<std::uint32_t> Parent;
-  explicit UnionFind(std::size_t n)
-    : Parent(n)
-  {
-    std::iota(Parent.begin(), Parent.end(), 0u);
-  }
-  std::uint32_t Find(std::uint32_t x)
-  {
-    while (Parent[x] != x)
-    {
-      Parent[x] = Parent[Parent[x]];
-      x = Parent[x];
-    }
-    return x;
-  }
-  void Join(std::uint32_t a, std::uint32_t b) { Parent[Find(a)] = Find(b); }
-};
 
 void MergeCoincidentVertices(std::vector<Vec3>& points, std::vector<Triangle>& triangles, MeshRepairReport& r)
 {

@@ -1,24 +1,15 @@
 #include "PieceTopology.h"
 
+#include "UnionFind.h"
+
 #include <algorithm>
 #include <array>
 #include <map>
-#include <numeric>
 
 namespace tpc
 {
 namespace
 {
-std::uint32_t Find(std::vector<std::uint32_t>& parent, std::uint32_t x)
-{
-  while (parent[x] != x)
-  {
-    parent[x] = parent[parent[x]];
-    x = parent[x];
-  }
-  return x;
-}
-
 using Point = std::array<double, 3>;
 } // namespace
 
@@ -26,8 +17,7 @@ PieceSeams DescribePiece(const TriangleMesh& piece)
 {
   PieceSeams s;
   const std::size_t nv = piece.Points.size();
-  std::vector<std::uint32_t> parent(nv);
-  std::iota(parent.begin(), parent.end(), 0u);
+  UnionFind parts(nv);
   std::vector<bool> used(nv, false);
   // Directed edges, keyed undirected: (lo, hi) -> uses.
   std::vector<std::pair<std::uint64_t, std::array<std::uint32_t, 2>>> edges;
@@ -37,7 +27,7 @@ PieceSeams DescribePiece(const TriangleMesh& piece)
     {
       const std::uint32_t a = t[k], b = t[(k + 1) % 3];
       used[a] = true;
-      parent[Find(parent, a)] = Find(parent, b);
+      parts.Join(a, b);
       edges.push_back({ (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b), { a, b } });
     }
   }
@@ -49,7 +39,7 @@ PieceSeams DescribePiece(const TriangleMesh& piece)
     if (used[v])
     {
       ++s.Vertices;
-      const std::uint32_t r = Find(parent, static_cast<std::uint32_t>(v));
+      const std::uint32_t r = parts.Find(static_cast<std::uint32_t>(v));
       if (component[r] < 0)
       {
         component[r] = s.Components++;
@@ -72,7 +62,7 @@ PieceSeams DescribePiece(const TriangleMesh& piece)
         const Vec3& p = piece.Points[v];
         s.BoundaryEdges.insert(s.BoundaryEdges.end(), { p[0], p[1], p[2] });
       }
-      s.BoundaryComponents.push_back(component[Find(parent, edges[i].second[0])]);
+      s.BoundaryComponents.push_back(component[parts.Find(edges[i].second[0])]);
     }
     else if (j - i > 2)
     {
@@ -142,8 +132,7 @@ TopologyReport CombinePieces(const std::vector<PieceSeams>& pieces)
     r.NonManifoldEdges += pieces[p].NonManifoldEdges;
     misoriented += pieces[p].MisorientedEdges;
   }
-  std::vector<std::uint32_t> parent(offset.back());
-  std::iota(parent.begin(), parent.end(), 0u);
+  UnionFind joined(offset.back());
   // Seam vertices: each distinct point counted once, joining the components
   // that reach it.
   std::map<Point, std::uint32_t> seamVertex; // point -> a global component
@@ -168,7 +157,7 @@ TopologyReport CombinePieces(const std::vector<PieceSeams>& pieces)
         if (!it.second)
         {
           --r.Vertices; // counted by another piece too
-          parent[Find(parent, c)] = Find(parent, it.first->second);
+          joined.Join(c, it.first->second);
         }
       }
     }
@@ -186,9 +175,9 @@ TopologyReport CombinePieces(const std::vector<PieceSeams>& pieces)
       --r.Edges; // counted by both pieces
     }
   }
-  for (std::uint32_t c = 0; c < parent.size(); ++c)
+  for (std::uint32_t c = 0; c < offset.back(); ++c)
   {
-    r.Components += Find(parent, c) == c ? 1 : 0;
+    r.Components += joined.Find(c) == c ? 1 : 0;
   }
   r.EulerCharacteristic = r.Vertices - r.Edges + r.Faces;
   r.Closed = r.Faces > 0 && r.BoundaryEdges == 0;

@@ -1,5 +1,7 @@
 #include "TopologyReport.h"
 
+#include "UnionFind.h"
+
 #include <algorithm>
 #include <numeric>
 #include <sstream>
@@ -9,25 +11,6 @@ namespace tpc
 {
 namespace
 {
-struct UnionFind
-{
-  std::vector<std::uint32_t> Parent;
-  explicit UnionFind(std::size_t n)
-    : Parent(n)
-  {
-    std::iota(Parent.begin(), Parent.end(), 0u);
-  }
-  std::uint32_t Find(std::uint32_t x)
-  {
-    while (Parent[x] != x)
-    {
-      Parent[x] = Parent[Parent[x]];
-      x = Parent[x];
-    }
-    return x;
-  }
-  void Join(std::uint32_t a, std::uint32_t b) { Parent[Find(a)] = Find(b); }
-};
 } // namespace
 
 TopologyReport ComputeTopologyReport(
@@ -173,29 +156,15 @@ TopologyReport ComputeTopologyReport(
       std::vector<std::uint32_t> distinct(others);
       std::sort(distinct.begin(), distinct.end());
       distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
-      std::vector<std::uint32_t> parent(distinct.size());
-      std::iota(parent.begin(), parent.end(), 0u);
+      UnionFind link(distinct.size());
       auto idx = [&](std::uint32_t x) {
         return static_cast<std::uint32_t>(
           std::lower_bound(distinct.begin(), distinct.end(), x) - distinct.begin());
       };
-      auto find = [&](std::uint32_t x) {
-        while (parent[x] != x)
-        {
-          parent[x] = parent[parent[x]];
-          x = parent[x];
-        }
-        return x;
-      };
       std::size_t groups = distinct.size();
       for (std::size_t k = 0; k + 1 < others.size(); k += 2)
       {
-        const std::uint32_t a = find(idx(others[k])), c = find(idx(others[k + 1]));
-        if (a != c)
-        {
-          parent[a] = c;
-          --groups;
-        }
+        groups -= link.Join(idx(others[k]), idx(others[k + 1])) ? 1 : 0;
       }
       // A closed fan of m triangles has m distinct link vertices in one cycle.
       if (groups != 1 || distinct.size() != static_cast<std::size_t>(e - b))
