@@ -136,7 +136,7 @@ std::int64_t AdaptiveOctree::Find(int level, const std::int64_t ijk[3]) const
       return -1;
     }
   }
-  std::int64_t node = tree[0] + this->Grid.Dims[0] * (tree[1] + this->Grid.Dims[1] * tree[2]);
+  std::int64_t node = this->Grid.TreeIndex(static_cast<int>(tree[0]), static_cast<int>(tree[1]), static_cast<int>(tree[2]));
   for (int l = 1; l <= level; ++l)
   {
     const OctreeNode& n = this->Nodes[static_cast<std::size_t>(node)];

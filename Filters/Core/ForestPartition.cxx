@@ -32,7 +32,8 @@ std::vector<int> PartitionTrees(const RootGrid& grid, int pieces)
   std::vector<int> piece(static_cast<std::size_t>(grid.TreeCount()));
   for (int t = 0; t < grid.TreeCount(); ++t)
   {
-    const int ijk[3] = { t % grid.Dims[0], (t / grid.Dims[0]) % grid.Dims[1], t / (grid.Dims[0] * grid.Dims[1]) };
+    int ijk[3];
+    grid.TreeCoordinates(t, ijk);
     // Slab s holds coordinates [s n / p, (s + 1) n / p).
     piece[static_cast<std::size_t>(t)] =
       std::min(pieces - 1, static_cast<int>((static_cast<long long>(ijk[axis]) * pieces) / grid.Dims[axis]));
@@ -49,7 +50,8 @@ std::vector<TreeRole> TreeRoles(const RootGrid& grid, const std::vector<int>& pi
     {
       continue;
     }
-    const int ijk[3] = { t % grid.Dims[0], (t / grid.Dims[0]) % grid.Dims[1], t / (grid.Dims[0] * grid.Dims[1]) };
+    int ijk[3];
+    grid.TreeCoordinates(t, ijk);
     for (int dz = -1; dz <= 1; ++dz)
     {
       for (int dy = -1; dy <= 1; ++dy)
@@ -62,7 +64,7 @@ std::vector<TreeRole> TreeRoles(const RootGrid& grid, const std::vector<int>& pi
           {
             continue;
           }
-          TreeRole& r = roles[static_cast<std::size_t>(n[0] + grid.Dims[0] * (n[1] + grid.Dims[1] * n[2]))];
+          TreeRole& r = roles[static_cast<std::size_t>(grid.TreeIndex(n[0], n[1], n[2]))];
           r = std::max(r, TreeRole::Ghost);
         }
       }

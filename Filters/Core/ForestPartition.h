@@ -51,9 +51,8 @@ std::vector<TreeRole> TreeRoles(const RootGrid& grid, const std::vector<int>& pi
 /// Index of the tree containing a cell at `level` with integer coordinates `ijk`.
 inline int TreeOf(const RootGrid& grid, int level, const std::uint32_t ijk[3])
 {
-  const int i = static_cast<int>(ijk[0] >> level), j = static_cast<int>(ijk[1] >> level),
-            k = static_cast<int>(ijk[2] >> level);
-  return i + grid.Dims[0] * (j + grid.Dims[1] * k);
+  return grid.TreeIndex(
+    static_cast<int>(ijk[0] >> level), static_cast<int>(ijk[1] >> level), static_cast<int>(ijk[2] >> level));
 }
 
 } // namespace tpc

@@ -42,9 +42,28 @@ inline ProgressCallback ProgressRange(const ProgressCallback& progress, double l
 }
 
 /// parallelFor over [0, count) in consecutive chunks of at most `chunk`
-/// items, reporting the fraction done after each chunk: a long loop stops
-/// within one chunk of an abort request instead of at its end. Returns false
-/// when aborted.
+/// items; after each chunk, `afterChunk(first, last)` runs on the calling
+/// thread (to use the chunk's results, report progress) and stops the loop by
+/// returning true. Returns false when stopped.
+inline bool ForEachChunk(std::size_t count, std::size_t chunk, const ParallelFor& parallelFor,
+  const std::function<void(std::size_t, std::size_t)>& body,
+  const std::function<bool(std::size_t, std::size_t)>& afterChunk)
+{
+  for (std::size_t first = 0; first < count; first += chunk)
+  {
+    const std::size_t last = count - first < chunk ? count : first + chunk;
+    parallelFor(last - first, [&](std::size_t begin, std::size_t end) { body(first + begin, first + end); });
+    if (afterChunk(first, last))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// ForEachChunk reporting the fraction done after each chunk: a long loop
+/// stops within one chunk of an abort request instead of at its end (without
+/// `progress`, one parallelFor). Returns false when aborted.
 inline bool ChunkedFor(std::size_t count, std::size_t chunk, const ParallelFor& parallelFor,
   const std::function<void(std::size_t, std::size_t)>& body, const ProgressCallback& progress)
 {
@@ -53,16 +72,9 @@ inline bool ChunkedFor(std::size_t count, std::size_t chunk, const ParallelFor& 
     parallelFor(count, body);
     return true;
   }
-  for (std::size_t first = 0; first < count; first += chunk)
-  {
-    const std::size_t n = count - first < chunk ? count - first : chunk;
-    parallelFor(n, [&](std::size_t begin, std::size_t end) { body(first + begin, first + end); });
-    if (progress(static_cast<double>(first + n) / static_cast<double>(count)))
-    {
-      return false;
-    }
-  }
-  return true;
+  return ForEachChunk(count, chunk, parallelFor, body, [&](std::size_t, std::size_t last) {
+    return progress(static_cast<double>(last) / static_cast<double>(count));
+  });
 }
 
 /// Sorts `v` by `less`: 64 blocks sorted in parallel, then merged pairwise

@@ -39,6 +39,14 @@ struct RootGrid
   int MaxDepth = 0;              ///< finest level; lattice spacing = RootSize / 2^MaxDepth
 
   int TreeCount() const { return Dims[0] * Dims[1] * Dims[2]; }
+  /// Index of the tree at root coordinates (i, j, k), i fastest; and back.
+  int TreeIndex(int i, int j, int k) const { return i + Dims[0] * (j + Dims[1] * k); }
+  void TreeCoordinates(int t, int ijk[3]) const
+  {
+    ijk[0] = t % Dims[0];
+    ijk[1] = (t / Dims[0]) % Dims[1];
+    ijk[2] = t / (Dims[0] * Dims[1]);
+  }
 
   /// World coordinate of lattice index `i` (at level MaxDepth) on an axis.
   double Coordinate(int axis, std::uint32_t i) const

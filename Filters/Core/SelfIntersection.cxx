@@ -353,8 +353,8 @@ std::size_t CountAccepted(const std::vector<std::pair<std::uint32_t, std::uint32
   constexpr std::size_t BlockSize = 4096, BlocksPerChunk = 8;
   const std::size_t blocks = (pairs.size() + BlockSize - 1) / BlockSize;
   std::vector<std::size_t> found(blocks, 0);
-  std::size_t total = 0, counted = 0;
-  ChunkedFor(blocks, BlocksPerChunk, parallelFor, [&](std::size_t begin, std::size_t end) {
+  std::size_t total = 0;
+  ForEachChunk(blocks, BlocksPerChunk, parallelFor, [&](std::size_t begin, std::size_t end) {
     for (std::size_t b = begin; b < end; ++b)
     {
       const std::size_t last = std::min(pairs.size(), (b + 1) * BlockSize);
@@ -363,19 +363,13 @@ std::size_t CountAccepted(const std::vector<std::pair<std::uint32_t, std::uint32
         found[b] += accept(pairs[i].first, pairs[i].second) ? 1 : 0;
       }
     }
-  }, [&](double f) {
-    // (Called between chunks, on the calling thread.)
-    const std::size_t done = std::min(blocks, static_cast<std::size_t>(f * blocks + 0.5));
-    for (; counted < done; ++counted)
+  }, [&](std::size_t first, std::size_t last) {
+    for (std::size_t b = first; b < last; ++b)
     {
-      total += found[counted];
+      total += found[b];
     }
-    return total >= limit || (progress && progress(f));
+    return total >= limit || (progress && progress(static_cast<double>(last) / static_cast<double>(blocks)));
   });
-  for (; counted < blocks; ++counted)
-  {
-    total += found[counted];
-  }
   return std::min(total, limit);
 }
 } // namespace

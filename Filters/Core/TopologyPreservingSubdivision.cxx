@@ -124,9 +124,12 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
   for (int t = 0; t < treeCount; ++t)
   {
     OctreeNode& n = tree.Nodes[static_cast<std::size_t>(t)];
-    n.Ijk[0] = static_cast<std::uint32_t>(t % grid.Dims[0]);
-    n.Ijk[1] = static_cast<std::uint32_t>((t / grid.Dims[0]) % grid.Dims[1]);
-    n.Ijk[2] = static_cast<std::uint32_t>(t / (grid.Dims[0] * grid.Dims[1]));
+    int ijk[3];
+    grid.TreeCoordinates(t, ijk);
+    for (int a = 0; a < 3; ++a)
+    {
+      n.Ijk[a] = static_cast<std::uint32_t>(ijk[a]);
+    }
     n.Level = 0;
     n.State = CellState::Outside;
   }
@@ -139,21 +142,29 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
     {
       int Lo[3], Hi[3]; // tree index ranges [Lo, Hi)
     };
-    std::function<void(const Block&, const CsgExpressionPtr&)> prune = [&](const Block& b,
-                                                                          const CsgExpressionPtr& e) {
-      bool computed = false;
-      for (int k = b.Lo[2]; k < b.Hi[2] && !computed; ++k)
+    // The trees of a block that this run computes.
+    auto computedTrees = [&](const Block& b) {
+      std::vector<std::size_t> trees;
+      for (int k = b.Lo[2]; k < b.Hi[2]; ++k)
       {
-        for (int j = b.Lo[1]; j < b.Hi[1] && !computed; ++j)
+        for (int j = b.Lo[1]; j < b.Hi[1]; ++j)
         {
-          for (int i = b.Lo[0]; i < b.Hi[0] && !computed; ++i)
+          for (int i = b.Lo[0]; i < b.Hi[0]; ++i)
           {
-            computed = tree.RoleOf(tree.Nodes[static_cast<std::size_t>(i + grid.Dims[0] * (j + grid.Dims[1] * k))]) !=
-              TreeRole::Skipped;
+            const auto t = static_cast<std::size_t>(grid.TreeIndex(i, j, k));
+            if (tree.RoleOf(tree.Nodes[t]) != TreeRole::Skipped)
+            {
+              trees.push_back(t);
+            }
           }
         }
       }
-      if (!computed)
+      return trees;
+    };
+    std::function<void(const Block&, const CsgExpressionPtr&)> prune = [&](const Block& b,
+                                                                          const CsgExpressionPtr& e) {
+      const std::vector<std::size_t> trees = computedTrees(b);
+      if (trees.empty())
       {
         return;
       }
@@ -167,21 +178,10 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
       const bool single = b.Hi[0] - b.Lo[0] == 1 && b.Hi[1] - b.Lo[1] == 1 && b.Hi[2] - b.Lo[2] == 1;
       if (pruned.Sign != RegionSign::Mixed || single)
       {
-        for (int k = b.Lo[2]; k < b.Hi[2]; ++k)
+        for (const std::size_t t : trees)
         {
-          for (int j = b.Lo[1]; j < b.Hi[1]; ++j)
-          {
-            for (int i = b.Lo[0]; i < b.Hi[0]; ++i)
-            {
-              const std::size_t t = static_cast<std::size_t>(i + grid.Dims[0] * (j + grid.Dims[1] * k));
-              if (tree.RoleOf(tree.Nodes[t]) == TreeRole::Skipped)
-              {
-                continue;
-              }
-              tree.Nodes[t].State = pruned.Sign == RegionSign::Mixed ? CellState::Surface : StateOf(pruned.Sign);
-              tree.Expressions[t] = pruned.Expression;
-            }
-          }
+          tree.Nodes[t].State = pruned.Sign == RegionSign::Mixed ? CellState::Surface : StateOf(pruned.Sign);
+          tree.Expressions[t] = pruned.Expression;
         }
         return;
       }
@@ -323,20 +323,17 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
     // stays) and every verdict drops them: a level's cells never hold them
     // all at once (face refinement may sample thousands of points per cell).
     const ProgressCallback testsProgress = within(0.2, 0.7);
-    for (std::size_t first = 0; first < active.size(); first += Chunk)
-    {
-      const std::size_t last = std::min(active.size(), first + Chunk);
-      parallelFor(last - first, [&](std::size_t begin, std::size_t end) {
-        for (std::size_t i = first + begin; i < first + end; ++i)
+    const bool tested = ForEachChunk(active.size(), Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i)
+      {
+        verdicts[i] = TestMcCompatibility(tree, active[i], prims, params.HausdorffTolerance);
+        if (toleranceSize && verdicts[i].Kind == McVerdict::Split)
         {
-          verdicts[i] = TestMcCompatibility(tree, active[i], prims, params.HausdorffTolerance);
-          if (toleranceSize && verdicts[i].Kind == McVerdict::Split)
-          {
-            facing[i] = HasFacingSurfaces(*tree.Expressions[active[i]], prims,
-              grid.CellBox(level, tree.Nodes[active[i]].Ijk), finestWidth);
-          }
+          facing[i] = HasFacingSurfaces(*tree.Expressions[active[i]], prims,
+            grid.CellBox(level, tree.Nodes[active[i]].Ijk), finestWidth);
         }
-      });
+      }
+    }, [&](std::size_t first, std::size_t last) {
       for (std::size_t i = first; i < last; ++i)
       {
         McCompatibility& v = verdicts[i];
@@ -355,11 +352,12 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
         std::vector<std::pair<PointKey, bool>>().swap(v.NewSigns);
         std::vector<std::pair<FaceKey, std::vector<FaceTile>>>().swap(v.Refinements);
       }
-      if (testsProgress && testsProgress(static_cast<double>(last) / static_cast<double>(active.size())))
-      {
-        result.Aborted = true;
-        return result;
-      }
+      return testsProgress && testsProgress(static_cast<double>(last) / static_cast<double>(active.size()));
+    });
+    if (!tested)
+    {
+      result.Aborted = true;
+      return result;
     }
 
     // 3. Apply verdicts; limits turn splits into unresolved leaves.

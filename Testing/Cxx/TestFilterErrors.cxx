@@ -406,6 +406,16 @@ void ExpectStoppedCellsMarkedAndClosed(const FilterResult& r, int reason)
   EXPECT_EQ(t.BoundaryEdges, 0);
   EXPECT_EQ(t.NonManifoldEdges, 0);
 }
+
+/// `f` run again with a deeper MaximumDepth resolves it: guaranteed, with
+/// `components` components.
+void ExpectResolvedWithMaximumDepth(vtkTopologyPreservingContour* f, int depth, int components)
+{
+  f->SetMaximumDepth(depth);
+  const FilterResult full = tpctest::Run(f);
+  EXPECT_EQ(full.Guaranteed, 1);
+  EXPECT_EQ(full.Components, components);
+}
 } // namespace
 
 TEST(FilterErrors, DepthLimitWarnsMarksCellsAndKeepsAClosedManifold)
@@ -424,10 +434,7 @@ TEST(FilterErrors, DepthLimitWarnsMarksCellsAndKeepsAClosedManifold)
   ExpectStoppedCellsMarkedAndClosed(r, vtkTopologyPreservingContour::LIMIT_REACHED);
 
   // Raising the limit resolves it.
-  f->SetMaximumDepth(16);
-  const FilterResult full = tpctest::Run(f);
-  EXPECT_EQ(full.Guaranteed, 1);
-  EXPECT_EQ(full.Components, 2);
+  ExpectResolvedWithMaximumDepth(f, 16, 2);
 }
 
 TEST(FilterErrors, CellLimitWarnsMarksCellsAndKeepsAClosedManifold)
@@ -468,10 +475,7 @@ TEST(FilterErrors, SurfacesCloserThanTheFinestCellStopAtTheToleranceSize)
   EXPECT_EQ(messages.Warnings.find("by MaximumDepth"), std::string::npos) << messages.Warnings;
   ExpectStoppedCellsMarkedAndClosed(r, vtkTopologyPreservingContour::SURFACES_TOO_CLOSE);
 
-  f->SetMaximumDepth(16);
-  const FilterResult full = tpctest::Run(f);
-  EXPECT_EQ(full.Guaranteed, 1);
-  EXPECT_EQ(full.Components, 2);
+  ExpectResolvedWithMaximumDepth(f, 16, 2);
 }
 
 TEST(FilterErrors, BoxesSharingAFaceStopQuicklyWithoutGuarantee)

@@ -48,10 +48,10 @@ def scene():
     f.SetImplicitFunction(both)
     f.SetBounds(-0.45, 1.25, -0.35, 0.75, -0.25, 0.85)
     f.SetTolerance(0.01)
-    return f, both
+    return f
 
 
-f, keep = scene()
+f = scene()
 f.UpdatePiece(rank, ranks, 0)
 piece = f.GetSurfaceOutput()
 grid = f.GetGridOutput()
@@ -81,7 +81,7 @@ check(report["Components"] == 2 and report["Genus"] == 1 and report["Closed"] ==
 check(0 < present < trees, "the grid holds this rank's own trees only")
 if rank == 0:
     # The same scene as one piece (no collective call: piece 0 of 1).
-    single, keep1 = scene()
+    single = scene()
     single.Update()
     one = measure(single.GetSurfaceOutput())
     append = vtkAppendPolyData()
