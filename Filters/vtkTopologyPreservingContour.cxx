@@ -27,6 +27,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include "PieceTopology.h"
+#include "SurfaceEmbedding.h"
 #include "SurfaceExtraction.h"
 #include "TopologyPreservingSubdivision.h"
 #include "TopologyReport.h"
@@ -56,6 +57,7 @@ struct Report
   long long Unresolved = 0;
   int Closed = 0;
   int Manifold = 0;
+  int Embedded = 0;
   long long PlanarCells = 0;
   double HausdorffBound = 0.0;
   double Tolerance = 0.0;
@@ -77,6 +79,7 @@ void AddReport(vtkDataObject* output, const Report& r)
   addInt("UnresolvedCells", r.Unresolved);
   addInt("Closed", r.Closed);
   addInt("Manifold", r.Manifold);
+  addInt("Embedded", r.Embedded);
   addInt("PlanarCells", r.PlanarCells);
   vtkNew<vtkDoubleArray> h;
   h->SetName("HausdorffBound");
@@ -481,13 +484,27 @@ int vtkTopologyPreservingContour::RequestData(
     return aborted();
   }
   const tpc::RootGrid& rootGrid = placed.Grid;
-  const tpc::SubdivisionResult& sub = placed.Result;
+  tpc::SubdivisionResult& sub = placed.Result;
   const int placementsTried = placed.PlacementsTried;
   const tpc::ExtractionResult extraction =
-    tpc::ExtractSurface(sub.Octree, scene, ParallelForSMP, stage(0.85, 0.95, mayAbort));
+    tpc::ExtractSurface(sub.Octree, scene, ParallelForSMP, stage(0.85, 0.92, mayAbort));
   if (extraction.Aborted)
   {
     return aborted();
+  }
+  // The exact embedding check (SurfaceEmbedding.h); the cells it blames are
+  // marked in the grid output.
+  const tpc::EmbeddingReport embedding =
+    tpc::CheckEmbedding(sub.Octree, extraction.Mesh, ParallelForSMP, stage(0.92, 0.95, mayAbort));
+  if (embedding.Aborted)
+  {
+    return aborted();
+  }
+  for (const std::uint32_t n : embedding.Cells)
+  {
+    tpc::OctreeNode& node = sub.Octree.Nodes[n];
+    node.State = tpc::CellState::Unresolved;
+    node.Reason = node.FailedTest = tpc::SplitReason::PatchNotEmbedded;
   }
   const tpc::TopologyReport topo =
     tpc::ComputeTopologyReport(extraction.Mesh, ParallelForSMP, stage(0.95, 0.97, mayAbort));
@@ -548,6 +565,36 @@ int vtkTopologyPreservingContour::RequestData(
   }
   all.HausdorffBound = sub.HausdorffBound;
   const std::size_t inconsistent = piece.Sum(extraction.InconsistentCells);
+  const std::size_t withoutPatch = piece.Sum(extraction.CellsWithoutPatch);
+  // Pieces' triangles can only meet across the seams (SurfaceEmbedding.h):
+  // each rank tests its seam triangles against those of the ranks after it.
+  std::size_t seamPairs = 0;
+  if (collective)
+  {
+    const std::vector<double> mine = tpc::SeamTriangles(sub.Octree, extraction.Mesh);
+    const long long length = static_cast<long long>(mine.size());
+    std::vector<long long> lengths(static_cast<std::size_t>(piece.Pieces));
+    controller->AllGather(&length, lengths.data(), 1);
+    std::vector<vtkIdType> counts(lengths.begin(), lengths.end()), offsets(counts.size(), 0);
+    for (std::size_t r = 1; r < counts.size(); ++r)
+    {
+      offsets[r] = offsets[r - 1] + counts[r - 1];
+    }
+    std::vector<double> seams(static_cast<std::size_t>(offsets.back() + counts.back()));
+    controller->AllGatherV(mine.data(), seams.data(), static_cast<vtkIdType>(mine.size()), counts.data(),
+      offsets.data());
+    for (int r = piece.Piece + 1; r < piece.Pieces; ++r)
+    {
+      const auto from = seams.begin() + offsets[static_cast<std::size_t>(r)];
+      seamPairs += tpc::CountImproperSeamPairs(
+        mine, std::vector<double>(from, from + counts[static_cast<std::size_t>(r)]));
+    }
+  }
+  const std::size_t notEmbedded = piece.Sum(embedding.Embedded() && seamPairs == 0 ? 0 : 1);
+  const std::size_t improperPairs = piece.Sum(embedding.ImproperPairs + seamPairs);
+  const std::size_t coincidentVertices = piece.Sum(embedding.CoincidentVertices);
+  const std::size_t degenerate = piece.Sum(embedding.DegenerateTriangles + embedding.TrianglesOutsideCells);
+  const std::size_t blamedCells = piece.Sum(embedding.Cells.size());
   tpc::TopologyReport whole = topo;
   if (collective)
   {
@@ -559,7 +606,9 @@ int vtkTopologyPreservingContour::RequestData(
     whole = tpc::CombinePieces(tpc::PieceSeams::DeserializeAll(
       std::vector<double>(received->GetPointer(0), received->GetPointer(0) + received->GetNumberOfValues())));
   }
-  report.HausdorffBound = all.HausdorffBound;
+  // Surface in a cell without a patch is missing from the output: no bound.
+  report.HausdorffBound = withoutPatch == 0 ? all.HausdorffBound : std::nan("");
+  report.Embedded = notEmbedded == 0 ? 1 : 0;
   report.PlanarCells = static_cast<long long>(all.PlanarSurfaceCells);
   report.Tolerance = tolerance;
   report.Components = whole.Components;
@@ -569,7 +618,7 @@ int vtkTopologyPreservingContour::RequestData(
   report.Closed = whole.Closed ? 1 : 0;
   report.Manifold = whole.Manifold ? 1 : 0;
   const bool empty = whole.Faces == 0;
-  report.Guaranteed = (assumptionsMet && all.UnresolvedCells == 0 && inconsistent == 0 &&
+  report.Guaranteed = (assumptionsMet && all.UnresolvedCells == 0 && inconsistent == 0 && report.Embedded &&
                         (piece.Pieces == 1 || collective) &&
                         (empty || (whole.Closed && whole.Manifold && whole.Oriented)))
     ? 1
@@ -581,47 +630,61 @@ int vtkTopologyPreservingContour::RequestData(
   if (!report.Guaranteed && (!collective || piece.Piece == 0)) // (one rank says it)
   {
     std::ostringstream why;
-    why << "The topology guarantee does not hold: " << all.UnresolvedCells
-        << " surface cell(s) were stopped";
-    if (all.DepthLimitReached)
+    why << "The topology guarantee does not hold:";
+    if (!assumptionsMet)
     {
-      why << " by MaximumDepth (" << params.MaximumDepth << ")";
+      why << " the inputs violate the method's assumptions (see the warnings above);";
     }
-    if (all.CellLimitReached)
+    if (all.UnresolvedCells > 0)
     {
-      why << " by MaximumNumberOfCells (" << this->MaximumNumberOfCells << ")";
-    }
-    why << " with a test still failing:";
-    for (int r = 1; r < tpc::SplitReasonCount; ++r)
-    {
-      if (all.UnresolvedByReason[r] > 0)
+      why << " " << all.UnresolvedCells << " surface cell(s) were stopped";
+      if (all.DepthLimitReached)
       {
-        why << " " << tpc::SplitReasonName(static_cast<tpc::SplitReason>(r)) << " "
-            << all.UnresolvedByReason[r] << ";";
+        why << " by MaximumDepth (" << params.MaximumDepth << ")";
+      }
+      if (all.CellLimitReached)
+      {
+        why << " by MaximumNumberOfCells (" << this->MaximumNumberOfCells << ")";
+      }
+      why << " with a test still failing:";
+      for (int r = 1; r < tpc::SplitReasonCount; ++r)
+      {
+        if (all.UnresolvedByReason[r] > 0)
+        {
+          why << " " << tpc::SplitReasonName(static_cast<tpc::SplitReason>(r)) << " "
+              << all.UnresolvedByReason[r] << ";";
+        }
+      }
+      if (all.FacingSurfaceCells > 0)
+      {
+        why << " " << all.FacingSurfaceCells
+            << " of them because two surfaces face each other there closer than the finest cell ("
+            << placed.FinestCell
+            << "): solids touching along a face, or a gap or slab thinner than that, which no "
+               "refinement separates (SplitReason 10, SURFACES_TOO_CLOSE);";
+      }
+      if (placementsTried > 1)
+      {
+        why << " (best of " << placementsTried << " lattice placements tried);";
+      }
+      why << " they are marked CellState=3 in the grid output.";
+      if (all.UnresolvedCells > all.FacingSurfaceCells)
+      {
+        why << " Tangential contact between primitives never passes the tests; otherwise raise the "
+               "limits.";
+      }
+      if (all.FacingSurfaceCells > 0)
+      {
+        why << " Overlap touching solids (or move them apart) by more than the finest cell; for a "
+               "real thin gap or slab, raise MaximumDepth.";
       }
     }
-    if (all.FacingSurfaceCells > 0)
+    if (notEmbedded > 0)
     {
-      why << " " << all.FacingSurfaceCells
-          << " of them because two surfaces face each other there closer than the finest cell ("
-          << placed.FinestCell
-          << "): solids touching along a face, or a gap or slab thinner than that, which no "
-             "refinement separates (SplitReason 10, SURFACES_TOO_CLOSE);";
-    }
-    if (placementsTried > 1)
-    {
-      why << " (best of " << placementsTried << " lattice placements tried);";
-    }
-    why << " they are marked CellState=3 in the grid output.";
-    if (all.UnresolvedCells > all.FacingSurfaceCells)
-    {
-      why << " Tangential contact between primitives never passes the tests; otherwise raise the "
-             "limits.";
-    }
-    if (all.FacingSurfaceCells > 0)
-    {
-      why << " Overlap touching solids (or move them apart) by more than the finest cell; for a "
-             "real thin gap or slab, raise MaximumDepth.";
+      why << " the surface is not embedded: " << improperPairs << " pair(s) of triangles meet other than in a "
+          << "shared edge or vertex, " << coincidentVertices << " vertex pair(s) coincide, " << degenerate
+          << " triangle(s) are degenerate (exact test of the output); their " << blamedCells
+          << " cell(s) are marked CellState=3, SplitReason 11 (PATCH_NOT_EMBEDDED).";
     }
     if (inconsistent > 0)
     {

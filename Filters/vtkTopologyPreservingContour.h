@@ -10,9 +10,9 @@
  * ambiguity) and star-shaped test (w.r.t. the voxel and each face, proven with
  * interval arithmetic), and is no larger than the tolerance. A Marching-Cubes-
  * like extraction with crack patching then gives a closed, manifold,
- * outward-oriented triangle surface with the same number of components and
- * the same genus as the exact surface, within a two-sided Hausdorff distance
- * of Tolerance.
+ * outward-oriented, embedded (no self-intersection or self-touching)
+ * triangle surface with the same number of components and the same genus as
+ * the exact surface, within a two-sided Hausdorff distance of Tolerance.
  *
  * Inputs
  * - Input port 0 (optional, repeatable): closed triangle meshes (vtkPolyData;
@@ -34,17 +34,23 @@
  *   leaves), "SizeReason" (the parent's SplitReason: why the cell is as small
  *   as it is; the active scalars, as renderers draw leaves), "CellState"
  *   (0 inside, 1 outside, 2 surface cell that passed every test, 3 surface cell
- *   stopped by a limit, 4 refined) and "FailedTest" (for state 3, the test that
- *   still failed, as a SplitReasons value). Field data "SplitReasonNames" and
+ *   stopped by a limit or whose patch failed the embedding check, 4 refined) and
+ *   "FailedTest" (for state 3, the test that still failed, as a SplitReasons
+ *   value). Field data "SplitReasonNames" and
  *   "CellStateNames" (string arrays indexed by value) name the values.
  * - Port 1, vtkPolyData: triangles with point "Normals" and cell data
  *   "GridCell" (the hyper tree grid cell each triangle was extracted from).
  * - Field data on both: "Components", "Genus", "EulerCharacteristic",
  *   "TopologyGuaranteed" (1 only if every cell on the surface passed every
- *   test), "UnresolvedCells" (surface cells stopped by a limit), "Closed",
- *   "Manifold", "HausdorffBound" (the proven two-sided bound: the largest
- *   surface-cell diagonal, except that cells where the surface is a plane
- *   section count the finest lattice cell's), "PlanarCells" (surface cells
+ *   test, the inputs meet the method's assumptions, and the output is closed,
+ *   manifold, outward oriented and embedded), "UnresolvedCells" (surface cells
+ *   stopped by a limit), "Closed", "Manifold", "Embedded" (1 when the exact
+ *   check found no two triangles meeting but in a shared edge or vertex, no
+ *   two vertices at the same coordinates and no degenerate triangle),
+ *   "HausdorffBound" (the proven two-sided bound: the largest diagonal of a
+ *   cell holding surface, except that cells where the surface is a plane
+ *   section count the finest lattice cell's; NaN when not proven: a limit
+ *   stopped a cell that may hold surface without a patch), "PlanarCells" (surface cells
  *   kept larger than epsilon because the surface in them is a plane section -
  *   a plane, a box face or coplanar mesh triangles - so their patch is exact)
  *   and "AbsoluteTolerance" (epsilon in world units).
@@ -59,7 +65,7 @@
  * (CellState 3, SplitReason SURFACES_TOO_CLOSE).
  *
  * Progress and Abort: every stage reports progress in chunks (inputs
- * [0, 0.1], subdivision [0.1, 0.85], extraction [0.85, 0.95], topology report
+ * [0, 0.1], subdivision [0.1, 0.85], extraction and embedding check [0.85, 0.95], topology report
  * and grid output [0.95, 1]) and checks AbortExecute at each report; an
  * abort returns empty outputs with a warning.
  *
@@ -104,7 +110,8 @@ public:
     NOT_STAR_SHAPED_FACE = 7,
     HAUSDORFF_SIZE = 8,
     LIMIT_REACHED = 9,
-    SURFACES_TOO_CLOSE = 10
+    SURFACES_TOO_CLOSE = 10,
+    PATCH_NOT_EMBEDDED = 11
   };
 
   ///@{

@@ -97,6 +97,7 @@ def run(name, algorithm, expected_genus):
         f"  genus                {int(field('Genus'))}   (exact: {expected_genus})",
         f"  Euler characteristic {int(field('EulerCharacteristic'))}",
         f"  closed / manifold    {int(field('Closed'))} / {int(field('Manifold'))}",
+        f"  embedded             {int(field('Embedded'))}",
         f"  TopologyGuaranteed   {int(field('TopologyGuaranteed'))}",
         f"  UnresolvedCells      {int(field('UnresolvedCells'))}",
         f"  Hausdorff bound      {field('HausdorffBound'):.5f}  (tolerance {field('AbsoluteTolerance'):.5f})",

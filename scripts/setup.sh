@@ -9,8 +9,9 @@ cd "$(dirname "$0")/.."
 # paraview-dev are what find_package(ParaView) asks for
 # (../shared/SETUP-NOTES.md); the last lines are our own build and test
 # tools: GLPK is the tests' independent LP oracle, libcgal-demo holds the
-# real test meshes with known topology, OpenVDB (with the Boost part its CMake
-# module asks for) is the benchmark's baseline; clang with its libFuzzer and
+# real test meshes with known topology, CGAL (header-only, with GMP and MPFR)
+# is the tests' independent oracle for self-intersections, OpenVDB (with the
+# Boost part its CMake module asks for) is the benchmark's baseline; clang with its libFuzzer and
 # sanitizer runtimes, and valgrind, check the core (scripts/test.sh);
 # openscad-testing-data holds broken STL files for the bad-input tests.
 packages=(
@@ -22,7 +23,7 @@ packages=(
   libjsoncpp-dev libprotobuf-dev protobuf-compiler libcgns-dev libpython3-dev python3-mpi4py
   libavformat-dev libavcodec-dev libavutil-dev libswscale-dev libxt-dev libtbb-dev
   cmake ninja-build g++ libgtest-dev
-  libglpk-dev libcgal-demo libopenvdb-dev libboost-iostreams-dev
+  libglpk-dev libcgal-demo libcgal-dev libgmp-dev libmpfr-dev libopenvdb-dev libboost-iostreams-dev
   clang libclang-rt-14-dev valgrind openscad-testing-data
 )
 missing=()

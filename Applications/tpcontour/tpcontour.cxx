@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -63,8 +64,10 @@ Options:
   -q, --quiet            no progress bar, no warnings
   -h, --help             this text
 
-The report: components, genus, Euler characteristic, closed/manifold, whether
-the topology guarantee holds, the proven Hausdorff bound. Warnings (repaired
+The report: components, genus, Euler characteristic, closed/manifold,
+embedded (no self-intersection, checked exactly), whether the topology
+guarantee holds, the proven Hausdorff bound ("not proven", null in JSON, where
+refinement stopped with surface possibly missing). Warnings (repaired
 input, unresolved cells) go to standard error.
 
 Exit status: 0 the surface was written and the topology guarantee holds;
@@ -473,6 +476,20 @@ int main(int argc, char* argv[])
 
   auto field = [&](const char* name) { return surface->GetFieldData()->GetArray(name)->GetTuple1(0); };
   const bool guaranteed = field("TopologyGuaranteed") == 1;
+  // NaN: refinement stopped where surface may be missing, so no bound is proven.
+  const double bound = field("HausdorffBound");
+  auto jsonNumber = [](double v) {
+    std::ostringstream n;
+    if (std::isfinite(v))
+    {
+      n << v;
+    }
+    else
+    {
+      n << "null";
+    }
+    return n.str();
+  };
   if (o.Json)
   {
     std::ostringstream j;
@@ -487,9 +504,10 @@ int main(int argc, char* argv[])
       << ",\n  \"euler_characteristic\": " << field("EulerCharacteristic")
       << ",\n  \"closed\": " << (field("Closed") == 1 ? "true" : "false")
       << ",\n  \"manifold\": " << (field("Manifold") == 1 ? "true" : "false")
+      << ",\n  \"embedded\": " << (field("Embedded") == 1 ? "true" : "false")
       << ",\n  \"guaranteed\": " << (guaranteed ? "true" : "false")
       << ",\n  \"unresolved_cells\": " << field("UnresolvedCells")
-      << ",\n  \"hausdorff_bound\": " << field("HausdorffBound")
+      << ",\n  \"hausdorff_bound\": " << jsonNumber(bound)
       << ",\n  \"triangles\": " << surface->GetNumberOfPolys()
       << ",\n  \"grid_cells\": " << (grid ? grid->GetNumberOfCells() : 0) << ",\n  \"seconds\": " << seconds
       << ",\n  \"surface\": " << JsonString(o.Output)
@@ -502,10 +520,11 @@ int main(int argc, char* argv[])
               << "genus                " << field("Genus") << "\n"
               << "Euler characteristic " << field("EulerCharacteristic") << "\n"
               << "closed / manifold    " << field("Closed") << " / " << field("Manifold") << "\n"
+              << "embedded             " << field("Embedded") << "\n"
               << "TopologyGuaranteed   " << (guaranteed ? 1 : 0) << "\n"
               << "UnresolvedCells      " << field("UnresolvedCells") << "\n"
-              << "Hausdorff bound      " << field("HausdorffBound") << " (tolerance "
-              << field("AbsoluteTolerance") << ")\n"
+              << "Hausdorff bound      " << (std::isfinite(bound) ? jsonNumber(bound) : "not proven")
+              << " (tolerance " << field("AbsoluteTolerance") << ")\n"
               << "triangles            " << surface->GetNumberOfPolys() << "\n"
               << "seconds              " << seconds << "\n"
               << "wrote " << o.Output << (o.Grid.empty() ? "" : " and " + o.Grid) << "\n";

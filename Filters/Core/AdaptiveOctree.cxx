@@ -31,6 +31,8 @@ const char* SplitReasonName(SplitReason r)
       return "limit reached";
     case SplitReason::SurfacesTooClose:
       return "surfaces too close";
+    case SplitReason::PatchNotEmbedded:
+      return "patch not embedded";
   }
   return "unknown";
 }

@@ -26,6 +26,10 @@ struct OctreeNode
   CellState State = CellState::Outside;
   /// For Unresolved leaves: the criterion that still failed.
   SplitReason FailedTest = SplitReason::None;
+  /// A Surface leaf kept larger than the tolerance because the surface in it
+  /// is a union of plane sections (PlanarCell.h): its patches must stay in
+  /// their planes.
+  bool PlaneSection = false;
   /// Children are FirstChild + c, c = x + 2y + 4z (VTK's HyperTree order); -1 for leaves.
   std::int32_t FirstChild = -1;
 

@@ -87,6 +87,11 @@ bool CoplanarTrianglesMeet(const Vec3 t1[3], const Vec3 t2[3], int k)
 }
 } // namespace
 
+bool TriangleIsDegenerate(const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  return ProjectionAxis(a, b, c) < 0;
+}
+
 bool SegmentMeetsTriangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c)
 {
   const int sp = Orient3D(a, b, c, p), sq = Orient3D(a, b, c, q);
@@ -136,10 +141,7 @@ bool TrianglesIntersect(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3&
     SegmentMeetsTriangle(e, f, a, b, c) || SegmentMeetsTriangle(f, d, a, b, c);
 }
 
-namespace
-{
-/// Improper contact of two triangles that may share vertices.
-bool MeetImproperly(const std::vector<Vec3>& P, const std::array<std::uint32_t, 3>& t1,
+bool TrianglesMeetImproperly(const std::vector<Vec3>& P, const std::array<std::uint32_t, 3>& t1,
   const std::array<std::uint32_t, 3>& t2)
 {
   int shared = 0, i1 = -1, i2 = -1;
@@ -223,7 +225,6 @@ bool MeetImproperly(const std::vector<Vec3>& P, const std::array<std::uint32_t, 
   }
   return true; // identical triangles
 }
-} // namespace
 
 namespace
 {
@@ -380,7 +381,7 @@ std::size_t CountSelfIntersections(const std::vector<Vec3>& points,
 {
   return CountAccepted(CandidatePairs(points, triangles, ProgressRange(progress, 0.0, 0.2)), limit, parallelFor,
     ProgressRange(progress, 0.2, 1.0),
-    [&](std::uint32_t t1, std::uint32_t t2) { return MeetImproperly(points, triangles[t1], triangles[t2]); });
+    [&](std::uint32_t t1, std::uint32_t t2) { return TrianglesMeetImproperly(points, triangles[t1], triangles[t2]); });
 }
 
 std::size_t CountCoincidentFaces(const std::vector<Vec3>& pointsA,

@@ -37,10 +37,18 @@ std::size_t CountCoincidentFaces(const std::vector<Vec3>& pointsA,
   const std::vector<std::array<std::uint32_t, 3>>& trianglesB, bool facingEachOther, std::size_t limit = 100,
   const ParallelFor& parallelFor = SequentialFor, const ProgressCallback& progress = nullptr);
 
+/// Exact: do triangles t1 and t2 of a mesh meet anywhere but in the vertices
+/// or the edge they share (by index)? Identical triangles always do.
+bool TrianglesMeetImproperly(const std::vector<Vec3>& points, const std::array<std::uint32_t, 3>& t1,
+  const std::array<std::uint32_t, 3>& t2);
+
 /// Exact: do the closed triangles (a, b, c) and (d, e, f), which share no
 /// vertex, intersect?
 bool TrianglesIntersect(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e,
   const Vec3& f);
+
+/// Exact: are a, b and c collinear (the triangle has no area)?
+bool TriangleIsDegenerate(const Vec3& a, const Vec3& b, const Vec3& c);
 
 /// Exact: does the closed segment pq meet the closed triangle abc?
 bool SegmentMeetsTriangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c);

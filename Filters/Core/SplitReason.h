@@ -22,8 +22,10 @@ enum class SplitReason : std::uint8_t
   HausdorffSize = 8,      ///< cell on the surface larger than the tolerance allows
   LimitReached = 9,       ///< leaf kept because of MaximumDepth/MaximumNumberOfCells
                           ///< while a criterion still failed
-  SurfacesTooClose = 10   ///< leaf kept while a criterion failed: two surfaces face
+  SurfacesTooClose = 10,  ///< leaf kept while a criterion failed: two surfaces face
                           ///< each other closer than the finest cell throughout it
+  PatchNotEmbedded = 11   ///< leaf whose patch meets another patch improperly (found by
+                          ///< the exact embedding check of the output, SurfaceEmbedding.h)
 };
 
 const char* SplitReasonName(SplitReason r);
@@ -40,7 +42,7 @@ enum class CellState : std::uint8_t
 const char* CellStateName(CellState s);
 
 /// One past the largest value of each enum (to list their names).
-constexpr int SplitReasonCount = 11;
+constexpr int SplitReasonCount = 12;
 constexpr int CellStateCount = 5;
 
 } // namespace tpc

@@ -1,7 +1,7 @@
 #include "SurfaceExtraction.h"
 
 #include "EdgeCrossings.h"
-#include "SymmetricEigen.h"
+#include "LoopTriangulation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -209,81 +209,8 @@ private:
   const OctreeNode& Node;
 };
 
-// --- vertex placement ------------------------------------------------------
-
-bool FanIsConsistent(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, const Vec3& c)
-{
-  const std::size_t m = pts.size();
-  for (std::size_t k = 0; k < m; ++k)
-  {
-    const Vec3& a = pts[k];
-    const Vec3& b = pts[(k + 1) % m];
-    const Vec3 n = Cross(b - a, c - a);
-    if (Dot(n, normals[k] + normals[(k + 1) % m]) <= 0.0)
-    {
-      return false;
-    }
-  }
-  return true;
-}
-
-/// The loop's interior vertex: the point minimizing the distances to the
-/// tangent planes at the crossings (recovers sharp CSG edges and corners, as
-/// in Extended Marching Cubes), kept inside the cell; if its fan would fold,
-/// the loop centroid pulled onto the surface, then the centroid itself.
-Vec3 PlaceLoopVertex(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals,
-  const Box3& cell, const CsgExpression& expression, const PrimitiveSet& prims)
-{
-  Vec3 m;
-  for (const Vec3& p : pts)
-  {
-    m += p;
-  }
-  m = m * (1.0 / static_cast<double>(pts.size()));
-
-  double ata[3][3] = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } };
-  double atb[3] = { 0, 0, 0 };
-  for (std::size_t k = 0; k < pts.size(); ++k)
-  {
-    const Vec3& n = normals[k];
-    const double d = Dot(n, pts[k] - m);
-    for (int i = 0; i < 3; ++i)
-    {
-      for (int j = 0; j < 3; ++j)
-      {
-        ata[i][j] += n[i] * n[j];
-      }
-      atb[i] += n[i] * d;
-    }
-  }
-  // Truncated pseudo-inverse: along flat directions stay at the centroid.
-  Vec3 delta;
-  SolveTruncated(ata, atb, 0.1, delta.x);
-  const Vec3 qef = cell.Clamp(m + delta);
-  if (FanIsConsistent(pts, normals, qef))
-  {
-    return qef;
-  }
-  Vec3 y = m;
-  for (int it = 0; it < 4; ++it)
-  {
-    const Vec3 g = expression.Gradient(y, prims);
-    const double gg = Dot(g, g);
-    if (gg <= 0.0)
-    {
-      break;
-    }
-    y = cell.Clamp(y - g * (expression.Value(y, prims) / gg));
-  }
-  if (FanIsConsistent(pts, normals, y))
-  {
-    return y;
-  }
-  return m;
-}
-
 /// Faces of the cell (bit f, CubeTopology.h numbering) that a loop's crossing
-/// lies on; all six for a bend (never triangulated without a centre).
+/// lies on; all six for a bend (never a fan point).
 unsigned FacesOf(const Crossing& c, const std::uint32_t base[3], std::uint32_t size)
 {
   if (c.Tile != 0)
@@ -305,88 +232,14 @@ unsigned FacesOf(const Crossing& c, const std::uint32_t base[3], std::uint32_t s
   return mask;
 }
 
-/// Marching Cubes' triangulation of a loop: a fan from one of its own points
-/// (k - 2 triangles instead of the k of a fan around a centre), used where
-/// the surface is smooth in the cell (every crossing normal within 25 degrees
-/// of their mean: no crease or corner for a centre vertex to keep sharp).
-/// A diagonal may not join two points on one face of the cell: it would lie in
-/// the face, where the neighbour's patch may use the same two points. Among
-/// the apexes whose triangles all face the way the surface normals do, the
-/// one with the shortest diagonals. Returns -1 when there is none.
-int LoopFanApex(const std::vector<Vec3>& pts, const std::vector<Vec3>& normals, const std::vector<unsigned>& faces)
-{
-  const std::size_t m = pts.size();
-  Vec3 mean;
-  for (const Vec3& n : normals)
-  {
-    mean += n;
-  }
-  mean = Normalized(mean);
-  for (const Vec3& n : normals)
-  {
-    if (!(Dot(n, mean) >= 0.906)) // cos 25 degrees (also rejects zero normals)
-    {
-      return -1;
-    }
-  }
-  int best = -1;
-  double bestLength = HUGE_VAL;
-  for (std::size_t s = 0; s < m; ++s)
-  {
-    double length = 0.0;
-    bool valid = true;
-    for (std::size_t i = 1; i + 1 < m && valid; ++i)
-    {
-      const std::size_t a = (s + i) % m, b = (s + i + 1) % m;
-      valid = (i == 1 || (faces[s] & faces[a]) == 0) && (i + 2 == m || (faces[s] & faces[b]) == 0);
-      const Vec3 n = Cross(pts[a] - pts[s], pts[b] - pts[s]);
-      valid = valid && Dot(n, normals[s] + normals[a] + normals[b]) > 0.0 && Dot(n, mean) > 0.0;
-      length += i > 1 ? Norm(pts[a] - pts[s]) : 0.0;
-    }
-    if (valid && length < bestLength)
-    {
-      best = static_cast<int>(s);
-      bestLength = length;
-    }
-  }
-  return best;
-}
+/// The per-cell loops run in chunks reporting progress, so that an abort
+/// stops them within a chunk.
+constexpr std::size_t Chunk = 8192;
 
-/// True when every loop point lies on the same face of the cell: the surface
-/// there is a cap over that face, and a triangle through the loop points alone
-/// would lie flat in the face, so the loop needs a vertex inside the cell.
-bool LiesOnOneFace(const std::vector<Vec3>& pts, const Box3& cell)
+/// Leaves that meet the surface (passed the tests or were stopped), in node
+/// order.
+std::vector<std::uint32_t> SurfaceLeaves(const AdaptiveOctree& tree)
 {
-  for (int a = 0; a < 3; ++a)
-  {
-    for (const double plane : { cell.lo[a], cell.hi[a] })
-    {
-      bool all = true;
-      for (const Vec3& p : pts)
-      {
-        all = all && p[a] == plane;
-      }
-      if (all)
-      {
-        return true;
-      }
-    }
-  }
-  return false;
-}
-} // namespace
-
-ExtractionResult ExtractSurface(const AdaptiveOctree& tree, const ImplicitScene& scene,
-  const ParallelFor& parallelFor, const ProgressCallback& progress)
-{
-  // The per-cell loops run in chunks reporting progress (loops 40 %, vertex
-  // sort 10 %, vertices 20 %, triangles 30 %), so that an abort stops them
-  // within a chunk.
-  constexpr std::size_t Chunk = 8192;
-  ExtractionResult result;
-  const RootGrid& grid = tree.Grid;
-  const auto& prims = scene.Primitives;
-
   std::vector<std::uint32_t> cells;
   for (std::size_t n = 0; n < tree.Nodes.size(); ++n)
   {
@@ -396,137 +249,161 @@ ExtractionResult ExtractSurface(const AdaptiveOctree& tree, const ImplicitScene&
       cells.push_back(static_cast<std::uint32_t>(n));
     }
   }
+  return cells;
+}
 
-  // 1. Loops of every cell.
-  std::vector<BoundaryLoopSet> loops(cells.size());
-  if (!ChunkedFor(cells.size(), Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
-    {
-      CellBoundary boundary = CellBoundaryBuilder(tree, cells[i]).Build();
-      loops[i] = TraceBoundaryLoops(boundary);
-    }
-  }, ProgressRange(progress, 0.0, 0.4)))
-  {
-    result.Aborted = true;
-    return result;
-  }
-
-  // 2. One vertex per distinct crossing. The crossings are bucketed by a
-  // hash of their edge key (in parallel, by blocks of cells), each bucket is
-  // sorted and deduplicated on its own; a vertex's id is its bucket's offset
-  // plus its rank there. (One global sort of tens of millions of records
-  // takes seconds without an abort check.)
+/// One vertex per distinct crossing of all loops, and which cell places it
+/// (the first in node order among the cells whose loops hold it, so that
+/// every piece of a split run picks the same one: ForestPartition.h).
+class CrossingVertices
+{
+public:
   struct Record
   {
     Crossing Vertex;
-    std::uint32_t CellIndex;
-  };
-  constexpr std::size_t Blocks = 64, Buckets = 256;
-  auto bucketOf = [](const Crossing& c) { return static_cast<std::size_t>((c.Key * 0x9E3779B97F4A7C15ULL) >> 56); };
-  std::vector<std::vector<Record>> parts(Blocks * Buckets);
-  parallelFor(Blocks, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t b = begin; b < end; ++b)
-    {
-      for (std::size_t i = cells.size() * b / Blocks; i < cells.size() * (b + 1) / Blocks; ++i)
-      {
-        for (const Crossing& c : loops[i].Crossings)
-        {
-          parts[b * Buckets + bucketOf(c)].push_back({ c, static_cast<std::uint32_t>(i) });
-        }
-      }
-    }
-  });
-  // In a piece of a split run, ghost cells take part in choosing each shared
-  // vertex's cell (as in the whole run) but give no triangles.
-  std::vector<std::uint8_t> own(cells.size());
-  for (std::size_t i = 0; i < cells.size(); ++i)
-  {
-    own[i] = tree.RoleOf(tree.Nodes[cells[i]]) == TreeRole::Own;
-    result.InconsistentCells += loops[i].Consistent || !own[i] ? 0 : 1;
-  }
-  std::vector<std::vector<Record>> buckets(Buckets);
-  if (!ChunkedFor(Buckets, 16, parallelFor, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k)
-    {
-      auto& bucket = buckets[k];
-      for (std::size_t b = 0; b < Blocks; ++b)
-      {
-        bucket.insert(bucket.end(), parts[b * Buckets + k].begin(), parts[b * Buckets + k].end());
-        std::vector<Record>().swap(parts[b * Buckets + k]);
-      }
-      std::sort(bucket.begin(), bucket.end(), [](const Record& a, const Record& b) {
-        return !a.Vertex.SameVertex(b.Vertex) ? a.Vertex < b.Vertex : a.CellIndex < b.CellIndex;
-      });
-      bucket.erase(std::unique(bucket.begin(), bucket.end(),
-                     [](const Record& a, const Record& b) { return a.Vertex.SameVertex(b.Vertex); }),
-        bucket.end());
-    }
-  }, ProgressRange(progress, 0.4, 0.5)))
-  {
-    result.Aborted = true;
-    return result;
-  }
-  std::vector<std::size_t> bucketStart(Buckets + 1, 0);
-  for (std::size_t k = 0; k < Buckets; ++k)
-  {
-    bucketStart[k + 1] = bucketStart[k] + buckets[k].size();
-  }
-  std::vector<Record> records(bucketStart[Buckets]);
-  parallelFor(Buckets, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t k = begin; k < end; ++k)
-    {
-      std::copy(buckets[k].begin(), buckets[k].end(), records.begin() + static_cast<std::ptrdiff_t>(bucketStart[k]));
-      std::vector<Record>().swap(buckets[k]);
-    }
-  });
-  auto vertexOf = [&](const Crossing& c) {
-    const std::size_t k = bucketOf(c);
-    const auto first = records.begin() + static_cast<std::ptrdiff_t>(bucketStart[k]);
-    const auto last = records.begin() + static_cast<std::ptrdiff_t>(bucketStart[k + 1]);
-    auto it = std::lower_bound(first, last, c, [](const Record& r, const Crossing& key) { return r.Vertex < key; });
-    return static_cast<std::uint32_t>(it - records.begin());
+    std::uint32_t CellIndex; ///< index into the surface leaves
   };
 
-  TriangleMesh& mesh = result.Mesh;
+  /// The crossings are bucketed by a hash of their edge key (in parallel, by
+  /// blocks of cells), each bucket is sorted and deduplicated on its own; a
+  /// vertex's id is its bucket's offset plus its rank there. (One global sort
+  /// of tens of millions of records takes seconds without an abort check.)
+  bool Build(const std::vector<BoundaryLoopSet>& loops, const ParallelFor& parallelFor,
+    const ProgressCallback& progress)
+  {
+    std::vector<std::vector<Record>> parts(Blocks * Buckets);
+    parallelFor(Blocks, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t b = begin; b < end; ++b)
+      {
+        for (std::size_t i = loops.size() * b / Blocks; i < loops.size() * (b + 1) / Blocks; ++i)
+        {
+          for (const Crossing& c : loops[i].Crossings)
+          {
+            parts[b * Buckets + BucketOf(c)].push_back({ c, static_cast<std::uint32_t>(i) });
+          }
+        }
+      }
+    });
+    std::vector<std::vector<Record>> buckets(Buckets);
+    if (!ChunkedFor(Buckets, 16, parallelFor, [&](std::size_t begin, std::size_t end) {
+          for (std::size_t k = begin; k < end; ++k)
+          {
+            SortBucket(parts, k, buckets[k]);
+          }
+        }, progress))
+    {
+      return false;
+    }
+    this->BucketStart.assign(Buckets + 1, 0);
+    for (std::size_t k = 0; k < Buckets; ++k)
+    {
+      this->BucketStart[k + 1] = this->BucketStart[k] + buckets[k].size();
+    }
+    this->Records.resize(this->BucketStart[Buckets]);
+    parallelFor(Buckets, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t k = begin; k < end; ++k)
+      {
+        std::copy(buckets[k].begin(), buckets[k].end(),
+          this->Records.begin() + static_cast<std::ptrdiff_t>(this->BucketStart[k]));
+        std::vector<Record>().swap(buckets[k]);
+      }
+    });
+    return true;
+  }
+
+  std::uint32_t IdOf(const Crossing& c) const
+  {
+    const std::size_t k = BucketOf(c);
+    const auto first = this->Records.begin() + static_cast<std::ptrdiff_t>(this->BucketStart[k]);
+    const auto last = this->Records.begin() + static_cast<std::ptrdiff_t>(this->BucketStart[k + 1]);
+    auto it = std::lower_bound(first, last, c, [](const Record& r, const Crossing& key) { return r.Vertex < key; });
+    return static_cast<std::uint32_t>(it - this->Records.begin());
+  }
+
+  std::vector<Record> Records;
+
+private:
+  static constexpr std::size_t Blocks = 64, Buckets = 256;
+  static std::size_t BucketOf(const Crossing& c)
+  {
+    return static_cast<std::size_t>((c.Key * 0x9E3779B97F4A7C15ULL) >> 56);
+  }
+  static void SortBucket(std::vector<std::vector<Record>>& parts, std::size_t k, std::vector<Record>& bucket)
+  {
+    for (std::size_t b = 0; b < Blocks; ++b)
+    {
+      bucket.insert(bucket.end(), parts[b * Buckets + k].begin(), parts[b * Buckets + k].end());
+      std::vector<Record>().swap(parts[b * Buckets + k]);
+    }
+    std::sort(bucket.begin(), bucket.end(), [](const Record& a, const Record& b) {
+      return !a.Vertex.SameVertex(b.Vertex) ? a.Vertex < b.Vertex : a.CellIndex < b.CellIndex;
+    });
+    bucket.erase(std::unique(bucket.begin(), bucket.end(),
+                   [](const Record& a, const Record& b) { return a.Vertex.SameVertex(b.Vertex); }),
+      bucket.end());
+  }
+
+  std::vector<std::size_t> BucketStart;
+};
+
+/// A surface crossing on its lattice sub-edge, found on the exact field, then
+/// put exactly on the sub-edge's line and strictly inside it: crossings of
+/// different sub-edges never coincide and a loop's chords meet only at their
+/// ends (LoopTriangulation.h).
+Vec3 PlaceCrossing(const Crossing& c, const RootGrid& grid, const CsgExpression& expression,
+  const PrimitiveSet& prims)
+{
+  const int axis = static_cast<int>(c.Key & 3);
+  std::uint32_t lo[3], hi[3];
+  SplitPointKey(c.Key >> 2, lo);
+  std::copy(lo, lo + 3, hi);
+  hi[axis] = c.Upper;
+  const Vec3 a = grid.Point(lo), b = grid.Point(hi);
+  const Vec3 found = FindEdgeCrossing(expression, prims, a, b, c.LowerInside);
+  Vec3 p = a;
+  p[axis] = std::clamp(found[axis], std::nextafter(a[axis], b[axis]), std::nextafter(b[axis], a[axis]));
+  return p;
+}
+
+/// Positions and normals of the crossing vertices, each placed by its cell.
+bool PlaceCrossingVertices(const CrossingVertices& vertices, const AdaptiveOctree& tree,
+  const std::vector<std::uint32_t>& cells, const PrimitiveSet& prims, TriangleMesh& mesh,
+  const ParallelFor& parallelFor, const ProgressCallback& progress)
+{
+  const auto& records = vertices.Records;
   mesh.Points.resize(records.size());
   mesh.Normals.resize(records.size());
-  const bool placed = ChunkedFor(records.size(), 4 * Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
+  return ChunkedFor(records.size(), 4 * Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i)
     {
       const Crossing& c = records[i].Vertex;
       if (c.Tile != 0)
       {
-        continue; // bend vertices are placed from their crossings below
+        continue; // bend vertices are placed from their crossings (PlaceBendVertices)
       }
-      const int axis = static_cast<int>(c.Key & 3);
-      std::uint32_t lo[3], hi[3];
-      SplitPointKey(c.Key >> 2, lo);
-      std::copy(lo, lo + 3, hi);
-      hi[axis] = c.Upper;
       const CsgExpression& e = *tree.Expressions[cells[records[i].CellIndex]];
-      const Vec3 p = FindEdgeCrossing(e, prims, grid.Point(lo), grid.Point(hi), c.LowerInside);
-      mesh.Points[i] = p;
-      mesh.Normals[i] = Normalized(e.Gradient(p, prims));
+      mesh.Points[i] = PlaceCrossing(c, tree.Grid, e, prims);
+      mesh.Normals[i] = Normalized(e.Gradient(mesh.Points[i], prims));
     }
-  }, ProgressRange(progress, 0.5, 0.7));
-  if (!placed)
+  }, progress);
+}
+
+/// Bends (cells stopped by a limit only, BoundaryLoops.h): between the run's
+/// two crossings, nudged off their line into the bend's tile so that bends
+/// of different tiles around the line do not coincide.
+void PlaceBendVertices(const CrossingVertices& vertices, TriangleMesh& mesh)
+{
+  for (std::size_t i = 0; i < vertices.Records.size(); ++i)
   {
-    result.Aborted = true;
-    return result;
-  }
-  for (std::size_t i = 0; i < records.size(); ++i)
-  {
-    const Crossing& c = records[i].Vertex;
+    const Crossing& c = vertices.Records[i].Vertex;
     if (c.Tile == 0)
     {
       continue;
     }
-    // Between the run's two crossings, nudged off their line into its tile so
-    // that bends of different tiles around the line do not coincide.
     Crossing first, last;
     first.Key = c.Key;
     last.Key = c.Partner;
-    const Vec3 a = mesh.Points[vertexOf(first)], b = mesh.Points[vertexOf(last)];
+    const Vec3 a = mesh.Points[vertices.IdOf(first)], b = mesh.Points[vertices.IdOf(last)];
     std::uint32_t corner[3], on[3];
     SplitPointKey((c.Tile - 1) >> 2, corner);
     SplitPointKey(c.Key >> 2, on);
@@ -535,154 +412,229 @@ ExtractionResult ExtractSurface(const AdaptiveOctree& tree, const ImplicitScene&
     Vec3 p = (a + b) * 0.5;
     p[across] += (on[across] == corner[across] ? 1e-3 : -1e-3) * Norm(b - a);
     mesh.Points[i] = p;
-    mesh.Normals[i] = Normalized(mesh.Normals[vertexOf(first)] + mesh.Normals[vertexOf(last)]);
+    mesh.Normals[i] = Normalized(mesh.Normals[vertices.IdOf(first)] + mesh.Normals[vertices.IdOf(last)]);
   }
+}
 
-  // 3. Triangulate each loop: a single triangle, or a fan around a vertex on
-  // the surface inside the cell.
-  struct CellTriangles
+/// The triangles of one cell; apex ids at or above LocalFlag index Apexes.
+struct CellPatches
+{
+  static constexpr std::uint32_t LocalFlag = 1u << 31;
+  std::vector<Vec3> Apexes;
+  std::vector<std::array<std::uint32_t, 3>> Triangles;
+};
+
+/// Spans every loop of one cell (LoopTriangulation.h), each apex in its own
+/// loop's region of the cell.
+void TriangulateCell(const BoundaryLoopSet& loops, const OctreeNode& node, const CsgExpression& expression,
+  const PrimitiveSet& prims, const RootGrid& grid, const CrossingVertices& vertices, const TriangleMesh& mesh,
+  CellPatches& out)
+{
+  const Box3 box = grid.CellBox(node.Level, node.Ijk);
+  std::uint32_t base[3];
+  CornerLattice(grid, node, 0, base);
+  const std::uint32_t size = 1u << (grid.MaxDepth - node.Level);
+  std::vector<std::vector<std::uint32_t>> ids;
+  std::vector<std::vector<LoopPoint>> points;
+  std::vector<Box3> boxes;
+  std::size_t offset = 0;
+  for (const std::uint32_t loopSize : loops.LoopSizes)
   {
-    std::vector<Vec3> Centers;
-    std::vector<std::array<std::uint32_t, 3>> Triangles; // center ids >= 2^31 are local
-  };
-  constexpr std::uint32_t LocalFlag = 1u << 31;
-  std::vector<CellTriangles> local(cells.size());
-  const bool triangulated = ChunkedFor(cells.size(), Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
-    std::vector<std::uint32_t> ids;
-    std::vector<Vec3> pts, normals;
-    std::vector<unsigned> faces;
-    for (std::size_t i = begin; i < end; ++i)
+    ids.emplace_back();
+    points.emplace_back();
+    Box3 b{ { HUGE_VAL, HUGE_VAL, HUGE_VAL }, { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL } };
+    for (std::uint32_t k = 0; k < loopSize; ++k)
     {
-      if (!own[i])
+      const Crossing& c = loops.Crossings[offset + k];
+      const std::uint32_t id = vertices.IdOf(c);
+      ids.back().push_back(id);
+      points.back().push_back({ mesh.Points[id], mesh.Normals[id], FacesOf(c, base, size) });
+      for (int a = 0; a < 3; ++a)
       {
-        continue;
-      }
-      const OctreeNode& node = tree.Nodes[cells[i]];
-      const Box3 box = grid.CellBox(node.Level, node.Ijk);
-      const int shift = grid.MaxDepth - node.Level;
-      std::uint32_t base[3];
-      CornerLattice(grid, node, 0, base);
-      std::size_t offset = 0;
-      for (const std::uint32_t size : loops[i].LoopSizes)
-      {
-        ids.clear();
-        pts.clear();
-        normals.clear();
-        faces.clear();
-        for (std::uint32_t k = 0; k < size; ++k)
-        {
-          const Crossing& c = loops[i].Crossings[offset + k];
-          const std::uint32_t id = vertexOf(c);
-          ids.push_back(id);
-          pts.push_back(mesh.Points[id]);
-          normals.push_back(mesh.Normals[id]);
-          faces.push_back(FacesOf(c, base, 1u << shift));
-        }
-        offset += size;
-        if (size < 3)
-        {
-          continue; // only from inconsistent input; counted above
-        }
-        if (size == 3 && !LiesOnOneFace(pts, box))
-        {
-          local[i].Triangles.push_back({ ids[0], ids[1], ids[2] });
-          continue;
-        }
-        const int apex = size > 3 ? LoopFanApex(pts, normals, faces) : -1;
-        if (apex >= 0)
-        {
-          for (std::uint32_t k = 1; k + 1 < size; ++k)
-          {
-            local[i].Triangles.push_back({ ids[static_cast<std::size_t>(apex)],
-              ids[(static_cast<std::size_t>(apex) + k) % size], ids[(static_cast<std::size_t>(apex) + k + 1) % size] });
-          }
-          continue;
-        }
-        const std::uint32_t center = LocalFlag | static_cast<std::uint32_t>(local[i].Centers.size());
-        local[i].Centers.push_back(
-          PlaceLoopVertex(pts, normals, box, *tree.Expressions[cells[i]], prims));
-        for (std::uint32_t k = 0; k < size; ++k)
-        {
-          local[i].Triangles.push_back({ ids[k], ids[(k + 1) % size], center });
-        }
+        b.lo[a] = std::min(b.lo[a], mesh.Points[id][a]);
+        b.hi[a] = std::max(b.hi[a], mesh.Points[id][a]);
       }
     }
-  }, ProgressRange(progress, 0.7, 1.0));
-  if (!triangulated)
-  {
-    result.Aborted = true;
-    return result;
+    boxes.push_back(b);
+    offset += loopSize;
   }
+  for (std::size_t l = 0; l < ids.size(); ++l)
+  {
+    const std::vector<std::uint32_t>& id = ids[l];
+    const std::size_t k = id.size();
+    if (k < 3)
+    {
+      continue; // only from inconsistent loops, counted by the caller
+    }
+    const Box3 region = ids.size() > 1 ? ApexRegion(boxes, l, box) : box;
+    const LoopPatch patch = TriangulateLoop(points[l], region, node.PlaneSection, expression, prims);
+    if (patch.Kind == LoopPatchKind::Triangle)
+    {
+      out.Triangles.push_back({ id[0], id[1], id[2] });
+    }
+    else if (patch.Kind == LoopPatchKind::LoopFan)
+    {
+      const std::size_t s = static_cast<std::size_t>(patch.FanPoint);
+      for (std::size_t i = 1; i + 1 < k; ++i)
+      {
+        out.Triangles.push_back({ id[s], id[(s + i) % k], id[(s + i + 1) % k] });
+      }
+    }
+    else
+    {
+      const std::uint32_t apex = CellPatches::LocalFlag | static_cast<std::uint32_t>(out.Apexes.size());
+      out.Apexes.push_back(patch.Apex);
+      for (std::size_t i = 0; i < k; ++i)
+      {
+        out.Triangles.push_back({ id[i], id[(i + 1) % k], apex });
+      }
+    }
+  }
+}
 
+/// Appends every cell's apexes and triangles to the mesh, in cell order.
+void AppendPatches(std::vector<CellPatches>& patches, const std::vector<std::uint32_t>& cells, TriangleMesh& mesh)
+{
   for (std::size_t i = 0; i < cells.size(); ++i)
   {
     const std::uint32_t base = static_cast<std::uint32_t>(mesh.Points.size());
-    for (const Vec3& c : local[i].Centers)
+    for (const Vec3& c : patches[i].Apexes)
     {
       mesh.Points.push_back(c);
       mesh.Normals.push_back(Vec3());
     }
-    for (auto t : local[i].Triangles)
+    for (auto t : patches[i].Triangles)
     {
       for (auto& v : t)
       {
-        if (v & LocalFlag)
-        {
-          v = base + (v & ~LocalFlag);
-        }
+        v = (v & CellPatches::LocalFlag) ? base + (v & ~CellPatches::LocalFlag) : v;
       }
       mesh.Triangles.push_back(t);
       mesh.TriangleCell.push_back(cells[i]);
     }
+    std::vector<Vec3>().swap(patches[i].Apexes);
+    std::vector<std::array<std::uint32_t, 3>>().swap(patches[i].Triangles);
   }
-  // Normals of loop vertices: area-weighted average of their fan.
-  const std::size_t crossings = records.size();
+}
+
+/// Normals of the apexes (ids from `firstApex` on): the area-weighted mean of
+/// their fans' triangles.
+void ApexNormals(TriangleMesh& mesh, std::size_t firstApex)
+{
   for (const auto& t : mesh.Triangles)
   {
     const Vec3 n = Cross(mesh.Points[t[1]] - mesh.Points[t[0]], mesh.Points[t[2]] - mesh.Points[t[0]]);
     for (const auto v : t)
     {
-      if (v >= crossings)
+      if (v >= firstApex)
       {
         mesh.Normals[v] += n;
       }
     }
   }
-  for (std::size_t v = crossings; v < mesh.Normals.size(); ++v)
+  for (std::size_t v = firstApex; v < mesh.Normals.size(); ++v)
   {
     mesh.Normals[v] = Normalized(mesh.Normals[v]);
   }
+}
+
+/// In a piece of a split run: only the vertices of own cells' triangles.
+void KeepUsedVertices(TriangleMesh& mesh)
+{
+  std::vector<std::uint32_t> index(mesh.Points.size(), UINT32_MAX);
+  for (const auto& t : mesh.Triangles)
+  {
+    for (const auto v : t)
+    {
+      index[v] = 0;
+    }
+  }
+  std::uint32_t kept = 0;
+  for (std::size_t v = 0; v < index.size(); ++v)
+  {
+    if (index[v] == 0)
+    {
+      index[v] = kept;
+      mesh.Points[kept] = mesh.Points[v];
+      mesh.Normals[kept] = mesh.Normals[v];
+      ++kept;
+    }
+  }
+  mesh.Points.resize(kept);
+  mesh.Normals.resize(kept);
+  for (auto& t : mesh.Triangles)
+  {
+    for (auto& v : t)
+    {
+      v = index[v];
+    }
+  }
+}
+} // namespace
+
+ExtractionResult ExtractSurface(const AdaptiveOctree& tree, const ImplicitScene& scene,
+  const ParallelFor& parallelFor, const ProgressCallback& progress)
+{
+  // Progress: loops 40 %, vertex numbering 10 %, vertices 20 %, triangles 30 %.
+  ExtractionResult result;
+  const auto& prims = scene.Primitives;
+  const std::vector<std::uint32_t> cells = SurfaceLeaves(tree);
+
+  std::vector<BoundaryLoopSet> loops(cells.size());
+  if (!ChunkedFor(cells.size(), Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+        {
+          CellBoundary boundary = CellBoundaryBuilder(tree, cells[i]).Build();
+          loops[i] = TraceBoundaryLoops(boundary);
+        }
+      }, ProgressRange(progress, 0.0, 0.4)))
+  {
+    result.Aborted = true;
+    return result;
+  }
+
+  // In a piece of a split run, ghost cells take part in choosing each shared
+  // vertex's cell (as in the whole run) but give no triangles.
+  CrossingVertices vertices;
+  if (!vertices.Build(loops, parallelFor, ProgressRange(progress, 0.4, 0.5)) ||
+    !PlaceCrossingVertices(vertices, tree, cells, prims, result.Mesh, parallelFor, ProgressRange(progress, 0.5, 0.7)))
+  {
+    result.Aborted = true;
+    return result;
+  }
+  PlaceBendVertices(vertices, result.Mesh);
+
+  std::vector<std::uint8_t> own(cells.size());
+  for (std::size_t i = 0; i < cells.size(); ++i)
+  {
+    own[i] = tree.RoleOf(tree.Nodes[cells[i]]) == TreeRole::Own;
+  }
+  std::vector<CellPatches> patches(cells.size());
+  if (!ChunkedFor(cells.size(), Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+        {
+          if (own[i])
+          {
+            TriangulateCell(loops[i], tree.Nodes[cells[i]], *tree.Expressions[cells[i]], prims, tree.Grid, vertices,
+              result.Mesh, patches[i]);
+          }
+        }
+      }, ProgressRange(progress, 0.7, 1.0)))
+  {
+    result.Aborted = true;
+    return result;
+  }
+  for (std::size_t i = 0; i < cells.size(); ++i)
+  {
+    result.InconsistentCells += own[i] && !loops[i].Consistent ? 1 : 0;
+    result.CellsWithoutPatch += own[i] && patches[i].Triangles.empty() ? 1 : 0;
+  }
+  const std::size_t firstApex = result.Mesh.Points.size();
+  AppendPatches(patches, cells, result.Mesh);
+  ApexNormals(result.Mesh, firstApex);
   if (!tree.Roles.empty())
   {
-    // Only the vertices of own cells' triangles.
-    std::vector<std::uint32_t> index(mesh.Points.size(), UINT32_MAX);
-    for (const auto& t : mesh.Triangles)
-    {
-      for (const auto v : t)
-      {
-        index[v] = 0;
-      }
-    }
-    std::uint32_t kept = 0;
-    for (std::size_t v = 0; v < index.size(); ++v)
-    {
-      if (index[v] == 0)
-      {
-        index[v] = kept;
-        mesh.Points[kept] = mesh.Points[v];
-        mesh.Normals[kept] = mesh.Normals[v];
-        ++kept;
-      }
-    }
-    mesh.Points.resize(kept);
-    mesh.Normals.resize(kept);
-    for (auto& t : mesh.Triangles)
-    {
-      for (auto& v : t)
-      {
-        v = index[v];
-      }
-    }
+    KeepUsedVertices(result.Mesh);
   }
   return result;
 }

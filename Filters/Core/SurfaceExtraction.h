@@ -9,9 +9,10 @@
 // On each tile of a face, every run of inside points along the tile's boundary
 // is cut off by one segment between the two crossings that bound the run;
 // the segments chain into the disk's boundary loop, which is triangulated as
-// a fan around a vertex placed on the surface inside the cell - or, where the
-// surface is smooth in the cell, as Marching Cubes does, by a fan from one of
-// the loop's own points whose diagonals avoid the cell's faces. Both cells
+// a fan around an apex strictly inside the cell - or, where the surface is
+// smooth in the cell, as Marching Cubes does, by a fan from one of the loop's
+// own points - so that the surface is embedded by construction
+// (LoopTriangulation.h). Both cells
 // sharing a tile compute the same segments from the same points, and a
 // crossing is identified by the finest lattice sub-edge that contains it, so
 // no crack can appear and every edge of the output has exactly two
@@ -35,6 +36,11 @@ struct ExtractionResult
   /// Cells whose boundary crossings did not close into loops (never expected;
   /// reported rather than hidden).
   std::size_t InconsistentCells = 0;
+  /// Cells that may hold surface (passed, or stopped by a limit) without a
+  /// patch: no crossings on their boundary (a complex voxel left by a limit).
+  /// The surface there, if any, is missing from the mesh, so no Hausdorff
+  /// bound holds.
+  std::size_t CellsWithoutPatch = 0;
   /// `progress` asked to stop: the mesh is incomplete.
   bool Aborted = false;
 };

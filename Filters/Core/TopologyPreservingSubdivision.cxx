@@ -385,6 +385,7 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
       if (v.Kind == McVerdict::Pass)
       {
         node.State = CellState::Surface;
+        node.PlaneSection = v.Planar;
         result.SurfaceCells += mine;
         result.PlanarSurfaceCells += v.Planar ? mine : 0;
         result.HausdorffBound = std::max(result.HausdorffBound,

@@ -1,9 +1,17 @@
 // Helpers for the filter tests: run the filter, read its report, and measure
 // the output's topology independently with VTK filters (connectivity,
 // feature edges, edge extraction) rather than with the core's own report.
+// Every run's "Embedded" field is held against CGAL's self-intersection test.
 #pragma once
 
+#include "CgalEmbedding.h"
 #include "vtkTopologyPreservingContour.h"
+
+#include "vtkCellArray.h"
+#include "vtkIdList.h"
+#include "vtkPoints.h"
+
+#include <gtest/gtest.h>
 
 #include "vtkCallbackCommand.h"
 #include "vtkCleanPolyData.h"
@@ -39,9 +47,29 @@ struct FilterResult
   int Euler = 0;
   int Guaranteed = -1;
   int Unresolved = -1;
+  int Embedded = -1;
   double HausdorffBound = 0.0;
   double Tolerance = 0.0;
 };
+
+/// CGAL's verdict on a triangle surface, with its own point ids.
+inline tpcoracle::EmbeddingVerdict CgalVerdict(vtkPolyData* surface)
+{
+  std::vector<std::array<double, 3>> points(static_cast<std::size_t>(surface->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i)
+  {
+    surface->GetPoint(i, points[static_cast<std::size_t>(i)].data());
+  }
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < surface->GetNumberOfCells(); ++c)
+  {
+    surface->GetCellPoints(c, ids);
+    triangles.push_back({ static_cast<std::uint32_t>(ids->GetId(0)), static_cast<std::uint32_t>(ids->GetId(1)),
+      static_cast<std::uint32_t>(ids->GetId(2)) });
+  }
+  return tpcoracle::CheckEmbeddingWithCgal(points, triangles);
+}
 
 inline FilterResult Run(vtkTopologyPreservingContour* filter)
 {
@@ -54,6 +82,14 @@ inline FilterResult Run(vtkTopologyPreservingContour* filter)
   r.Euler = static_cast<int>(FieldValue(r.Surface, "EulerCharacteristic"));
   r.Guaranteed = static_cast<int>(FieldValue(r.Surface, "TopologyGuaranteed"));
   r.Unresolved = static_cast<int>(FieldValue(r.Surface, "UnresolvedCells"));
+  r.Embedded = static_cast<int>(FieldValue(r.Surface, "Embedded"));
+  if (r.Surface->GetNumberOfCells() > 0)
+  {
+    const tpcoracle::EmbeddingVerdict cgal = CgalVerdict(r.Surface);
+    EXPECT_TRUE(!cgal.Checked || (r.Embedded == 1) == cgal.Embedded())
+      << "CGAL: " << cgal.SelfIntersectingPairs << " self-intersecting pairs, " << cgal.CoincidentVertices
+      << " coincident vertices";
+  }
   r.HausdorffBound = FieldValue(r.Surface, "HausdorffBound");
   r.Tolerance = FieldValue(r.Surface, "AbsoluteTolerance");
   return r;

@@ -205,10 +205,11 @@ TEST(HyperTreeGrid, TrianglesLieInTheSurfaceLeavesTheyName)
     vtkStringArray::SafeDownCast(grid->GetFieldData()->GetAbstractArray("SplitReasonNames"));
   auto* stateNames = vtkStringArray::SafeDownCast(grid->GetFieldData()->GetAbstractArray("CellStateNames"));
   ASSERT_TRUE(reasonNames && stateNames);
-  ASSERT_EQ(reasonNames->GetNumberOfValues(), 11);
+  ASSERT_EQ(reasonNames->GetNumberOfValues(), 12);
   EXPECT_EQ(reasonNames->GetValue(3), "complex edge");
   EXPECT_EQ(reasonNames->GetValue(9), "limit reached");
   EXPECT_EQ(reasonNames->GetValue(10), "surfaces too close");
+  EXPECT_EQ(reasonNames->GetValue(11), "patch not embedded");
   ASSERT_EQ(stateNames->GetNumberOfValues(), 5);
   EXPECT_EQ(stateNames->GetValue(3), "unresolved");
 }

@@ -12,7 +12,10 @@
 //   3. a valid mesh combined with primitives.
 // Properties, on every input: no crash and no sanitizer report; bounded time
 // (small depth and cell limits); a closed, manifold, oriented output with a
-// consistent extraction even where limits stopped refinement; and where the
+// consistent extraction even where limits stopped refinement; the core's exact
+// embedding check agreeing with CGAL's self-intersection test, and an
+// embedded output wherever every cell passed the tests (the patches are
+// embedded by construction, LoopTriangulation.h); and where the
 // guarantee holds (no unresolved cell) on a scene of known topology - kind 1,
 // and meshes meeting the paper's assumptions, whose own topology is the
 // reference (the surface of a closed, manifold, self-intersection-free mesh
@@ -37,14 +40,15 @@ struct Tally
 {
   long Scenes[4] = { 0, 0, 0, 0 };
   long Contoured = 0, NonEmpty = 0, Guaranteed = 0, TopologyChecked = 0, MeshesRefused = 0, TightLimits = 0;
+  long NotEmbedded = 0;
   ~Tally()
   {
     std::fprintf(stderr,
       "FuzzCore: %ld random CSG, %ld known topology, %ld meshes, %ld meshes with primitives; "
-      "%ld contoured (%ld non-empty, %ld guaranteed), %ld topologies checked against the reference, "
-      "%ld broken meshes refused; %ld inputs with tight limits\n",
-      Scenes[0], Scenes[1], Scenes[2], Scenes[3], Contoured, NonEmpty, Guaranteed, TopologyChecked, MeshesRefused,
-      TightLimits);
+      "%ld contoured (%ld non-empty, %ld guaranteed, %ld not embedded where a limit stopped cells), "
+      "%ld topologies checked against the reference, %ld broken meshes refused; %ld inputs with tight limits\n",
+      Scenes[0], Scenes[1], Scenes[2], Scenes[3], Contoured, NonEmpty, Guaranteed, NotEmbedded, TopologyChecked,
+      MeshesRefused, TightLimits);
   }
 } tally;
 
@@ -161,11 +165,17 @@ tpctest::ContourRun RunAndCheck(FuzzedDataProvider& in, const tpc::ImplicitScene
       r.Subdivision.Octree.MemoryBytes());
   }
   r.Extraction = tpc::ExtractSurface(r.Subdivision.Octree, scene);
+  r.Embedding = tpc::CheckEmbedding(r.Subdivision.Octree, r.Extraction.Mesh);
   r.Report = tpc::ComputeTopologyReport(r.Extraction.Mesh);
   ++tally.Contoured;
   tally.NonEmpty += r.Extraction.Mesh.Triangles.empty() ? 0 : 1;
-  tally.Guaranteed += r.Subdivision.UnresolvedCells == 0 && !r.Subdivision.CellLimitReached ? 1 : 0;
+  tally.Guaranteed += tpctest::Guaranteed(r) ? 1 : 0;
+  tally.NotEmbedded += r.Embedding.Embedded() ? 0 : 1;
   Require(r.Extraction.InconsistentCells == 0, "every cell's crossings close into loops");
+  Require(r.Embedding.Embedded() == tpctest::CgalVerdict(r.Extraction.Mesh).Embedded(),
+    "the exact embedding check agrees with CGAL's self-intersection test");
+  Require(r.Embedding.Embedded() || r.Subdivision.UnresolvedCells > 0,
+    "embedded wherever every cell passed the tests");
   if (!r.Extraction.Mesh.Triangles.empty())
   {
     Require(r.Report.Closed, "closed output");
@@ -178,10 +188,6 @@ tpctest::ContourRun RunAndCheck(FuzzedDataProvider& in, const tpc::ImplicitScene
   return r;
 }
 
-bool Guaranteed(const tpctest::ContourRun& r)
-{
-  return r.Subdivision.UnresolvedCells == 0 && !r.Subdivision.CellLimitReached;
-}
 
 /// `t` combined with `more` random primitives by random operations, clipped
 /// to a box (as the filter clips to its Bounds), contoured and checked.
@@ -241,7 +247,7 @@ void KnownTopology(FuzzedDataProvider& in)
     bounds = { { -0.25, -0.3, -0.2 }, { 0.5 * m - 0.25, 0.3, 0.2 } };
   }
   const tpctest::ContourRun r = RunAndCheck(in, b.Scene, bounds);
-  if (Guaranteed(r))
+  if (tpctest::Guaranteed(r))
   {
     ++tally.TopologyChecked;
     Require(r.Report.Components == components, "components of a scene of known topology");
@@ -330,7 +336,7 @@ void MeshScene(FuzzedDataProvider& in, bool withPrimitives)
   }
   b.Finish(t);
   const tpctest::ContourRun r = RunAndCheck(in, b.Scene, bounds);
-  if (Guaranteed(r))
+  if (tpctest::Guaranteed(r))
   {
     ++tally.TopologyChecked;
     Require(r.Report.Components == static_cast<std::int64_t>(report.Components), "components of the input mesh");

@@ -61,7 +61,7 @@ writer.SetInputData(piece)
 writer.SetFileName(os.path.join(work, f"piece{rank}.vtp"))
 writer.Write()
 report = {name: field(piece, name) for name in ("Components", "Genus", "EulerCharacteristic", "TopologyGuaranteed",
-                                                "Closed", "Manifold")}
+                                                "Closed", "Manifold", "Embedded")}
 trees = grid.GetMaxNumberOfTrees()
 present = sum(1 for t in range(trees) if grid.GetTree(t) is not None)
 print(f"rank {rank}: {piece.GetNumberOfPolys()} triangles, {present} of {trees} trees, report {report}", flush=True)
@@ -77,7 +77,7 @@ def check(ok, what):
 
 
 check(report["Components"] == 2 and report["Genus"] == 1 and report["Closed"] == 1 and report["Manifold"] == 1
-      and report["TopologyGuaranteed"] == 1, f"the report describes the whole surface: {report}")
+      and report["Embedded"] == 1 and report["TopologyGuaranteed"] == 1, f"the report describes the whole surface: {report}")
 check(0 < present < trees, "the grid holds this rank's own trees only")
 if rank == 0:
     # The same scene as one piece (no collective call: piece 0 of 1).

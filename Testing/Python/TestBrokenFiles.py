@@ -17,7 +17,10 @@ from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 from TopologyChecks import measure
 
 tpcontour, work = sys.argv[1:3]
+# The folders of openscad-testing-data only: where Debian's openscad is
+# installed too, /usr/share/openscad/examples holds OpenSCAD's example STLs.
 root = "/usr/share/openscad"
+folders = ("testdata", "regression")
 os.makedirs(work, exist_ok=True)
 failures = []
 
@@ -55,7 +58,7 @@ expected = {
     "unparseable.stl": (1, "Parse error"),
 }
 
-files = sorted(glob.glob(os.path.join(root, "**", "*.stl"), recursive=True))
+files = sorted(f for folder in folders for f in glob.glob(os.path.join(root, folder, "**", "*.stl"), recursive=True))
 if not files:
     sys.exit(f"no STL files under {root}: install Debian's openscad-testing-data (scripts/setup.sh does)")
 check(sorted(os.path.basename(f) for f in files) == sorted(expected),

@@ -1,0 +1,317 @@
+#include "LoopTriangulation.h"
+
+#include "SymmetricEigen.h"
+
+#include <cmath>
+
+namespace tpc
+{
+namespace
+{
+/// Fraction of the apex region's width kept free on each side: an apex
+/// recovering a feature that lies on the cell's boundary moves inward by at
+/// most this much (the patch still lies in the cell, so the Hausdorff bound
+/// is unchanged), and its triangles stay away from the neighbours' patches.
+constexpr double ApexMargin = 1.0 / 32.0;
+
+Vec3 Centroid(const std::vector<LoopPoint>& loop)
+{
+  Vec3 m;
+  for (const LoopPoint& p : loop)
+  {
+    m += p.Position;
+  }
+  return m * (1.0 / static_cast<double>(loop.size()));
+}
+
+/// `box` shrunk by `fraction` of its width on each side.
+Box3 Shrunk(const Box3& box, double fraction)
+{
+  Box3 b = box;
+  for (int a = 0; a < 3; ++a)
+  {
+    const double d = fraction * box.Width(a);
+    b.lo[a] += d;
+    b.hi[a] -= d;
+  }
+  return b;
+}
+
+/// The point of the open box nearest to `p` on each axis: `p` itself where it
+/// is strictly inside, else the representable value next to the violated side
+/// (or the midpoint for a box too thin to hold one).
+Vec3 ClampStrictlyInside(const Vec3& p, const Box3& box)
+{
+  Vec3 q = p;
+  for (int a = 0; a < 3; ++a)
+  {
+    const double lo = std::nextafter(box.lo[a], HUGE_VAL), hi = std::nextafter(box.hi[a], -HUGE_VAL);
+    q[a] = lo <= hi ? std::clamp(p[a], lo, hi) : 0.5 * (box.lo[a] + box.hi[a]);
+  }
+  return q;
+}
+
+/// Every fan triangle faces the way the surface normals at its two loop
+/// points do (a fan around a badly placed apex folds over).
+bool FanIsConsistent(const std::vector<LoopPoint>& loop, const Vec3& apex)
+{
+  const std::size_t m = loop.size();
+  for (std::size_t k = 0; k < m; ++k)
+  {
+    const LoopPoint& a = loop[k];
+    const LoopPoint& b = loop[(k + 1) % m];
+    const Vec3 n = Cross(b.Position - a.Position, apex - a.Position);
+    if (Dot(n, a.Normal + b.Normal) <= 0.0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// The point minimizing the squared distances to the tangent planes at the
+/// loop's crossings (Extended Marching Cubes' feature point), with a
+/// truncated pseudo-inverse: along flat directions it stays at the centroid.
+Vec3 TangentPlanesPoint(const std::vector<LoopPoint>& loop, const Vec3& centroid)
+{
+  double ata[3][3] = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } };
+  double atb[3] = { 0, 0, 0 };
+  for (const LoopPoint& p : loop)
+  {
+    const Vec3& n = p.Normal;
+    const double d = Dot(n, p.Position - centroid);
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        ata[i][j] += n[i] * n[j];
+      }
+      atb[i] += n[i] * d;
+    }
+  }
+  Vec3 delta;
+  SolveTruncated(ata, atb, 0.1, delta.x);
+  return centroid + delta;
+}
+
+/// The face of the cell (CubeTopology.h numbering) holding every loop point,
+/// or -1.
+int CommonFace(const std::vector<LoopPoint>& loop)
+{
+  unsigned common = 0x3F;
+  for (const LoopPoint& p : loop)
+  {
+    common &= p.Faces;
+  }
+  for (int f = 0; f < 6; ++f)
+  {
+    if (common & (1u << f))
+    {
+      return f;
+    }
+  }
+  return -1;
+}
+
+/// For a loop lying on one face of the cell the surface is a cap over that
+/// face, and the tangent planes leave the apex's height free: the apex is
+/// where the line from the loop's centroid along the inward normal first
+/// leaves the centroid's side of the surface (16 samples across the region,
+/// then bisection), or the region's middle along it.
+Vec3 CapApex(const Vec3& centroid, int face, const Box3& region, const CsgExpression& expression,
+  const PrimitiveSet& primitives)
+{
+  const int axis = face / 2;
+  const double from = face % 2 ? region.hi[axis] : region.lo[axis];
+  const double to = face % 2 ? region.lo[axis] : region.hi[axis];
+  Vec3 p = centroid;
+  auto at = [&](double t) {
+    p[axis] = from + (to - from) * t;
+    return p;
+  };
+  constexpr int Samples = 16;
+  const bool start = expression.IsInside(at(0.5 / Samples), primitives);
+  double lo = 0.5 / Samples, hi = -1.0;
+  for (int s = 1; s < Samples && hi < 0.0; ++s)
+  {
+    const double t = (s + 0.5) / Samples;
+    if (expression.IsInside(at(t), primitives) != start)
+    {
+      hi = t;
+    }
+    else
+    {
+      lo = t;
+    }
+  }
+  if (hi < 0.0)
+  {
+    return at(0.5);
+  }
+  for (int it = 0; it < 30; ++it)
+  {
+    const double t = 0.5 * (lo + hi);
+    (expression.IsInside(at(t), primitives) == start ? lo : hi) = t;
+  }
+  return at(0.5 * (lo + hi));
+}
+
+/// Newton steps from the centroid toward the surface, kept in `box`.
+Vec3 ProjectedCentroid(const Vec3& centroid, const Box3& box, const CsgExpression& expression,
+  const PrimitiveSet& primitives)
+{
+  Vec3 y = centroid;
+  for (int it = 0; it < 4; ++it)
+  {
+    const Vec3 g = expression.Gradient(y, primitives);
+    const double gg = Dot(g, g);
+    if (gg <= 0.0)
+    {
+      break;
+    }
+    y = box.Clamp(y - g * (expression.Value(y, primitives) / gg));
+  }
+  return y;
+}
+
+Vec3 PlaceApex(const std::vector<LoopPoint>& loop, const Box3& region, bool planeSection,
+  const CsgExpression& expression, const PrimitiveSet& primitives)
+{
+  const Vec3 centroid = Centroid(loop);
+  if (planeSection)
+  {
+    // In the loop's plane (up to rounding): the patch is the plane section.
+    return ClampStrictlyInside(centroid, region);
+  }
+  const Box3 inner = Shrunk(region, ApexMargin);
+  const Vec3 feature = inner.Clamp(TangentPlanesPoint(loop, centroid));
+  if (FanIsConsistent(loop, feature))
+  {
+    return ClampStrictlyInside(feature, region);
+  }
+  const int face = CommonFace(loop);
+  const Vec3 fallback = face >= 0 ? inner.Clamp(CapApex(centroid, face, region, expression, primitives))
+                                  : ProjectedCentroid(centroid, inner, expression, primitives);
+  return ClampStrictlyInside(FanIsConsistent(loop, fallback) ? fallback : inner.Clamp(centroid), region);
+}
+
+/// Marching Cubes' fan: the loop point whose fan satisfies case 2 of the
+/// header (no other point on a face with it but its neighbours) and faces
+/// the way the normals do, with the shortest diagonals; -1 if none. Used
+/// where the surface is smooth in the cell (every crossing normal within 25
+/// degrees of their mean: no crease or corner for an apex to keep sharp).
+int LoopFanPoint(const std::vector<LoopPoint>& loop)
+{
+  const std::size_t m = loop.size();
+  Vec3 mean;
+  for (const LoopPoint& p : loop)
+  {
+    mean += p.Normal;
+  }
+  mean = Normalized(mean);
+  for (const LoopPoint& p : loop)
+  {
+    if (!(Dot(p.Normal, mean) >= 0.906)) // cos 25 degrees (also rejects zero normals)
+    {
+      return -1;
+    }
+  }
+  int best = -1;
+  double bestLength = HUGE_VAL;
+  for (std::size_t s = 0; s < m; ++s)
+  {
+    double length = 0.0;
+    bool valid = true;
+    for (std::size_t i = 2; i + 1 < m && valid; ++i)
+    {
+      valid = (loop[s].Faces & loop[(s + i) % m].Faces) == 0;
+      length += Norm(loop[(s + i) % m].Position - loop[s].Position);
+    }
+    for (std::size_t i = 1; i + 1 < m && valid; ++i)
+    {
+      const LoopPoint& a = loop[(s + i) % m];
+      const LoopPoint& b = loop[(s + i + 1) % m];
+      const Vec3 n = Cross(a.Position - loop[s].Position, b.Position - loop[s].Position);
+      valid = Dot(n, loop[s].Normal + a.Normal + b.Normal) > 0.0 && Dot(n, mean) > 0.0;
+    }
+    if (valid && length < bestLength)
+    {
+      best = static_cast<int>(s);
+      bestLength = length;
+    }
+  }
+  return best;
+}
+} // namespace
+
+bool StrictlyInside(const Vec3& p, const Box3& box)
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    if (!(p[a] > box.lo[a] && p[a] < box.hi[a]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+Box3 ApexRegion(const std::vector<Box3>& loopBoxes, std::size_t i, const Box3& cell)
+{
+  Box3 region = cell;
+  const Box3& own = loopBoxes[i];
+  for (std::size_t j = 0; j < loopBoxes.size(); ++j)
+  {
+    if (j == i)
+    {
+      continue;
+    }
+    const Box3& other = loopBoxes[j];
+    // The axis with the widest gap between the two boxes, if any.
+    int axis = -1;
+    double gap = 0.0, cut = 0.0;
+    bool below = false;
+    for (int a = 0; a < 3; ++a)
+    {
+      const double up = other.lo[a] - own.hi[a], down = own.lo[a] - other.hi[a];
+      if (up > gap || down > gap)
+      {
+        axis = a;
+        below = up > down;
+        gap = std::max(up, down);
+        cut = below ? 0.5 * (own.hi[a] + other.lo[a]) : 0.5 * (other.hi[a] + own.lo[a]);
+      }
+    }
+    if (axis >= 0)
+    {
+      (below ? region.hi[axis] : region.lo[axis]) =
+        below ? std::min(region.hi[axis], cut) : std::max(region.lo[axis], cut);
+    }
+  }
+  return region;
+}
+
+LoopPatch TriangulateLoop(const std::vector<LoopPoint>& loop, const Box3& region, bool planeSection,
+  const CsgExpression& expression, const PrimitiveSet& primitives)
+{
+  LoopPatch patch;
+  if (loop.size() == 3 && CommonFace(loop) < 0)
+  {
+    patch.Kind = LoopPatchKind::Triangle;
+    return patch;
+  }
+  if (loop.size() > 3)
+  {
+    patch.FanPoint = LoopFanPoint(loop);
+    if (patch.FanPoint >= 0)
+    {
+      patch.Kind = LoopPatchKind::LoopFan;
+      return patch;
+    }
+  }
+  patch.Kind = LoopPatchKind::ApexFan;
+  patch.Apex = PlaceApex(loop, region, planeSection, expression, primitives);
+  return patch;
+}
+
+} // namespace tpc

@@ -1,0 +1,32 @@
+// An oracle for the tests, independent of the core's own exact check
+// (SurfaceEmbedding.h): CGAL's self-intersection test on a triangle mesh with
+// its own vertex ids, and an exact count of vertices at the coordinates of
+// another. CGAL is GPL: it is linked into test programs only, never into the
+// product.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace tpcoracle
+{
+
+struct EmbeddingVerdict
+{
+  std::size_t SelfIntersectingPairs = 0; ///< CGAL::Polygon_mesh_processing::self_intersections
+  std::size_t CoincidentVertices = 0;    ///< vertices with the coordinates of an earlier one
+  bool PolygonMesh = true;               ///< CGAL took the triangles as one oriented manifold mesh
+  /// False when TPC_SKIP_CGAL_ORACLE is set: under valgrind, which does not
+  /// emulate the rounding modes CGAL's interval filters switch to, CGAL's
+  /// predicates give wrong answers.
+  bool Checked = true;
+
+  bool Embedded() const { return this->SelfIntersectingPairs == 0 && this->CoincidentVertices == 0; }
+};
+
+EmbeddingVerdict CheckEmbeddingWithCgal(
+  const std::vector<std::array<double, 3>>& points, const std::vector<std::array<std::uint32_t, 3>>& triangles);
+
+} // namespace tpcoracle
