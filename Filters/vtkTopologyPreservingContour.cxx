@@ -26,6 +26,7 @@
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
+#include "ExactCell.h"
 #include "PieceTopology.h"
 #include "SurfaceEmbedding.h"
 #include "SurfaceExtraction.h"
@@ -59,6 +60,7 @@ struct Report
   int Manifold = 0;
   int Embedded = 0;
   long long PlanarCells = 0;
+  long long ExactCells = 0;
   double HausdorffBound = 0.0;
   double Tolerance = 0.0;
 };
@@ -81,6 +83,7 @@ void AddReport(vtkDataObject* output, const Report& r)
   addInt("Manifold", r.Manifold);
   addInt("Embedded", r.Embedded);
   addInt("PlanarCells", r.PlanarCells);
+  addInt("ExactCells", r.ExactCells);
   vtkNew<vtkDoubleArray> h;
   h->SetName("HausdorffBound");
   h->InsertNextValue(r.HausdorffBound);
@@ -460,6 +463,9 @@ int vtkTopologyPreservingContour::RequestData(
   params.HausdorffTolerance = tolerance;
   params.MaximumDepth = this->MaximumDepth;
   params.MaximumNumberOfCells = static_cast<std::size_t>(std::max<vtkIdType>(this->MaximumNumberOfCells, 8));
+  // Remeshing one valid closed mesh: where the tests cannot resolve a cell at
+  // the tolerance's size, its patch is the mesh itself (ExactCell.h).
+  params.ExactCells = assumptionsMet && tpc::IsOneMesh(*scene.Expression);
   if (!assumptionsMet)
   {
     // The guarantee is lost anyway, and self-intersections are complex at
@@ -559,6 +565,7 @@ int vtkTopologyPreservingContour::RequestData(
   all.DepthLimitReached = piece.Sum(sub.DepthLimitReached ? 1 : 0) > 0;
   all.CellLimitReached = piece.Sum(sub.CellLimitReached ? 1 : 0) > 0;
   all.PlanarSurfaceCells = piece.Sum(sub.PlanarSurfaceCells);
+  all.ExactCells = piece.Sum(sub.ExactCells);
   for (int r = 0; r < tpc::SplitReasonCount; ++r)
   {
     all.UnresolvedByReason[r] = piece.Sum(sub.UnresolvedByReason[r]);
@@ -610,6 +617,7 @@ int vtkTopologyPreservingContour::RequestData(
   report.HausdorffBound = withoutPatch == 0 ? all.HausdorffBound : std::nan("");
   report.Embedded = notEmbedded == 0 ? 1 : 0;
   report.PlanarCells = static_cast<long long>(all.PlanarSurfaceCells);
+  report.ExactCells = static_cast<long long>(all.ExactCells);
   report.Tolerance = tolerance;
   report.Components = whole.Components;
   report.Genus = whole.Genus;

@@ -34,9 +34,10 @@
  *   leaves), "SizeReason" (the parent's SplitReason: why the cell is as small
  *   as it is; the active scalars, as renderers draw leaves), "CellState"
  *   (0 inside, 1 outside, 2 surface cell that passed every test, 3 surface cell
- *   stopped by a limit or whose patch failed the embedding check, 4 refined) and
- *   "FailedTest" (for state 3, the test that still failed, as a SplitReasons
- *   value). Field data "SplitReasonNames" and
+ *   stopped by a limit or whose patch failed the embedding check, 4 refined,
+ *   5 exact: a cell of one input mesh the tests could not resolve, whose patch
+ *   is that mesh clipped to it) and "FailedTest" (for states 3 and 5, the
+ *   test that failed, as a SplitReasons value). Field data "SplitReasonNames" and
  *   "CellStateNames" (string arrays indexed by value) name the values.
  * - Port 1, vtkPolyData: triangles with point "Normals" and cell data
  *   "GridCell" (the hyper tree grid cell each triangle was extracted from).
@@ -52,7 +53,8 @@
  *   section count the finest lattice cell's; NaN when not proven: a limit
  *   stopped a cell that may hold surface without a patch), "PlanarCells" (surface cells
  *   kept larger than epsilon because the surface in them is a plane section -
- *   a plane, a box face or coplanar mesh triangles - so their patch is exact)
+ *   a plane, a box face or coplanar mesh triangles - so their patch is exact),
+ *   "ExactCells" (cells whose patch is the input mesh clipped to them)
  *   and "AbsoluteTolerance" (epsilon in world units).
  *
  * When the guarantee cannot be reached (tangential contact, depth or cell

@@ -51,6 +51,8 @@ const char* CellStateName(CellState s)
       return "unresolved";
     case CellState::Refined:
       return "refined";
+    case CellState::Exact:
+      return "exact input";
   }
   return "unknown";
 }

@@ -75,6 +75,7 @@ void TileSegments(const std::vector<FacePoint>& poly, int axis, std::uint32_t pl
     // Both cells sharing the tile must name the bend alike, and they walk the
     // tile in opposite directions: use the ordered pair of crossings.
     Crossing bend;
+    bend.Kind = CrossingKind::Bend;
     bend.Key = std::min(in.Key, out.Key);
     bend.Tile = ((TileCorner(axis, plane, tile, 0) << 2) | static_cast<std::uint64_t>(axis)) + 1;
     bend.Partner = std::max(in.Key, out.Key);
@@ -113,8 +114,13 @@ void FaceSegments(const CellBoundary& b, int f, std::vector<Segment>& segments)
   };
 
   std::vector<FacePoint> polygon;
-  for (const FaceTile& t : b.Tiles[f])
+  for (std::size_t k = 0; k < b.Tiles[f].size(); ++k)
   {
+    if (k < b.ExactTile[f].size() && b.ExactTile[f][k])
+    {
+      continue; // drawn exactly: b.ExactSegments
+    }
+    const FaceTile& t = b.Tiles[f][k];
     const std::uint32_t u0 = t.U0, v0 = t.V0, u1 = t.U1, v1 = t.V1;
     polygon.clear();
     // Counter-clockwise in (u, v): bottom, right, top, left; each side's first
@@ -146,7 +152,7 @@ BoundaryLoopSet TraceBoundaryLoops(CellBoundary& b)
   b.Points.erase(std::unique(b.Points.begin(), b.Points.end(),
                    [](const auto& x, const auto& y) { return x.first == y.first; }),
     b.Points.end());
-  std::vector<Segment> segments;
+  std::vector<Segment> segments = b.ExactSegments;
   for (int f = 0; f < 6; ++f)
   {
     FaceSegments(b, f, segments);

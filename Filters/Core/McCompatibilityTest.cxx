@@ -32,8 +32,9 @@ std::vector<std::array<std::uint32_t, 6>> LoopExtents(const BoundaryLoopSet& loo
       std::uint32_t p[3];
       SplitPointKey(c.Key >> 2, p);
       const int along = static_cast<int>(c.Key & 3);
-      std::uint32_t lo = p[along], hi = c.Tile ? p[along] : c.Upper;
-      while (c.Tile == 0 && hi - lo > target)
+      const bool bend = c.Kind == CrossingKind::Bend;
+      std::uint32_t lo = p[along], hi = bend ? p[along] : c.Upper;
+      while (!bend && hi - lo > target)
       {
         std::uint32_t m[3] = { p[0], p[1], p[2] };
         m[along] = lo + (hi - lo) / 2;
@@ -95,8 +96,8 @@ bool LoopsSeparated(const BoundaryLoopSet& loops, const CsgExpressionPtr& expres
   return true;
 }
 
-McCompatibility TestMcCompatibility(
-  const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& prims, double tolerance)
+McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& prims,
+  double tolerance, int faceRefinementLevels)
 {
   McCompatibility v;
   v.Kind = McVerdict::Split;
@@ -145,7 +146,7 @@ McCompatibility TestMcCompatibility(
     const std::uint32_t plane = boundary.Base[axis] + (side ? size : 0);
     const std::uint32_t u0 = boundary.Base[(axis + 1) % 3], v0 = boundary.Base[(axis + 2) % 3];
     const FaceRefinementResult r = RefineFace(expression, prims, grid, axis, plane,
-      { u0, v0, u0 + size, v0 + size }, std::min(FaceRefinementLevels, shift), signs);
+      { u0, v0, u0 + size, v0 + size }, std::min(faceRefinementLevels, shift), signs);
     if (r.Tiles.empty())
     {
       v.Reason = r.Failure;

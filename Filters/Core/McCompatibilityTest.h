@@ -60,7 +60,9 @@ constexpr int FaceRefinementLevels = 10;
 bool LoopsSeparated(const BoundaryLoopSet& loops, const CsgExpressionPtr& expression,
   const PrimitiveSet& primitives, const RootGrid& grid, const Box3& cell);
 
+/// `faceRefinementLevels` below the cell at most (FaceRefinementLevels; fewer
+/// where a failing cell keeps its mesh anyway, ExactCell.h).
 McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
-  const PrimitiveSet& primitives, double tolerance);
+  const PrimitiveSet& primitives, double tolerance, int faceRefinementLevels = FaceRefinementLevels);
 
 } // namespace tpc

@@ -36,13 +36,14 @@ enum class CellState : std::uint8_t
   Outside = 1,    ///< leaf proven entirely outside the solid
   Surface = 2,    ///< leaf meeting the surface, MC-compatible (all tests passed)
   Unresolved = 3, ///< leaf meeting the surface where a limit stopped refinement
-  Refined = 4     ///< inner node
+  Refined = 4,    ///< inner node
+  Exact = 5       ///< leaf whose patch is its one input mesh clipped to it (ExactCell.h)
 };
 
 const char* CellStateName(CellState s);
 
 /// One past the largest value of each enum (to list their names).
 constexpr int SplitReasonCount = 12;
-constexpr int CellStateCount = 5;
+constexpr int CellStateCount = 6;
 
 } // namespace tpc

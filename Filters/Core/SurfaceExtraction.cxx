@@ -1,6 +1,7 @@
 #include "SurfaceExtraction.h"
 
 #include "EdgeCrossings.h"
+#include "ExactCell.h"
 #include "LoopTriangulation.h"
 
 #include <algorithm>
@@ -114,12 +115,7 @@ private:
   /// there and is refined (only then does it bring finer samples).
   std::int64_t RefinedNeighbor(const int offset[3]) const
   {
-    std::int64_t ijk[3];
-    for (int a = 0; a < 3; ++a)
-    {
-      ijk[a] = static_cast<std::int64_t>(this->Node.Ijk[a]) + offset[a];
-    }
-    const std::int64_t n = this->Tree.Find(this->Node.Level, ijk);
+    const std::int64_t n = this->Neighbor(offset);
     if (n < 0)
     {
       return -1;
@@ -128,8 +124,21 @@ private:
     return (nn.Level == this->Node.Level && !nn.IsLeaf()) ? n : -1;
   }
 
-  /// Tiles of the face of `leaf` on face f's side, refined if it was.
-  void AddFaceOfLeaf(CellBoundary& b, int f, std::size_t leaf, int leafFace) const
+  /// The node displaced by `offset` at this cell's level, or the leaf
+  /// holding that position; -1 outside the grid.
+  std::int64_t Neighbor(const int offset[3]) const
+  {
+    std::int64_t ijk[3];
+    for (int a = 0; a < 3; ++a)
+    {
+      ijk[a] = static_cast<std::int64_t>(this->Node.Ijk[a]) + offset[a];
+    }
+    return this->Tree.Find(this->Node.Level, ijk);
+  }
+
+  /// Tiles of the face of `leaf` on face f's side, refined if it was, with
+  /// the leaf `across` them.
+  void AddFaceOfLeaf(CellBoundary& b, int f, std::size_t leaf, int leafFace, std::int64_t across) const
   {
     const int axis = f / 2;
     const std::uint32_t plane = b.Base[axis] + (f % 2 ? b.Size : 0);
@@ -140,6 +149,7 @@ private:
       for (const FaceTile& t : it->second)
       {
         b.Tiles[f].push_back(t);
+        b.Across[f].push_back(across);
         this->AddTileCorners(b, axis, plane, t);
       }
       return;
@@ -148,6 +158,7 @@ private:
     const std::uint32_t u0 = q.Ijk[(axis + 1) % 3] << shift, v0 = q.Ijk[(axis + 2) % 3] << shift;
     const FaceTile t{ u0, v0, u0 + (1u << shift), v0 + (1u << shift) };
     b.Tiles[f].push_back(t);
+    b.Across[f].push_back(across);
     for (int c = 0; c < 8; ++c)
     {
       if (((c >> axis) & 1) == leafFace % 2)
@@ -165,14 +176,14 @@ private:
     const std::int64_t n = this->RefinedNeighbor(offset);
     if (n < 0)
     {
-      this->AddFaceOfLeaf(b, f, this->Cell, f);
+      this->AddFaceOfLeaf(b, f, this->Cell, f, this->Neighbor(offset));
       return;
     }
     std::vector<std::size_t> leaves;
     this->CollectAdjacentLeaves(static_cast<std::size_t>(n), axis, side ? 0 : 1, -1, 0, leaves);
     for (const std::size_t leaf : leaves)
     {
-      this->AddFaceOfLeaf(b, f, leaf, 2 * axis + (side ? 0 : 1));
+      this->AddFaceOfLeaf(b, f, leaf, 2 * axis + (side ? 0 : 1), static_cast<std::int64_t>(leaf));
     }
   }
 
@@ -213,9 +224,19 @@ private:
 /// lies on; all six for a bend (never a fan point).
 unsigned FacesOf(const Crossing& c, const std::uint32_t base[3], std::uint32_t size)
 {
-  if (c.Tile != 0)
+  if (c.Kind == CrossingKind::Bend)
   {
     return 0x3F;
+  }
+  if (c.Kind == CrossingKind::MeshEdge)
+  {
+    const int axis = static_cast<int>(c.Key >> 32);
+    const std::uint32_t plane = static_cast<std::uint32_t>(c.Key & 0xFFFFFFFFu);
+    return (plane == base[axis] ? 1u : 0u) << (2 * axis) | (plane == base[axis] + size ? 1u : 0u) << (2 * axis + 1);
+  }
+  if (c.Kind == CrossingKind::MeshVertex)
+  {
+    return 0; // inside an exact cell
   }
   std::uint32_t p[3];
   SplitPointKey(c.Key >> 2, p);
@@ -236,15 +257,16 @@ unsigned FacesOf(const Crossing& c, const std::uint32_t base[3], std::uint32_t s
 /// stops them within a chunk.
 constexpr std::size_t Chunk = 8192;
 
-/// Leaves that meet the surface (passed the tests or were stopped), in node
-/// order.
+/// Leaves that meet the surface (passed the tests, were stopped, or are
+/// exact), in node order.
 std::vector<std::uint32_t> SurfaceLeaves(const AdaptiveOctree& tree)
 {
   std::vector<std::uint32_t> cells;
   for (std::size_t n = 0; n < tree.Nodes.size(); ++n)
   {
     const OctreeNode& node = tree.Nodes[n];
-    if (node.IsLeaf() && (node.State == CellState::Surface || node.State == CellState::Unresolved))
+    if (node.IsLeaf() &&
+      (node.State == CellState::Surface || node.State == CellState::Unresolved || node.State == CellState::Exact))
     {
       cells.push_back(static_cast<std::uint32_t>(n));
     }
@@ -377,12 +399,13 @@ bool PlaceCrossingVertices(const CrossingVertices& vertices, const AdaptiveOctre
     for (std::size_t i = begin; i < end; ++i)
     {
       const Crossing& c = records[i].Vertex;
-      if (c.Tile != 0)
+      if (c.Kind == CrossingKind::Bend)
       {
         continue; // bend vertices are placed from their crossings (PlaceBendVertices)
       }
       const CsgExpression& e = *tree.Expressions[cells[records[i].CellIndex]];
-      mesh.Points[i] = PlaceCrossing(c, tree.Grid, e, prims);
+      mesh.Points[i] = c.Kind == CrossingKind::SubEdge ? PlaceCrossing(c, tree.Grid, e, prims)
+                                                       : ExactCrossingPosition(c, prims, tree.Grid);
       mesh.Normals[i] = Normalized(e.Gradient(mesh.Points[i], prims));
     }
   }, progress);
@@ -396,7 +419,7 @@ void PlaceBendVertices(const CrossingVertices& vertices, TriangleMesh& mesh)
   for (std::size_t i = 0; i < vertices.Records.size(); ++i)
   {
     const Crossing& c = vertices.Records[i].Vertex;
-    if (c.Tile == 0)
+    if (c.Kind != CrossingKind::Bend)
     {
       continue;
     }
@@ -423,6 +446,70 @@ struct CellPatches
   std::vector<Vec3> Apexes;
   std::vector<std::array<std::uint32_t, 3>> Triangles;
 };
+
+/// The loops of one cell; for an exact cell, its polygons (ExactCell.h).
+/// Tiles shared with an exact cell are drawn exactly.
+BoundaryLoopSet CellLoops(const AdaptiveOctree& tree, std::uint32_t cell, const PrimitiveSet& prims)
+{
+  CellBoundary boundary = CellBoundaryBuilder(tree, cell).Build();
+  const CsgLeaf* own = tree.Nodes[cell].State == CellState::Exact ? LoneMeshLeaf(*tree.Expressions[cell]) : nullptr;
+  if (own)
+  {
+    ExactPolygons polygons = ClipToExactCell(boundary, *own, prims, tree.Grid);
+    BoundaryLoopSet set;
+    set.Crossings = std::move(polygons.Vertices);
+    set.LoopSizes = std::move(polygons.Sizes);
+    return set;
+  }
+  std::vector<ExactTile> exact;
+  for (int f = 0; f < 6; ++f)
+  {
+    for (std::size_t k = 0; k < boundary.Tiles[f].size(); ++k)
+    {
+      const std::int64_t across = boundary.Across[f][k];
+      const CsgLeaf* leaf = across >= 0 && tree.Nodes[static_cast<std::size_t>(across)].State == CellState::Exact
+        ? LoneMeshLeaf(*tree.Expressions[static_cast<std::size_t>(across)])
+        : nullptr;
+      if (leaf)
+      {
+        exact.push_back({ f, k, leaf });
+      }
+    }
+  }
+  AddExactTileSegments(boundary, exact, prims, tree.Grid);
+  return TraceBoundaryLoops(boundary);
+}
+
+/// An exact cell's polygons (ExactCell.h), each a triangle or a fan around
+/// its centroid (in its triangle's plane: the polygon is convex, and its
+/// inserted tile-side points are collinear with their neighbours).
+void TriangulateExactCell(const BoundaryLoopSet& polygons, const CrossingVertices& vertices,
+  const TriangleMesh& mesh, CellPatches& out)
+{
+  std::size_t offset = 0;
+  for (const std::uint32_t size : polygons.LoopSizes)
+  {
+    std::vector<std::uint32_t> id;
+    Vec3 centroid;
+    for (std::uint32_t k = 0; k < size; ++k)
+    {
+      id.push_back(vertices.IdOf(polygons.Crossings[offset + k]));
+      centroid += mesh.Points[id.back()];
+    }
+    offset += size;
+    if (size == 3)
+    {
+      out.Triangles.push_back({ id[0], id[1], id[2] });
+      continue;
+    }
+    const std::uint32_t apex = CellPatches::LocalFlag | static_cast<std::uint32_t>(out.Apexes.size());
+    out.Apexes.push_back(centroid * (1.0 / size));
+    for (std::uint32_t k = 0; k < size; ++k)
+    {
+      out.Triangles.push_back({ id[k], id[(k + 1) % size], apex });
+    }
+  }
+}
 
 /// Spans every loop of one cell (LoopTriangulation.h), each apex in its own
 /// loop's region of the cell.
@@ -584,8 +671,7 @@ ExtractionResult ExtractSurface(const AdaptiveOctree& tree, const ImplicitScene&
   if (!ChunkedFor(cells.size(), Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i)
         {
-          CellBoundary boundary = CellBoundaryBuilder(tree, cells[i]).Build();
-          loops[i] = TraceBoundaryLoops(boundary);
+          loops[i] = CellLoops(tree, cells[i], prims);
         }
       }, ProgressRange(progress, 0.0, 0.4)))
   {
@@ -613,7 +699,11 @@ ExtractionResult ExtractSurface(const AdaptiveOctree& tree, const ImplicitScene&
   if (!ChunkedFor(cells.size(), Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i)
         {
-          if (own[i])
+          if (own[i] && tree.Nodes[cells[i]].State == CellState::Exact)
+          {
+            TriangulateExactCell(loops[i], vertices, result.Mesh, patches[i]);
+          }
+          else if (own[i])
           {
             TriangulateCell(loops[i], tree.Nodes[cells[i]], *tree.Expressions[cells[i]], prims, tree.Grid, vertices,
               result.Mesh, patches[i]);
@@ -627,7 +717,9 @@ ExtractionResult ExtractSurface(const AdaptiveOctree& tree, const ImplicitScene&
   for (std::size_t i = 0; i < cells.size(); ++i)
   {
     result.InconsistentCells += own[i] && !loops[i].Consistent ? 1 : 0;
-    result.CellsWithoutPatch += own[i] && patches[i].Triangles.empty() ? 1 : 0;
+    // (An exact cell without triangles holds none of the input: nothing is missing.)
+    result.CellsWithoutPatch +=
+      own[i] && patches[i].Triangles.empty() && tree.Nodes[cells[i]].State != CellState::Exact ? 1 : 0;
   }
   const std::size_t firstApex = result.Mesh.Points.size();
   AppendPatches(patches, cells, result.Mesh);

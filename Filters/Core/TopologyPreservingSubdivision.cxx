@@ -1,5 +1,6 @@
 #include "TopologyPreservingSubdivision.h"
 
+#include "ExactCell.h"
 #include "FacingSurfaces.h"
 #include "ForestPartition.h"
 #include "LatticePlacement.h"
@@ -206,6 +207,11 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
   }
 
   const double finestWidth = std::ldexp(grid.RootSize, -std::min(params.MaximumDepth, grid.MaxDepth));
+  int exactLevel = ExactCellLevelsBelowTolerance;
+  while (grid.CellDiagonal(exactLevel - ExactCellLevelsBelowTolerance) > params.HausdorffTolerance * (1.0 + 1e-9))
+  {
+    ++exactLevel;
+  }
   const int expectedLevels = std::max(1,
     static_cast<int>(std::ceil(std::log2(grid.RootSize * std::sqrt(3.0) / params.HausdorffTolerance))) + 3);
 
@@ -326,7 +332,12 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
     const bool tested = ForEachChunk(active.size(), Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i)
       {
-        verdicts[i] = TestMcCompatibility(tree, active[i], prims, params.HausdorffTolerance);
+        // A cell that keeps its mesh if it fails need not refine its faces
+        // far to find out (ExactCell.h).
+        const bool keepsOnFailure = params.ExactCells && toleranceSize &&
+          KeepsTheMesh(*tree.Expressions[active[i]], true, false);
+        verdicts[i] = TestMcCompatibility(tree, active[i], prims, params.HausdorffTolerance,
+          keepsOnFailure ? ExactCellFaceRefinementLevels : FaceRefinementLevels);
         if (toleranceSize && verdicts[i].Kind == McVerdict::Split)
         {
           facing[i] = HasFacingSurfaces(*tree.Expressions[active[i]], prims,
@@ -395,6 +406,16 @@ SubdivisionResult RunTopologyPreservingSubdivision(const ImplicitScene& scene,
       {
         node.State = StateOf(v.Sign);
         tree.Expressions[n].reset();
+      }
+      else if (params.ExactCells && KeepsTheMesh(*tree.Expressions[n], level >= exactLevel - ExactCellLevelsBelowTolerance,
+                                      level >= exactLevel || facing[i] || atDepthLimit || atCellLimit))
+      {
+        // One mesh's surface that the tests cannot resolve: its patch is the
+        // mesh itself (ExactCell.h).
+        node.State = CellState::Exact;
+        node.FailedTest = v.Reason;
+        result.ExactCells += mine;
+        result.HausdorffBound = std::max(result.HausdorffBound, mine * grid.CellDiagonal(grid.MaxDepth));
       }
       else if (atDepthLimit || atCellLimit || facing[i])
       {

@@ -39,6 +39,11 @@ struct SubdivisionParameters
   double HausdorffTolerance = 0.01;
   int MaximumDepth = 12;
   std::size_t MaximumNumberOfCells = 20000000;
+  /// Cells whose surface is one input mesh and that fail the tests at the
+  /// tolerance's size (or at a limit) keep the mesh itself as their patch
+  /// (ExactCell.h) instead of refining. For scenes of one closed mesh that
+  /// meets the paper's assumptions (remeshing).
+  bool ExactCells = false;
   /// A piece of a split run (ForestPartition.h): the role of each tree of
   /// the root grid; skipped trees stay empty roots. Empty: every tree.
   std::vector<TreeRole> TreeRoles;
@@ -59,6 +64,8 @@ struct SubdivisionResult
   /// Surface cells accepted larger than the tolerance as plane sections
   /// (PlanarCell.h).
   std::size_t PlanarSurfaceCells = 0;
+  /// Cells whose patch is the input mesh clipped to them (ExactCell.h).
+  std::size_t ExactCells = 0;
   /// The proven two-sided Hausdorff bound between the exact surface and the
   /// extracted one: the largest diagonal of a surface or unresolved leaf (both
   /// surfaces lie in it), where plane sections count the finest lattice

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "CgalEmbedding.h"
+#include "ExactCell.h"
 #include "SurfaceEmbedding.h"
 #include "SurfaceExtraction.h"
 #include "TopologyPreservingSubdivision.h"
@@ -85,6 +86,9 @@ inline ContourRun Contour(const tpc::ImplicitScene& scene, const tpc::Box3& boun
   tpc::SubdivisionParameters p;
   p.HausdorffTolerance = relativeTolerance * d;
   p.MaximumDepth = maxDepth;
+  // As the filter does for one closed mesh (the test meshes meet the paper's
+  // assumptions): exact cells where the tests cannot resolve one.
+  p.ExactCells = tpc::IsOneMesh(*scene.Expression);
   r.Tolerance = p.HausdorffTolerance;
   tpc::PlacedSubdivision placed = tpc::RunOnBestLatticePlacement(scene, domain, p, placements);
   r.Subdivision = std::move(placed.Result);

@@ -217,6 +217,28 @@ TEST(Embedding, SphereMinusThreeCylinders)
   }
 }
 
+TEST(Embedding, SphereMinusThreeCylindersAsAMesh)
+{
+  // The mesh: the implicit solid's own guaranteed surface at a fine
+  // tolerance (closed, manifold, embedded, genus 5), remeshed coarser.
+  const Box3& bounds = DrilledSphereBounds;
+  SceneBuilder source;
+  source.Finish(DrilledSphere(source));
+  const tpctest::ContourRun fine = tpctest::Contour(source.Scene, bounds, 1.0 / 100);
+  ASSERT_TRUE(tpctest::Guaranteed(fine));
+  ASSERT_EQ(fine.Report.Genus, 5);
+  std::vector<Vec3> points = fine.Extraction.Mesh.Points;
+  std::vector<std::array<std::uint32_t, 3>> triangles = fine.Extraction.Mesh.Triangles;
+  ASSERT_TRUE(tpc::RepairMesh(points, triangles).MeetsAssumptions());
+  for (const double tolerance : Tolerances)
+  {
+    SceneBuilder b;
+    b.Finish(b.Mesh(tpc::MeshSolid(points, triangles)));
+    ExpectEmbeddedWithExactTopology(tpctest::Contour(b.Scene, bounds, tolerance), 1, 5,
+      "mesh at tolerance " + std::to_string(tolerance));
+  }
+}
+
 namespace
 {
 /// The boundary of a Menger sponge of `level` as one mesh: the faces between
@@ -294,15 +316,19 @@ void MengerSponge(int level, std::vector<Vec3>& points, std::vector<std::array<s
 }
 } // namespace
 
-TEST(Embedding, MengerSpongeOfLevelTwo)
+namespace
+{
+/// A Menger sponge of `level` (its genus checked on the input first) at each
+/// tolerance.
+void ExpectMengerSpongeEmbedded(int level, long long genus)
 {
   std::vector<Vec3> points;
   std::vector<std::array<std::uint32_t, 3>> triangles;
-  MengerSponge(2, points, triangles);
+  MengerSponge(level, points, triangles);
   const tpc::MeshRepairReport input = tpc::RepairMesh(points, triangles);
   ASSERT_TRUE(input.MeetsAssumptions()) << input.Describe();
   EXPECT_EQ(input.FlippedComponents, 0u);
-  ASSERT_EQ(input.Genus, 81);
+  ASSERT_EQ(input.Genus, genus);
   const tpc::MeshSolid sponge(points, triangles);
   const Box3 bounds{ { 0, 0, 0 }, { 1, 1, 1 } };
   for (const double tolerance : Tolerances)
@@ -310,6 +336,69 @@ TEST(Embedding, MengerSpongeOfLevelTwo)
     SceneBuilder b;
     b.Finish(b.Mesh(sponge));
     ExpectEmbeddedWithExactTopology(
-      tpctest::Contour(b.Scene, bounds, tolerance), 1, 81, "tolerance " + std::to_string(tolerance));
+      tpctest::Contour(b.Scene, bounds, tolerance), 1, genus, "tolerance " + std::to_string(tolerance));
   }
+}
+} // namespace
+
+TEST(Embedding, MengerSpongeOfLevelTwo)
+{
+  ExpectMengerSpongeEmbedded(2, 81);
+}
+
+TEST(Embedding, MengerSpongeOfLevelThree)
+{
+  ExpectMengerSpongeEmbedded(3, 1409);
+}
+
+namespace
+{
+/// The tetrahedron of OpenSCAD's testdata/scad/3D/issues/issue1089.scad as
+/// OpenSCAD exports it to STL (six significant digits): 20 long, its four
+/// vertices within 1.5e-6 of one plane - thinner than any lattice cell, two
+/// dihedral angles of about 1e-7 radians.
+tpc::MeshSolid Tetrahedron(std::vector<Vec3> points)
+{
+  std::vector<std::array<std::uint32_t, 3>> triangles = { { 0, 1, 2 }, { 0, 2, 3 }, { 0, 3, 1 }, { 1, 3, 2 } };
+  const tpc::MeshRepairReport input = tpc::RepairMesh(points, triangles);
+  EXPECT_TRUE(input.MeetsAssumptions()) << input.Describe();
+  return tpc::MeshSolid(points, triangles);
+}
+} // namespace
+
+TEST(Embedding, SliverTetrahedron)
+{
+  // Sampled cells never resolve it (566 000 cells and 30 s, falling apart
+  // into pieces); exact cells keep the tetrahedron itself (ExactCell.h).
+  const tpc::MeshSolid sliver = Tetrahedron({ { -0.249434, -9.94681, 7.66848 }, { -0.503165, 8.89648, 0.896037 },
+    { -0.503165, -0.666568, 3.81975 }, { -0.503165, -10.2296, 6.74347 } });
+  for (const double tolerance : Tolerances)
+  {
+    SceneBuilder b;
+    b.Finish(b.Mesh(sliver));
+    const tpctest::ContourRun r = tpctest::Contour(b.Scene, sliver.Bounds(), tolerance);
+    ExpectEmbeddedWithExactTopology(r, 1, 0, "tolerance " + std::to_string(tolerance));
+    EXPECT_GT(r.Subdivision.ExactCells, 0u);
+    EXPECT_LT(r.Subdivision.Octree.Nodes.size(), 100000u) << "resolved without deep refinement";
+    EXPECT_LE(r.Subdivision.HausdorffBound, r.Tolerance);
+  }
+}
+
+TEST(Embedding, TetrahedronFlatterThanRoundingIsNotGuaranteed)
+{
+  // The same .scad's own coordinates: its volume is 2e-16 - the two sheets
+  // of its surface are closer than the spacing of doubles, so its clipped
+  // triangles share coordinates. The exact check sees it: closed and
+  // manifold, but neither embedded nor guaranteed.
+  const tpc::MeshSolid flat = Tetrahedron({ { -0.249434174697078959, -9.946811825017595865, 7.668480694904857842 },
+    { -0.503165223042536525, 8.8964795095546467252, 0.896037100784631946 },
+    { -0.503165223042536525, -0.66656805007570774091, 3.819754148011998751 },
+    { -0.503165223042536525, -10.229615609706060653, 6.743471195239365557 } });
+  SceneBuilder b;
+  b.Finish(b.Mesh(flat));
+  const tpctest::ContourRun r = tpctest::Contour(b.Scene, flat.Bounds(), 1.0 / 32);
+  EXPECT_TRUE(r.Report.Closed && r.Report.Manifold);
+  EXPECT_FALSE(r.Embedding.Embedded());
+  EXPECT_FALSE(tpctest::Guaranteed(r));
+  EXPECT_FALSE(r.Embedding.Cells.empty());
 }

@@ -88,10 +88,6 @@ TEST_P(CgalRemeshing, SameTopologyClosedManifoldGuaranteedWithinTolerance)
 {
   const KnownMesh& m = CgalMeshes[std::get<0>(GetParam())];
   const int denominator = Denominators[std::get<1>(GetParam())];
-  if (denominator > m.FinestDenominator)
-  {
-    GTEST_SKIP() << m.Name << " at 1/" << denominator << ": known limitation (see CgalTestMeshes.h)";
-  }
   vtkSmartPointer<vtkPolyData> input = ReadCgalMesh(m.Name);
 
   vtkNew<vtkTopologyPreservingContour> filter;

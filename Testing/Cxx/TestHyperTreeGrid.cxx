@@ -210,8 +210,9 @@ TEST(HyperTreeGrid, TrianglesLieInTheSurfaceLeavesTheyName)
   EXPECT_EQ(reasonNames->GetValue(9), "limit reached");
   EXPECT_EQ(reasonNames->GetValue(10), "surfaces too close");
   EXPECT_EQ(reasonNames->GetValue(11), "patch not embedded");
-  ASSERT_EQ(stateNames->GetNumberOfValues(), 5);
+  ASSERT_EQ(stateNames->GetNumberOfValues(), 6);
   EXPECT_EQ(stateNames->GetValue(3), "unresolved");
+  EXPECT_EQ(stateNames->GetValue(5), "exact input");
 }
 
 TEST(HyperTreeGrid, RoundTripsThroughTheXmlWriter)
