@@ -152,6 +152,16 @@ int Orient2D(double au, double av, double bu, double bv, double cu, double cv)
 
 int Orient3D(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
 {
+  // Four points in one axis plane (faces of cells, axis-aligned faces of CAD
+  // parts) are coplanar: the determinant is exactly zero, which the filters
+  // cannot certify and the exact stage would compute at length.
+  for (int k = 0; k < 3; ++k)
+  {
+    if (a[k] == d[k] && b[k] == d[k] && c[k] == d[k])
+    {
+      return 0;
+    }
+  }
   const Difference m[3][3] = { { { a[0], d[0] }, { a[1], d[1] }, { a[2], d[2] } },
     { { b[0], d[0] }, { b[1], d[1] }, { b[2], d[2] } },
     { { c[0], d[0] }, { c[1], d[1] }, { c[2], d[2] } } };

@@ -141,6 +141,91 @@ bool TrianglesIntersect(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3&
     SegmentMeetsTriangle(e, f, a, b, c) || SegmentMeetsTriangle(f, d, a, b, c);
 }
 
+namespace
+{
+/// The closed 2-D triangles (a, b, c) and (d, e, f) are apart: an edge line
+/// of one has the other strictly on its outer side.
+bool ApartIn2D(const Projected t1[3], const Projected t2[3])
+{
+  auto separates = [](const Projected t[3], const Projected u[3]) {
+    const int o = O2(t[0], t[1], t[2]);
+    for (int i = 0; i < 3; ++i)
+    {
+      const Projected &p = t[i], &q = t[(i + 1) % 3];
+      if (O2(p, q, u[0]) * o < 0 && O2(p, q, u[1]) * o < 0 && O2(p, q, u[2]) * o < 0)
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  return separates(t1, t2) || separates(t2, t1);
+}
+
+/// A fast, sound proof that two triangles meet properly, by a projection
+/// along an axis that keeps both of their areas (ProjectionAxis): it is
+/// injective on each, so a point the triangles share beyond what they share
+/// by index would project onto a point their projections share beyond the
+/// projection of that. Proper in projection (apart; on opposite sides of
+/// the shared edge; separated by a line through the shared vertex) is then
+/// proper in space. Nearly coplanar neighbours - patches of flat parts of a
+/// surface - are decided this way by well-conditioned 2-D orientations,
+/// where the 3-D predicates would need their exact stage. False: no proof
+/// (the full test decides).
+bool ProperInProjection(const std::vector<Vec3>& P, const std::array<std::uint32_t, 3>& t1,
+  const std::array<std::uint32_t, 3>& t2, int shared)
+{
+  const Vec3 &a = P[t1[0]], &b = P[t1[1]], &c = P[t1[2]], &d = P[t2[0]], &e = P[t2[1]], &f = P[t2[2]];
+  const Vec3 n = Cross(b - a, c - a);
+  int k = 0;
+  for (int i = 1; i < 3; ++i)
+  {
+    k = std::fabs(n[i]) > std::fabs(n[k]) ? i : k;
+  }
+  const Projected p[3] = { Project(a, k), Project(b, k), Project(c, k) };
+  const Projected q[3] = { Project(d, k), Project(e, k), Project(f, k) };
+  if (O2(p[0], p[1], p[2]) == 0 || O2(q[0], q[1], q[2]) == 0)
+  {
+    return false; // a projection without area: not injective
+  }
+  if (shared == 0)
+  {
+    return ApartIn2D(p, q);
+  }
+  // The shared vertices' positions in each triangle.
+  int in1[3] = { -1, -1, -1 }, in2[3] = { -1, -1, -1 };
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      if (t1[i] == t2[j])
+      {
+        in1[i] = j;
+        in2[j] = i;
+      }
+    }
+  }
+  if (shared == 2)
+  {
+    // Opposite vertices strictly on opposite sides of the shared edge.
+    const int o1 = in1[0] < 0 ? 0 : (in1[1] < 0 ? 1 : 2), o2 = in2[0] < 0 ? 0 : (in2[1] < 0 ? 1 : 2);
+    const Projected &u = p[(o1 + 1) % 3], &w = p[(o1 + 2) % 3];
+    return O2(u, w, p[o1]) * O2(u, w, q[o2]) < 0;
+  }
+  // One shared vertex v: the two (closed, convex) projections meet only at v
+  // iff their angles at v share no direction.
+  const int i1 = in1[0] >= 0 ? 0 : (in1[1] >= 0 ? 1 : 2), i2 = in1[i1];
+  const Projected &v = p[i1], &a1 = p[(i1 + 1) % 3], &b1 = p[(i1 + 2) % 3];
+  const Projected &a2 = q[(i2 + 1) % 3], &b2 = q[(i2 + 2) % 3];
+  const int s1 = O2(v, a1, b1), s2 = O2(v, a2, b2);
+  // Direction toward x within the closed angle (from, to) of orientation s.
+  auto within = [&](const Projected& from, const Projected& to, int s, const Projected& x) {
+    return O2(v, from, x) * s >= 0 && O2(v, x, to) * s >= 0;
+  };
+  return !within(a1, b1, s1, a2) && !within(a1, b1, s1, b2) && !within(a2, b2, s2, a1) && !within(a2, b2, s2, b1);
+}
+} // namespace
+
 bool TrianglesMeetImproperly(const std::vector<Vec3>& P, const std::array<std::uint32_t, 3>& t1,
   const std::array<std::uint32_t, 3>& t2)
 {
@@ -156,6 +241,10 @@ bool TrianglesMeetImproperly(const std::vector<Vec3>& P, const std::array<std::u
         i2 = j;
       }
     }
+  }
+  if (shared < 3 && ProperInProjection(P, t1, t2, shared))
+  {
+    return false;
   }
   const Vec3 &a = P[t1[0]], &b = P[t1[1]], &c = P[t1[2]], &d = P[t2[0]], &e = P[t2[1]], &f = P[t2[2]];
   if (shared == 0)

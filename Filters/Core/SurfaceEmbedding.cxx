@@ -121,8 +121,7 @@ struct RunFailures
 /// The run's own triangles (each in its cell, not degenerate), their pairs,
 /// and their pairs with the runs of touching leaves after it in node order
 /// (each pair of runs is met from both sides; the first one tests it).
-RunFailures CheckRun(const AdaptiveOctree& tree, const TriangleMesh& mesh, const CellTriangles& runs,
-  const std::vector<Box3>& boxes, std::size_t k)
+RunFailures CheckRun(const AdaptiveOctree& tree, const TriangleMesh& mesh, const CellTriangles& runs, std::size_t k)
 {
   RunFailures f;
   const std::uint32_t cell = runs.Cell[k];
@@ -135,14 +134,26 @@ RunFailures CheckRun(const AdaptiveOctree& tree, const TriangleMesh& mesh, const
     f.Outside += cellBox.Contains(a) && cellBox.Contains(b) && cellBox.Contains(c) ? 0 : 1;
     f.Degenerate += TriangleIsDegenerate(a, b, c) ? 1 : 0;
   }
+  // (Boxes computed here rather than stored for the whole mesh: the check
+  // adds no memory per cell to the run's budget.)
+  std::vector<Box3> own, other;
+  for (std::uint32_t t = runs.First[k]; t < runs.First[k + 1]; ++t)
+  {
+    own.push_back(TriangleBox(mesh.Points, mesh.Triangles[t]));
+  }
   auto testPairs = [&](std::uint32_t begin, std::uint32_t end, std::uint32_t otherBegin, std::uint32_t otherEnd,
                      std::uint32_t otherCell, bool same) {
+    other.clear();
+    for (std::uint32_t t = otherBegin; t < otherEnd; ++t)
+    {
+      other.push_back(same ? own[t - begin] : TriangleBox(mesh.Points, mesh.Triangles[t]));
+    }
     bool failed = false;
     for (std::uint32_t t1 = begin; t1 < end; ++t1)
     {
       for (std::uint32_t t2 = same ? t1 + 1 : otherBegin; t2 < otherEnd; ++t2)
       {
-        if (!boxes[t1].Overlaps(boxes[t2]))
+        if (!own[t1 - begin].Overlaps(other[t2 - otherBegin]))
         {
           continue;
         }
@@ -221,30 +232,24 @@ EmbeddingReport CheckEmbedding(const AdaptiveOctree& tree, const TriangleMesh& m
 {
   EmbeddingReport report;
   const CellTriangles runs(mesh);
-  std::vector<Box3> boxes(mesh.Triangles.size());
-  parallelFor(boxes.size(), [&](std::size_t begin, std::size_t end) {
-    for (std::size_t t = begin; t < end; ++t)
-    {
-      boxes[t] = TriangleBox(mesh.Points, mesh.Triangles[t]);
-    }
-  });
-  std::vector<RunFailures> failures(runs.Cell.size());
+  constexpr std::size_t Chunk = 4096;
   const std::size_t count = runs.Cell.size();
-  const bool done = ForEachChunk(count, 4096, parallelFor, [&](std::size_t begin, std::size_t end) {
+  std::vector<RunFailures> failures(std::min(count, Chunk)); // one chunk's
+  const bool done = ForEachChunk(count, Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k)
     {
-      failures[k] = CheckRun(tree, mesh, runs, boxes, k);
+      failures[k % Chunk] = CheckRun(tree, mesh, runs, k);
     }
   }, [&](std::size_t first, std::size_t last) {
     for (std::size_t k = first; k < last; ++k)
     {
-      const RunFailures& f = failures[k];
+      const RunFailures& f = failures[k % Chunk];
       report.ImproperPairs += f.ImproperPairs;
       report.DegenerateTriangles += f.Degenerate;
       report.TrianglesOutsideCells += f.Outside;
       report.PairsTested += f.Tested;
       report.Cells.insert(report.Cells.end(), f.Cells.begin(), f.Cells.end());
-      std::vector<std::uint32_t>().swap(failures[k].Cells);
+      std::vector<std::uint32_t>().swap(failures[k % Chunk].Cells);
     }
     return progress && progress(0.8 * static_cast<double>(last) / static_cast<double>(count));
   });

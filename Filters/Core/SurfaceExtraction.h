@@ -19,7 +19,9 @@
 // triangles - whether or not the cell passed the tests (cells stopped by a
 // limit still give a closed manifold, only without the topology guarantee).
 // Edge crossings are found on the exact field by root finding, not by linear
-// interpolation.
+// interpolation. An exact cell's patch is its input mesh clipped to it, and
+// its neighbours draw the mesh's exact trace on the tiles they share with it
+// (ExactCell.h).
 #pragma once
 
 #include "AdaptiveOctree.h"

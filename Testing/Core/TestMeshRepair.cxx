@@ -5,7 +5,11 @@
 #include "MeshRepair.h"
 #include "SelfIntersection.h"
 
+#include "CgalEmbedding.h"
+
 #include <gtest/gtest.h>
+
+#include <random>
 
 using tpc::Vec3;
 using Tris = std::vector<std::array<std::uint32_t, 3>>;
@@ -146,6 +150,47 @@ TEST(SelfIntersection, ExactTriangleTests)
   EXPECT_EQ(tpc::CountSelfIntersections(sphere.Points(), sphere.Triangles()), 0u);
   const tpc::MeshSolid torus = tpctest::TorusMesh({ 0, 0, 0 }, 0.6, 0.25, 48, 24);
   EXPECT_EQ(tpc::CountSelfIntersections(torus.Points(), torus.Triangles()), 0u);
+}
+
+TEST(SelfIntersection, TrianglePairsAgreeWithCgalsExactIntersection)
+{
+  // Random pairs sharing no vertex, one or two, with coordinates on a coarse
+  // grid and most in two planes: coplanar, touching and nearly flat pairs
+  // abound. The exact test (with its projection shortcut) against the
+  // intersection CGAL constructs exactly.
+  std::mt19937 rng(3);
+  std::uniform_int_distribution<int> c(0, 4), plane(0, 3);
+  int improper = 0, coplanar = 0;
+  for (int trial = 0; trial < 20000; ++trial)
+  {
+    std::vector<std::array<double, 3>> points(6);
+    for (auto& p : points)
+    {
+      const int z = plane(rng);
+      p = { c(rng) * 0.5, c(rng) * 0.5, z < 2 ? 0.0 : (z == 2 ? 1.0 : c(rng) * 0.25) };
+    }
+    const int shared = trial % 3;
+    const std::array<std::uint32_t, 3> t1 = { 0, 1, 2 };
+    const std::array<std::uint32_t, 3> t2 = { shared > 0 ? 0u : 3u, shared > 1 ? 1u : 4u, 5 };
+    std::vector<Vec3> vec;
+    for (const auto& p : points)
+    {
+      vec.emplace_back(p[0], p[1], p[2]);
+    }
+    if (tpc::TriangleIsDegenerate(vec[0], vec[1], vec[2]) || tpc::TriangleIsDegenerate(vec[t2[0]], vec[t2[1]], vec[5]) ||
+      points[3] == points[0] || points[3] == points[1] || points[3] == points[2] || points[4] == points[0] ||
+      points[4] == points[1] || points[4] == points[2] || points[5] == points[0] || points[5] == points[1] ||
+      points[5] == points[2])
+    {
+      continue; // degenerate, or vertices coinciding without being shared
+    }
+    const bool expected = tpcoracle::TrianglePairMeetsImproperly(points, t1, t2);
+    ASSERT_EQ(tpc::TrianglesMeetImproperly(vec, t1, t2), expected) << "trial " << trial;
+    improper += expected ? 1 : 0;
+    coplanar += points[0][2] == 0 && points[1][2] == 0 && points[2][2] == 0 && points[5][2] == 0 ? 1 : 0;
+  }
+  EXPECT_GT(improper, 1000);
+  EXPECT_GT(coplanar, 500);
 }
 
 TEST(SelfIntersection, CoincidentFacesOfTwoMeshesAreFoundByWinding)

@@ -1,6 +1,8 @@
 #include "CgalEmbedding.h"
 
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/intersections.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
@@ -12,6 +14,39 @@
 
 namespace tpcoracle
 {
+
+bool TrianglePairMeetsImproperly(const std::vector<std::array<double, 3>>& points,
+  const std::array<std::uint32_t, 3>& t1, const std::array<std::uint32_t, 3>& t2)
+{
+  using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
+  auto point = [&](std::uint32_t i) { return Kernel::Point_3(points[i][0], points[i][1], points[i][2]); };
+  const Kernel::Triangle_3 a(point(t1[0]), point(t1[1]), point(t1[2])), b(point(t2[0]), point(t2[1]), point(t2[2]));
+  std::vector<std::uint32_t> shared;
+  for (const auto i : t1)
+  {
+    if (std::find(t2.begin(), t2.end(), i) != t2.end())
+    {
+      shared.push_back(i);
+    }
+  }
+  const auto meet = CGAL::intersection(a, b);
+  if (!meet)
+  {
+    return false;
+  }
+  if (shared.size() == 1)
+  {
+    const Kernel::Point_3* p = boost::get<Kernel::Point_3>(&*meet);
+    return !p || *p != point(shared[0]);
+  }
+  if (shared.size() == 2)
+  {
+    const Kernel::Segment_3* s = boost::get<Kernel::Segment_3>(&*meet);
+    const Kernel::Segment_3 edge(point(shared[0]), point(shared[1]));
+    return !s || !(*s == edge || *s == edge.opposite());
+  }
+  return true; // no shared vertex (or the same triangle)
+}
 
 EmbeddingVerdict CheckEmbeddingWithCgal(
   const std::vector<std::array<double, 3>>& points, const std::vector<std::array<std::uint32_t, 3>>& triangles)

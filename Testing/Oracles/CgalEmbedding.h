@@ -26,6 +26,12 @@ struct EmbeddingVerdict
   bool Embedded() const { return this->SelfIntersectingPairs == 0 && this->CoincidentVertices == 0; }
 };
 
+/// CGAL with exact constructions: do triangles (p[t1[0]], p[t1[1]],
+/// p[t1[2]]) and (p[t2[0]], ...) meet anywhere but in the vertex or the edge
+/// they share by index? (The intersection computed exactly and compared.)
+bool TrianglePairMeetsImproperly(const std::vector<std::array<double, 3>>& points,
+  const std::array<std::uint32_t, 3>& t1, const std::array<std::uint32_t, 3>& t2);
+
 EmbeddingVerdict CheckEmbeddingWithCgal(
   const std::vector<std::array<double, 3>>& points, const std::vector<std::array<std::uint32_t, 3>>& triangles);
 

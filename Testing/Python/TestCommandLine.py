@@ -10,7 +10,7 @@ import subprocess
 import sys
 
 from vtkmodules.vtkCommonTransforms import vtkTransform
-from vtkmodules.vtkFiltersCore import vtkAppendPolyData
+from vtkmodules.vtkFiltersCore import vtkAppendPolyData, vtkCleanPolyData
 from vtkmodules.vtkFiltersGeneral import vtkTransformPolyDataFilter
 from vtkmodules.vtkFiltersSources import vtkSphereSource
 from vtkmodules.vtkIOGeometry import vtkOBJWriter, vtkSTLReader, vtkSTLWriter
@@ -131,6 +131,39 @@ check(p.returncode == 0 and len(frames) > 3 and "#" in frames[-1] and "genus    
       f"progress bar on a terminal ({len(frames)} frames)")
 code, out, err = run(inputs["off"], "-t", "0.015625", "-o", "nobar.vtp")
 check(code == 0 and "%" not in err, "no progress bar when standard error is not a terminal")
+
+# Issue 14: OpenSCAD's sliver tetrahedron (testdata/scad/3D/issues/issue1089.scad
+# as OpenSCAD writes it to STL): 20 long, 1.5e-6 thick. Guaranteed - one
+# component, genus 0, embedded, a proven bound - at every tolerance; merging
+# points with equal coordinates (vtkCleanPolyData, tolerance 0) keeps them
+# all (in double precision: STL's floats would merge points of its two
+# sheets, 1e-6 apart at coordinates near 10).
+facets = [((-0.249434, -9.94681, 7.66848), (-0.503165, -0.666568, 3.81975), (-0.503165, 8.89648, 0.896037)),
+          ((-0.503165, 8.89648, 0.896037), (-0.503165, -10.2296, 6.74347), (-0.249434, -9.94681, 7.66848)),
+          ((-0.249434, -9.94681, 7.66848), (-0.503165, -10.2296, 6.74347), (-0.503165, -0.666568, 3.81975)),
+          ((-0.503165, -0.666568, 3.81975), (-0.503165, -10.2296, 6.74347), (-0.503165, 8.89648, 0.896037))]
+with open("sliver.stl", "w") as f:
+    f.write("solid sliver\n")
+    for facet in facets:
+        f.write("facet normal 0 0 0\nouter loop\n")
+        f.writelines(f"vertex {x} {y} {z}\n" for x, y, z in facet)
+        f.write("endloop\nendfacet\n")
+    f.write("endsolid sliver\n")
+for t in ("0.03125", "0.015625", "0.0078125"):
+    code, out, err = run("sliver.stl", "-t", t, "--json", "-o", "sliver-out.vtp")
+    report = json.loads(out) if code in (0, 2) else {}
+    check(code == 0 and report.get("components") == 1 and report.get("genus") == 0
+          and report.get("embedded") is True and report.get("hausdorff_bound") is not None,
+          f"sliver tetrahedron at {t}: guaranteed, one component, genus 0, embedded ({code}, {err.strip()[:200]})")
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName("sliver-out.vtp")
+    merged = vtkCleanPolyData()
+    merged.SetInputConnection(reader.GetOutputPort())
+    merged.SetTolerance(0.0)
+    merged.Update()
+    check(merged.GetOutput().GetNumberOfPolys() == report.get("triangles")
+          and merged.GetOutput().GetNumberOfPoints() == report.get("triangles", 0) // 2 + 2,
+          f"sliver tetrahedron at {t}: once points are merged, V = F/2 + 2 (a sphere, no coincident points)")
 
 # The guarantee cannot hold: a self-intersecting mesh (two overlapping spheres) -> exit 2.
 a, b = vtkSphereSource(), vtkSphereSource()
