@@ -134,7 +134,7 @@ struct PieceOfRun
 {
   int Piece = 0;
   int Pieces = 1;
-  std::function<std::size_t(std::size_t)> Sum;
+  std::function<std::size_t(std::size_t)> Sum; ///< unset: this piece alone (identity)
 };
 
 PlacedSubdivision RunOnBestLatticePlacement(const ImplicitScene& scene, const Box3& domain,

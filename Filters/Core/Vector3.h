@@ -64,6 +64,18 @@ struct Box3
   Vec3 Center() const { return (lo + hi) * 0.5; }
   double Width(int axis) const { return hi[axis] - lo[axis]; }
   double Diagonal() const { return Norm(hi - lo); }
+  /// The box grown on every side by `fraction` of its diagonal.
+  Box3 Grown(double fraction) const
+  {
+    const double margin = fraction * this->Diagonal();
+    Box3 b = *this;
+    for (int a = 0; a < 3; ++a)
+    {
+      b.lo[a] -= margin;
+      b.hi[a] += margin;
+    }
+    return b;
+  }
   bool Contains(const Vec3& p) const
   {
     for (int a = 0; a < 3; ++a)

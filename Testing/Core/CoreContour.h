@@ -1,14 +1,11 @@
-// Runs the whole core pipeline (subdivision, extraction, embedding check,
-// report) on a scene, for the tests. Every run's embedding verdict is held
-// against CGAL's independent self-intersection test.
+// Runs a scene through the core's entry point, tpc::Contour, for the tests.
+// Every run's embedding verdict is held against CGAL's independent
+// self-intersection test.
 #pragma once
 
 #include "CgalEmbedding.h"
-#include "ExactCell.h"
-#include "SurfaceEmbedding.h"
-#include "SurfaceExtraction.h"
-#include "TopologyPreservingSubdivision.h"
-#include "TopologyReport.h"
+#include "Contour.h"
+#include "SceneBuilder.h"
 
 #ifndef TPC_TESTS_WITHOUT_GTEST
 #include <gtest/gtest.h>
@@ -23,6 +20,9 @@ struct ContourRun
   tpc::EmbeddingReport Embedding;
   tpc::TopologyReport Report;
   double Tolerance = 0.0; ///< absolute
+  bool Guaranteed = false;
+  bool Contoured = false; ///< contoured, or the solid is empty (else Messages say why)
+  std::vector<tpc::ContourMessage> Messages;
 };
 
 /// CGAL's verdict on a mesh, with the mesh's own vertex ids.
@@ -52,50 +52,45 @@ inline void ExpectEmbeddingCheckAgreesWithCgal(const tpc::EmbeddingReport& core,
 }
 #endif
 
-/// What the filter calls TopologyGuaranteed, from a core run.
-inline bool Guaranteed(const ContourRun& r)
-{
-  const bool empty = r.Report.Faces == 0;
-  return r.Subdivision.UnresolvedCells == 0 && r.Extraction.InconsistentCells == 0 && r.Embedding.Embedded() &&
-    (empty || (r.Report.Closed && r.Report.Manifold && r.Report.Oriented));
-}
+/// TopologyGuaranteed as the core decided it.
+inline bool Guaranteed(const ContourRun& r) { return r.Guaranteed; }
 
-/// `bounds` grown by 5 % of its diagonal on every side (as the filter does,
-/// so that the surface stays off the grid's outer boundary).
-inline tpc::Box3 GrownDomain(const tpc::Box3& bounds)
-{
-  tpc::Box3 domain = bounds;
-  const double d = bounds.Diagonal();
-  for (int a = 0; a < 3; ++a)
-  {
-    domain.lo[a] -= 0.05 * d;
-    domain.hi[a] += 0.05 * d;
-  }
-  return domain;
-}
+/// `bounds` grown by 5 % of its diagonal on every side (the margin the core
+/// gives the solid, so that the surface stays off the grid's outer boundary).
+inline tpc::Box3 GrownDomain(const tpc::Box3& bounds) { return bounds.Grown(0.05); }
 
-/// Contours `scene` over `bounds` grown by 5 % of its diagonal, with the
-/// tolerance relative to the diagonal of `bounds`, trying up to
-/// `placements` lattice placements.
-inline ContourRun Contour(const tpc::ImplicitScene& scene, const tpc::Box3& bounds,
-  double relativeTolerance, int maxDepth = 16, int placements = tpc::LatticePlacements)
+/// A whole run through the core's entry point (tpc::Contour): the lattice laid
+/// over `bounds` (Region: grown by the usual margin, not clipped), the
+/// tolerance relative to its diagonal, trying up to `placements` lattice
+/// placements. The test scenes' meshes meet the paper's assumptions.
+inline ContourRun Contour(const Scene& scene, const tpc::Box3& bounds, double relativeTolerance,
+  int maxDepth = 16, int placements = tpc::LatticePlacements, std::size_t maxCells = 10000000)
 {
-  ContourRun r;
-  const tpc::Box3 domain = GrownDomain(bounds);
-  const double d = bounds.Diagonal();
-  tpc::SubdivisionParameters p;
-  p.HausdorffTolerance = relativeTolerance * d;
+  tpc::ContourScene input;
+  input.Primitives = scene.Primitives;
+  tpc::SceneInput solid;
+  solid.Name = "The test scene";
+  solid.Solid = scene.Solid;
+  input.Inputs.push_back(std::move(solid));
+  tpc::ContourParameters p;
+  p.Region = bounds;
+  p.Tolerance = relativeTolerance;
   p.MaximumDepth = maxDepth;
-  // As the filter does for one closed mesh (the test meshes meet the paper's
-  // assumptions): exact cells where the tests cannot resolve one.
-  p.ExactCells = tpc::IsOneMesh(*scene.Expression);
-  r.Tolerance = p.HausdorffTolerance;
-  tpc::PlacedSubdivision placed = tpc::RunOnBestLatticePlacement(scene, domain, p, placements);
-  r.Subdivision = std::move(placed.Result);
-  r.Extraction = tpc::ExtractSurface(r.Subdivision.Octree, scene);
-  r.Embedding = tpc::CheckEmbedding(r.Subdivision.Octree, r.Extraction.Mesh);
-  r.Report = tpc::ComputeTopologyReport(r.Extraction.Mesh);
+  p.MaximumNumberOfCells = maxCells;
+  p.LatticePlacements = placements;
+  tpc::ContourResult result = tpc::Contour(std::move(input), p);
+  ContourRun r;
+  r.Messages = std::move(result.Messages);
+  r.Subdivision = std::move(result.Placed.Result);
+  r.Extraction = std::move(result.Extraction);
+  r.Embedding = std::move(result.Embedding);
+  r.Report = result.Topology;
+  r.Tolerance = result.Report.AbsoluteTolerance;
+  r.Guaranteed = result.Report.Guaranteed;
+  r.Contoured = result.Status == tpc::ContourResult::Outcome::Contoured ||
+    result.Status == tpc::ContourResult::Outcome::Empty;
 #ifndef TPC_TESTS_WITHOUT_GTEST
+  EXPECT_TRUE(r.Contoured) << (r.Messages.empty() ? std::string() : r.Messages.front().Text);
   ExpectEmbeddingCheckAgreesWithCgal(r.Embedding, r.Extraction.Mesh);
 #endif
   return r;

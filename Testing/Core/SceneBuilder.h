@@ -9,9 +9,16 @@ using tpc::CsgTerm;
 using tpc::Quadric;
 using tpc::Vec3;
 
+/// A scene for the subdivision's own tests (primitives and expression) that
+/// also keeps the solid's term, for whole runs through tpc::Contour.
+struct Scene : tpc::ImplicitScene
+{
+  CsgTerm Solid;
+};
+
 struct SceneBuilder
 {
-  tpc::ImplicitScene Scene;
+  tpctest::Scene Scene;
 
   CsgTerm Add(const Quadric& q)
   {
@@ -57,6 +64,7 @@ struct SceneBuilder
   /// Sets the scene's expression; returns the pruned-free expression.
   tpc::CsgExpressionPtr Finish(const CsgTerm& t)
   {
+    Scene.Solid = t;
     Scene.Expression = tpc::CsgExpression::FromTerm(t);
     return Scene.Expression;
   }

@@ -24,7 +24,7 @@ struct Outcome
   std::size_t Inconsistent = 0;
 };
 
-Outcome Contour(const tpc::ImplicitScene& scene, double tolerance, int depth, int placements)
+Outcome Contour(const tpctest::Scene& scene, double tolerance, int depth, int placements)
 {
   const tpctest::ContourRun r = tpctest::Contour(
     scene, { { -0.8, -0.8, -0.8 }, { 0.8, 0.8, 0.8 } }, tolerance, depth, placements);
@@ -32,7 +32,7 @@ Outcome Contour(const tpc::ImplicitScene& scene, double tolerance, int depth, in
 }
 
 /// A random solid: primitives folded with random operations, clipped to a box.
-tpc::ImplicitScene RandomScene(std::mt19937& rng)
+tpctest::Scene RandomScene(std::mt19937& rng)
 {
   std::uniform_real_distribution<double> u(-1.0, 1.0), unit(0.0, 1.0);
   tpctest::SceneBuilder b;
@@ -103,7 +103,7 @@ TEST(RandomScenes, AlwaysClosedManifoldAndConsistentWhenGuaranteed)
   int limited = 0, compared = 0;
   for (int trial = 0; trial < 14; ++trial)
   {
-    const tpc::ImplicitScene scene = RandomScene(rng);
+    const tpctest::Scene scene = RandomScene(rng);
     // A low depth limit on one lattice placement leaves some cells
     // unresolved on purpose.
     const Outcome coarse = Contour(scene, 0.04, 9, 1);

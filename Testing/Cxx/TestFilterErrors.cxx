@@ -112,7 +112,7 @@ TEST(FilterErrors, InputsTouchingAlongAFaceStopEarlyWithoutGuarantee)
   f->SetTolerance(0.05);
   MessageRecorder messages(f);
   const FilterResult r = tpctest::Run(f);
-  EXPECT_NE(messages.Warnings.find("Inputs 0 and 1 touch along coincident faces"), std::string::npos)
+  EXPECT_NE(messages.Warnings.find("Input 0 and Input 1 touch along coincident faces"), std::string::npos)
     << messages.Warnings;
   EXPECT_NE(messages.Warnings.find("refinement stops at depth"), std::string::npos) << messages.Warnings;
   EXPECT_EQ(r.Guaranteed, 0);
@@ -490,4 +490,23 @@ TEST(FilterErrors, BoxesSharingAFaceStopQuicklyWithoutGuarantee)
   EXPECT_NE(messages.Warnings.find("solids touching along a face"), std::string::npos) << messages.Warnings;
   ExpectStoppedCellsMarkedAndClosed(r, vtkTopologyPreservingContour::SURFACES_TOO_CLOSE);
   EXPECT_LT(r.Grid->GetNumberOfCells(), 100000);
+}
+
+TEST(FilterErrors, APieceWithoutAControllerReportsItselfOnly)
+{
+  // UpdatePiece without a global controller over the pieces: the piece is
+  // computed on its own (one lattice placement, no reductions), warned
+  // about, and never guaranteed - its report describes this piece only.
+  vtkNew<vtkSphere> sphere;
+  sphere->SetRadius(0.5);
+  vtkNew<vtkTopologyPreservingContour> f;
+  f->SetImplicitFunction(sphere);
+  f->SetTolerance(0.05);
+  MessageRecorder messages(f);
+  f->UpdatePiece(0, 2, 0);
+  EXPECT_NE(messages.Warnings.find("without a global controller"), std::string::npos) << messages.Warnings;
+  vtkPolyData* piece = f->GetSurfaceOutput();
+  EXPECT_GT(piece->GetNumberOfCells(), 0);
+  EXPECT_EQ(tpctest::FieldValue(piece, "TopologyGuaranteed"), 0.0);
+  EXPECT_EQ(tpctest::FieldValue(piece, "Closed"), 0.0) << "half a sphere is open along the seam";
 }

@@ -112,10 +112,11 @@ bool tightLimits = false;
 
 /// The scene and parameters, for reproducing a failing input:
 /// TPC_FUZZ_VERBOSE=1 FuzzCore <file>.
-void Describe(const tpc::ImplicitScene& scene, const tpc::SubdivisionParameters& p, const tpc::Box3& domain)
+void Describe(
+  const tpc::ImplicitScene& scene, double tolerance, int depth, std::size_t cells, const tpc::Box3& domain)
 {
-  std::fprintf(stderr, "tolerance %.17g, depth %d, cells %zu, domain [%g %g %g]-[%g %g %g]\n", p.HausdorffTolerance,
-    p.MaximumDepth, p.MaximumNumberOfCells, domain.lo[0], domain.lo[1], domain.lo[2], domain.hi[0], domain.hi[1],
+  std::fprintf(stderr, "tolerance %.17g, depth %d, cells %zu, domain [%g %g %g]-[%g %g %g]\n", tolerance, depth,
+    cells, domain.lo[0], domain.lo[1], domain.lo[2], domain.hi[0], domain.hi[1],
     domain.hi[2]);
   for (const tpc::Quadric& q : scene.Primitives.Quadrics)
   {
@@ -132,31 +133,24 @@ void Describe(const tpc::ImplicitScene& scene, const tpc::SubdivisionParameters&
   }
 }
 
-/// Runs the core with small limits and checks the properties that hold for
-/// every input. Returns the run for further checks.
-tpctest::ContourRun RunAndCheck(FuzzedDataProvider& in, const tpc::ImplicitScene& scene, const tpc::Box3& bounds)
+/// Runs the core's entry point with small limits and checks the properties
+/// that hold for every input. Returns the run for further checks.
+tpctest::ContourRun RunAndCheck(FuzzedDataProvider& in, const tpctest::Scene& scene, const tpc::Box3& bounds)
 {
   tpctest::ContourRun r;
   if (!scene.Expression)
   {
     return r;
   }
-  const tpc::Box3 domain = tpctest::GrownDomain(bounds);
-  tpc::SubdivisionParameters p;
   // (An exhausted input gives the coarsest tolerance and the deepest limit.)
-  p.HausdorffTolerance = (0.3 - Number(in, 0.0, 0.26)) * bounds.Diagonal();
-  p.MaximumDepth = tightLimits ? 2 + in.ConsumeIntegralInRange<int>(0, 3) : 9 - in.ConsumeIntegralInRange<int>(0, 5);
-  p.MaximumNumberOfCells = tightLimits ? 3000 : 300000;
-  // As the filter: exact cells for one mesh (every mesh here meets the
-  // paper's assumptions; the others are refused).
-  p.ExactCells = tpc::IsOneMesh(*scene.Expression);
-  r.Tolerance = p.HausdorffTolerance;
+  const double tolerance = 0.3 - Number(in, 0.0, 0.26);
+  const int depth = tightLimits ? 2 + in.ConsumeIntegralInRange<int>(0, 3) : 9 - in.ConsumeIntegralInRange<int>(0, 5);
+  const std::size_t cells = tightLimits ? 3000 : 300000;
   if (std::getenv("TPC_FUZZ_VERBOSE"))
   {
-    Describe(scene, p, domain);
+    Describe(scene, tolerance * bounds.Diagonal(), depth, cells, tpctest::GrownDomain(bounds));
   }
-  tpc::PlacedSubdivision placed = tpc::RunOnBestLatticePlacement(scene, domain, p, 1);
-  r.Subdivision = std::move(placed.Result);
+  r = tpctest::Contour(scene, bounds, tolerance, depth, 1, cells);
   if (std::getenv("TPC_FUZZ_VERBOSE"))
   {
     std::size_t tiles = 0;
@@ -168,9 +162,7 @@ tpctest::ContourRun RunAndCheck(FuzzedDataProvider& in, const tpc::ImplicitScene
       r.Subdivision.Octree.Nodes.size(), r.Subdivision.Octree.FaceRefinements.size(), tiles,
       r.Subdivision.Octree.MemoryBytes());
   }
-  r.Extraction = tpc::ExtractSurface(r.Subdivision.Octree, scene);
-  r.Embedding = tpc::CheckEmbedding(r.Subdivision.Octree, r.Extraction.Mesh);
-  r.Report = tpc::ComputeTopologyReport(r.Extraction.Mesh);
+  Require(r.Contoured, "every scene with a solid is contoured");
   ++tally.Contoured;
   tally.NonEmpty += r.Extraction.Mesh.Triangles.empty() ? 0 : 1;
   tally.Guaranteed += tpctest::Guaranteed(r) ? 1 : 0;

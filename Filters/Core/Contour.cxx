@@ -1,0 +1,544 @@
+#include "Contour.h"
+
+#include "ExactCell.h"
+#include "PieceTopology.h"
+#include "SelfIntersection.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace tpc
+{
+namespace
+{
+// Shares of the progress range (Contour.h).
+constexpr double ChecksEnd = 0.02;
+constexpr double SubdivisionEnd = 0.86;
+constexpr double ExtractionEnd = 0.94;
+constexpr double EmbeddingEnd = 0.98;
+
+/// The run's state shared by its passes: messages, progress and aborts.
+struct Run
+{
+  ContourResult& Result;
+  const ProgressCallback& Progress;
+  const PieceOfRun& Piece;
+  const PieceExchange& Exchange;
+  /// Ranks of a split run must all reach every collective call: there an
+  /// abort is only honoured where the ranks agree on it, after a lattice
+  /// placement (RunOnBestLatticePlacement); the other stages report only.
+  bool MayAbort = true;
+  bool AbortAsked = false;
+  double Reported = 0.0;
+
+  void Warn(const std::string& text) { this->Result.Messages.push_back({ ContourMessage::Level::Warning, text }); }
+  bool Refuse(const std::string& text)
+  {
+    this->Result.Messages.push_back({ ContourMessage::Level::Error, text });
+    this->Result.Status = ContourResult::Outcome::Refused;
+    return false;
+  }
+  /// Progress over [lo, hi] of the run's range; asks to abort only where this
+  /// piece may decide alone (or `ask` when the callee agrees on it itself).
+  ProgressCallback Stage(double lo, double hi, bool ask)
+  {
+    if (!this->Progress)
+    {
+      return nullptr;
+    }
+    return [this, lo, hi, ask](double f) {
+      // (Never backwards: the stages' own fractions, composed, may round
+      // below the last report.)
+      this->Reported = std::max(this->Reported, lo + (hi - lo) * f);
+      const bool stop = this->Progress(this->Reported) && ask;
+      this->AbortAsked = this->AbortAsked || stop;
+      return stop;
+    };
+  }
+  ProgressCallback Stage(double lo, double hi) { return this->Stage(lo, hi, this->MayAbort); }
+  bool Aborted()
+  {
+    if (this->AbortAsked)
+    {
+      this->Result.Status = ContourResult::Outcome::Aborted;
+    }
+    return this->AbortAsked;
+  }
+  std::size_t Sum(std::size_t x) const { return this->Piece.Sum ? this->Piece.Sum(x) : x; }
+  /// This process holds one piece and exchanges with the others.
+  bool Collective() const { return this->Piece.Pieces > 1 && this->Exchange.Agreed(); }
+};
+
+/// Repair verdicts: a mesh that is not closed has no inside (refused); one
+/// violating the paper's assumptions is contoured without the guarantee.
+bool CheckRepairVerdicts(const ContourScene& scene, Run& run)
+{
+  for (const SceneInput& input : scene.Inputs)
+  {
+    if (!input.Repair)
+    {
+      continue;
+    }
+    const std::string problems = input.Repair->Describe();
+    if (!input.Repair->Closed())
+    {
+      return run.Refuse(input.Name + " is not a closed surface (" + problems +
+        "), so it has no inside. Close it first (for example with vtkFillHolesFilter) or pass only closed solids.");
+    }
+    if (!input.Repair->MeetsAssumptions())
+    {
+      run.Result.AssumptionsMet = false;
+      run.Warn(input.Name + " violates the method's assumptions (" + problems +
+        "); the surface is computed but TopologyGuaranteed will be 0.");
+    }
+    else if (!problems.empty())
+    {
+      run.Warn(input.Name + " was repaired: " + problems + ".");
+    }
+  }
+  return true;
+}
+
+/// Two input meshes with coincident faces whose solids touch there (faces
+/// facing each other in a union or an intersection; flush faces where one
+/// side is subtracted: a difference complements its later inputs) meet
+/// without crossing: a tangential contact over an area, which no refinement
+/// resolves and which refining to MaximumDepth turns into millions of cells.
+bool CheckCoincidentFaces(const ContourScene& scene, const ParallelFor& parallelFor, Run& run)
+{
+  for (std::size_t a = 0; a < scene.Inputs.size(); ++a)
+  {
+    for (std::size_t b = a + 1; b < scene.Inputs.size(); ++b)
+    {
+      const SceneInput& ia = scene.Inputs[a];
+      const SceneInput& ib = scene.Inputs[b];
+      if (ia.Mesh < 0 || ib.Mesh < 0)
+      {
+        continue;
+      }
+      const bool oneSubtracted = scene.Operation == CsgTerm::Op::Difference && a == 0; // (the minuend)
+      const MeshSolid& ma = scene.Primitives.Meshes[static_cast<std::size_t>(ia.Mesh)];
+      const MeshSolid& mb = scene.Primitives.Meshes[static_cast<std::size_t>(ib.Mesh)];
+      const std::size_t touching = !ma.Bounds().Overlaps(mb.Bounds())
+        ? 0
+        : CountCoincidentFaces(ma.Points(), ma.Triangles(), mb.Points(), mb.Triangles(), !oneSubtracted, 100,
+            parallelFor, run.Stage(0.0, ChecksEnd));
+      if (run.Aborted())
+      {
+        return false;
+      }
+      if (touching > 0)
+      {
+        run.Result.AssumptionsMet = false;
+        std::ostringstream text;
+        text << ia.Name << " and " << ib.Name << " touch along coincident faces (" << touching
+             << (touching >= 100 ? " or more" : "")
+             << " pairs of triangles in one plane): their surfaces meet without crossing, a tangential contact "
+                "that no refinement resolves. The surface is computed but TopologyGuaranteed will be 0; move one "
+                "input slightly, or merge them into one mesh.";
+        run.Warn(text.str());
+      }
+    }
+  }
+  return true;
+}
+
+CsgTerm FoldInputs(const ContourScene& scene)
+{
+  CsgTerm term = scene.Inputs.front().Solid;
+  for (std::size_t i = 1; i < scene.Inputs.size(); ++i)
+  {
+    term = CsgTerm::Combine(scene.Operation, { std::move(term), scene.Inputs[i].Solid });
+  }
+  return term;
+}
+
+/// The box to contour: Bounds, else Region, else the solid's bounding box.
+std::optional<Box3> ChooseDomain(const CsgTerm& solid, const ContourScene& scene, const ContourParameters& p, Run& run)
+{
+  Box3 domain;
+  if (p.Bounds)
+  {
+    domain = *p.Bounds;
+  }
+  else
+  {
+    const SolidBounds sb = solid.Bounds(scene.Primitives);
+    if (sb.Empty)
+    {
+      run.Warn("The solid is empty: nothing to contour.");
+      run.Result.Status = ContourResult::Outcome::Empty;
+      return std::nullopt;
+    }
+    if (!sb.Bounded() && !p.Region)
+    {
+      run.Refuse("The solid is unbounded (e.g. a plane or a cylinder is not intersected with a bounded solid): "
+                 "set Bounds to the region to contour.");
+      return std::nullopt;
+    }
+    domain = sb.Box;
+    if (p.Region)
+    {
+      // (The lattice extends 5 % beyond the Region; a solid's box derived
+      // from its primitives may exceed a Region drawn at the solid's faces by
+      // rounding, hence the 1 % slack.)
+      const Box3 r = p.Region->Grown(0.01);
+      const bool inside = sb.Bounded() && r.Contains(domain.lo) && r.Contains(domain.hi);
+      if (!inside)
+      {
+        run.Refuse("The Region does not contain the solid: the surface outside it would be lost; clip with Bounds "
+                   "instead.");
+        return std::nullopt;
+      }
+      domain = *p.Region;
+    }
+  }
+  const double diagonal = domain.Diagonal();
+  if (!(diagonal > 0.0) || !std::isfinite(diagonal))
+  {
+    std::ostringstream text;
+    text << "The domain is degenerate (diagonal " << diagonal << "): check Bounds.";
+    run.Refuse(text.str());
+    return std::nullopt;
+  }
+  return domain;
+}
+
+/// The inputs' own checks (Verify), over the domain grown by 10 %.
+bool VerifyInputs(const ContourScene& scene, const Box3& domain, Run& run)
+{
+  const Box3 sampleBox = domain.Grown(0.1);
+  for (const SceneInput& input : scene.Inputs)
+  {
+    const std::string error = input.Verify ? input.Verify(scene.Primitives, input.Solid, sampleBox) : std::string();
+    if (!error.empty())
+    {
+      return run.Refuse(error);
+    }
+  }
+  return true;
+}
+
+/// Intersects `solid` with the six planes of `box` (capping it there) and
+/// returns the root domain: `box` grown by 1e-3 of its diagonal, which keeps
+/// the cap faces off the grid's outer boundary without enlarging the grid.
+Box3 ClipToBounds(CsgTerm& solid, PrimitiveSet& primitives, const Box3& box)
+{
+  std::vector<CsgTerm> operands{ solid };
+  for (int a = 0; a < 3; ++a)
+  {
+    Vec3 n, o;
+    n[a] = 1.0;
+    o[a] = box.hi[a];
+    primitives.Quadrics.push_back(Quadric::Plane(o, n));
+    operands.push_back(CsgTerm::Primitive(static_cast<int>(primitives.Quadrics.size() - 1)));
+    n[a] = -1.0;
+    o[a] = box.lo[a];
+    primitives.Quadrics.push_back(Quadric::Plane(o, n));
+    operands.push_back(CsgTerm::Primitive(static_cast<int>(primitives.Quadrics.size() - 1)));
+  }
+  solid = CsgTerm::Combine(CsgTerm::Op::Intersection, std::move(operands));
+  return box.Grown(1e-3);
+}
+
+/// What the subdivision is asked: the tolerance, the limits, exact cells for
+/// one valid mesh, and a depth cap where the guarantee is lost anyway.
+SubdivisionParameters ChooseSubdivisionParameters(
+  const ContourParameters& p, const ImplicitScene& scene, const Box3& rootDomain, double tolerance, Run& run)
+{
+  SubdivisionParameters params;
+  params.HausdorffTolerance = tolerance;
+  params.MaximumDepth = p.MaximumDepth;
+  params.MaximumNumberOfCells = std::max<std::size_t>(p.MaximumNumberOfCells, 8);
+  // Remeshing one valid closed mesh: where the tests cannot resolve a cell at
+  // the tolerance's size, its patch is the mesh itself (ExactCell.h).
+  params.ExactCells = run.Result.AssumptionsMet && IsOneMesh(*scene.Expression);
+  if (!run.Result.AssumptionsMet)
+  {
+    // The guarantee is lost anyway, and self-intersections are complex at
+    // every depth: refining them to MaximumDepth costs minutes and buys
+    // nothing. Stop three levels below the cells the tolerance needs.
+    const int toleranceLevel = ToleranceLevel(rootDomain, tolerance);
+    if (toleranceLevel + 3 < params.MaximumDepth)
+    {
+      params.MaximumDepth = std::max(0, toleranceLevel + 3);
+      std::ostringstream text;
+      text << "The inputs violate the method's assumptions: refinement stops at depth " << params.MaximumDepth
+           << " instead of MaximumDepth (" << p.MaximumDepth << ").";
+      run.Warn(text.str());
+    }
+  }
+  return params;
+}
+
+/// Subdivision on the best lattice placement, extraction and the exact
+/// embedding check, whose failing cells are marked in the octree.
+bool SubdivideAndExtract(const ImplicitScene& scene, const Box3& rootDomain, int placements,
+  const ParallelFor& parallelFor, Run& run)
+{
+  ContourResult& r = run.Result;
+  r.Placed = RunOnBestLatticePlacement(scene, rootDomain, r.Parameters, placements, parallelFor,
+    run.Stage(ChecksEnd, SubdivisionEnd, true), run.Piece);
+  if (r.Placed.Result.Aborted)
+  {
+    r.Status = ContourResult::Outcome::Aborted;
+    return false;
+  }
+  AdaptiveOctree& octree = r.Placed.Result.Octree;
+  r.Extraction = ExtractSurface(octree, scene, parallelFor, run.Stage(SubdivisionEnd, ExtractionEnd));
+  if (r.Extraction.Aborted || run.Aborted())
+  {
+    r.Status = ContourResult::Outcome::Aborted;
+    return false;
+  }
+  r.Embedding = CheckEmbedding(octree, r.Extraction.Mesh, parallelFor, run.Stage(ExtractionEnd, EmbeddingEnd));
+  if (r.Embedding.Aborted || run.Aborted())
+  {
+    r.Status = ContourResult::Outcome::Aborted;
+    return false;
+  }
+  for (const std::uint32_t n : r.Embedding.Cells)
+  {
+    OctreeNode& node = octree.Nodes[n];
+    node.State = CellState::Unresolved;
+    node.Reason = node.FailedTest = SplitReason::PatchNotEmbedded;
+  }
+  return true;
+}
+
+/// Pairs of this piece's seam triangles meeting improperly those of the
+/// pieces after it (pieces' triangles can only meet across the seams:
+/// SurfaceEmbedding.h).
+std::size_t CountImproperPairsAcrossSeams(const ContourResult& r, const Run& run)
+{
+  const std::vector<std::vector<double>> seams =
+    run.Exchange.GatherAll(SeamTriangles(r.Placed.Result.Octree, r.Extraction.Mesh));
+  const std::vector<double>& mine = seams[static_cast<std::size_t>(run.Piece.Piece)];
+  std::size_t pairs = 0;
+  for (std::size_t other = static_cast<std::size_t>(run.Piece.Piece) + 1; other < seams.size(); ++other)
+  {
+    pairs += CountImproperSeamPairs(mine, seams[other]);
+  }
+  return pairs;
+}
+
+/// Components of the whole surface: each piece's counts summed, components
+/// joined across the seams (PieceTopology.h).
+TopologyReport WholeTopology(const ContourResult& r, const Run& run)
+{
+  if (!run.Collective())
+  {
+    return r.Topology;
+  }
+  std::vector<double> all;
+  for (const std::vector<double>& piece : run.Exchange.GatherAll(DescribePiece(r.Extraction.Mesh).Serialize()))
+  {
+    all.insert(all.end(), piece.begin(), piece.end());
+  }
+  return CombinePieces(PieceSeams::DeserializeAll(all));
+}
+
+/// What the embedding check found over all pieces.
+struct EmbeddingOfAllPieces
+{
+  std::size_t NotEmbeddedPieces = 0;
+  std::size_t ImproperPairs = 0;
+  std::size_t CoincidentVertices = 0;
+  std::size_t Degenerate = 0;
+  std::size_t BlamedCells = 0;
+};
+
+EmbeddingOfAllPieces SumEmbedding(const ContourResult& r, const Run& run)
+{
+  const std::size_t seamPairs = run.Collective() ? CountImproperPairsAcrossSeams(r, run) : 0;
+  const EmbeddingReport& e = r.Embedding;
+  EmbeddingOfAllPieces all;
+  all.NotEmbeddedPieces = run.Sum(e.Embedded() && seamPairs == 0 ? 0 : 1);
+  all.ImproperPairs = run.Sum(e.ImproperPairs + seamPairs);
+  all.CoincidentVertices = run.Sum(e.CoincidentVertices);
+  all.Degenerate = run.Sum(e.DegenerateTriangles + e.TrianglesOutsideCells);
+  all.BlamedCells = run.Sum(e.Cells.size());
+  return all;
+}
+
+/// The subdivision's statistics over all pieces.
+SubdivisionResult SumSubdivision(const ContourResult& r, const Run& run)
+{
+  const SubdivisionResult& sub = r.Placed.Result;
+  SubdivisionResult all;
+  all.UnresolvedCells = r.Placed.UnresolvedCellsOfAllPieces;
+  all.FacingSurfaceCells = run.Sum(sub.FacingSurfaceCells);
+  all.DepthLimitReached = run.Sum(sub.DepthLimitReached ? 1 : 0) > 0;
+  all.CellLimitReached = run.Sum(sub.CellLimitReached ? 1 : 0) > 0;
+  all.PlanarSurfaceCells = run.Sum(sub.PlanarSurfaceCells);
+  all.ExactCells = run.Sum(sub.ExactCells);
+  for (int reason = 0; reason < SplitReasonCount; ++reason)
+  {
+    all.UnresolvedByReason[reason] = run.Sum(sub.UnresolvedByReason[reason]);
+  }
+  all.HausdorffBound = run.Collective() ? run.Exchange.Max(sub.HausdorffBound) : sub.HausdorffBound;
+  return all;
+}
+
+/// Why the guarantee does not hold, for the cells a limit stopped.
+void DescribeUnresolvedCells(std::ostringstream& why, const SubdivisionResult& all, const ContourResult& r,
+  const ContourParameters& p)
+{
+  why << " " << all.UnresolvedCells << " surface cell(s) were stopped";
+  if (all.DepthLimitReached)
+  {
+    why << " by MaximumDepth (" << r.Parameters.MaximumDepth << ")";
+  }
+  if (all.CellLimitReached)
+  {
+    why << " by MaximumNumberOfCells (" << p.MaximumNumberOfCells << ")";
+  }
+  why << " with a test still failing:";
+  for (int reason = 1; reason < SplitReasonCount; ++reason)
+  {
+    if (all.UnresolvedByReason[reason] > 0)
+    {
+      why << " " << SplitReasonName(static_cast<SplitReason>(reason)) << " " << all.UnresolvedByReason[reason] << ";";
+    }
+  }
+  if (all.FacingSurfaceCells > 0)
+  {
+    why << " " << all.FacingSurfaceCells
+        << " of them because two surfaces face each other there closer than the finest cell (" << r.Placed.FinestCell
+        << "): solids touching along a face, or a gap or slab thinner than that, which no refinement separates "
+           "(SplitReason 10, SURFACES_TOO_CLOSE);";
+  }
+  if (r.Placed.PlacementsTried > 1)
+  {
+    why << " (best of " << r.Placed.PlacementsTried << " lattice placements tried);";
+  }
+  why << " they are marked CellState=3 in the grid output.";
+  if (all.UnresolvedCells > all.FacingSurfaceCells)
+  {
+    why << " Tangential contact between primitives never passes the tests; otherwise raise the limits.";
+  }
+  if (all.FacingSurfaceCells > 0)
+  {
+    why << " Overlap touching solids (or move them apart) by more than the finest cell; for a real thin gap or "
+           "slab, raise MaximumDepth.";
+  }
+}
+
+/// TopologyGuaranteed, and the report: the guarantee holds when the inputs
+/// meet the paper's assumptions, every surface cell passed the tests, every
+/// cell's crossings closed into loops, the output is embedded (exact check),
+/// the pieces agreed, and the surface is closed, manifold and oriented (or
+/// empty). Says why, once, when it does not.
+void DecideGuarantee(ContourResult& r, const ContourParameters& p, double tolerance, const Run& run)
+{
+  const SubdivisionResult all = SumSubdivision(r, run);
+  const EmbeddingOfAllPieces embedding = SumEmbedding(r, run);
+  const std::size_t inconsistent = run.Sum(r.Extraction.InconsistentCells);
+  const std::size_t withoutPatch = run.Sum(r.Extraction.CellsWithoutPatch);
+  r.Topology = WholeTopology(r, run);
+  const TopologyReport& whole = r.Topology;
+  ContourReport& report = r.Report;
+  // Surface in a cell without a patch is missing from the output: no bound.
+  report.HausdorffBound = withoutPatch == 0 ? all.HausdorffBound : std::nan("");
+  report.Embedded = embedding.NotEmbeddedPieces == 0;
+  report.PlanarCells = static_cast<long long>(all.PlanarSurfaceCells);
+  report.ExactCells = static_cast<long long>(all.ExactCells);
+  report.AbsoluteTolerance = tolerance;
+  report.Components = whole.Components;
+  report.Genus = whole.Genus;
+  report.EulerCharacteristic = whole.EulerCharacteristic;
+  report.UnresolvedCells = static_cast<long long>(all.UnresolvedCells);
+  report.Closed = whole.Closed;
+  report.Manifold = whole.Manifold;
+  const bool empty = whole.Faces == 0;
+  report.Guaranteed = r.AssumptionsMet && all.UnresolvedCells == 0 && inconsistent == 0 && report.Embedded &&
+    (run.Piece.Pieces == 1 || run.Collective()) && (empty || (whole.Closed && whole.Manifold && whole.Oriented));
+  if (report.Guaranteed || (run.Collective() && run.Piece.Piece != 0)) // (one piece says it)
+  {
+    return;
+  }
+  std::ostringstream why;
+  why << "The topology guarantee does not hold:";
+  if (!r.AssumptionsMet)
+  {
+    why << " the inputs violate the method's assumptions (see the warnings above);";
+  }
+  if (all.UnresolvedCells > 0)
+  {
+    DescribeUnresolvedCells(why, all, r, p);
+  }
+  if (embedding.NotEmbeddedPieces > 0)
+  {
+    why << " the surface is not embedded: " << embedding.ImproperPairs
+        << " pair(s) of triangles meet other than in a shared edge or vertex, " << embedding.CoincidentVertices
+        << " vertex pair(s) coincide, " << embedding.Degenerate
+        << " triangle(s) are degenerate (exact test of the output); their " << embedding.BlamedCells
+        << " cell(s) are marked CellState=3, SplitReason 11 (PATCH_NOT_EMBEDDED).";
+  }
+  if (inconsistent > 0)
+  {
+    why << " " << inconsistent << " cell(s) gave inconsistent loops.";
+  }
+  r.Messages.push_back({ ContourMessage::Level::Warning, why.str() });
+}
+} // namespace
+
+ContourResult Contour(ContourScene scene, const ContourParameters& parameters, const ParallelFor& parallelFor,
+  const ProgressCallback& progress, const PieceOfRun& piece, const PieceExchange& exchange)
+{
+  ContourResult result;
+  Run run{ result, progress, piece, exchange };
+  run.MayAbort = !run.Collective();
+  if (scene.Inputs.empty())
+  {
+    run.Refuse("No solid to contour: connect closed triangle meshes to the input and/or set an ImplicitFunction "
+               "(the solid is where it is negative).");
+    return result;
+  }
+  if (!CheckRepairVerdicts(scene, run) || !CheckCoincidentFaces(scene, parallelFor, run))
+  {
+    return result;
+  }
+  CsgTerm solid = FoldInputs(scene);
+  const std::optional<Box3> domain = ChooseDomain(solid, scene, parameters, run);
+  if (!domain || !VerifyInputs(scene, *domain, run))
+  {
+    return result;
+  }
+  const double tolerance =
+    parameters.ToleranceIsRelative ? parameters.Tolerance * domain->Diagonal() : parameters.Tolerance;
+  if (!(tolerance > 0.0) || !std::isfinite(tolerance))
+  {
+    std::ostringstream text;
+    text << "Tolerance must be positive (got " << parameters.Tolerance << ").";
+    run.Refuse(text.str());
+    return result;
+  }
+  // A margin of 5 % keeps the surface away from the grid's outer boundary;
+  // clipped solids are capped inside the Bounds instead.
+  const Box3 rootDomain =
+    parameters.Bounds ? ClipToBounds(solid, scene.Primitives, *domain) : domain->Grown(0.05);
+  ImplicitScene implicitScene{ std::move(scene.Primitives), CsgExpression::FromTerm(solid) };
+  result.Parameters = ChooseSubdivisionParameters(parameters, implicitScene, rootDomain, tolerance, run);
+  // Another lattice placement usually resolves cells a first one leaves to
+  // the depth limit (a crease a hair from a lattice plane); inputs violating
+  // the method's assumptions are not worth the retries.
+  const int placements =
+    result.AssumptionsMet && (piece.Pieces == 1 || run.Collective()) ? parameters.LatticePlacements : 1;
+  if (!SubdivideAndExtract(implicitScene, rootDomain, placements, parallelFor, run))
+  {
+    return result;
+  }
+  result.Topology =
+    ComputeTopologyReport(result.Extraction.Mesh, parallelFor, run.Stage(EmbeddingEnd, 1.0));
+  if (run.Aborted())
+  {
+    return result;
+  }
+  DecideGuarantee(result, parameters, tolerance, run);
+  result.Status = ContourResult::Outcome::Contoured;
+  return result;
+}
+
+} // namespace tpc

@@ -1,0 +1,156 @@
+// The core's one entry point: everything a run decides, except converting
+// VTK data.
+//
+// tpc::Contour takes the solids (meshes with their repair verdicts, implicit
+// terms), how to combine them and the user's parameters, and owns the whole
+// contouring policy: the checks on the inputs and what they imply (a mesh that
+// is not closed is refused; one violating the paper's assumptions caps the
+// depth and rules out the guarantee; coincident faces of two meshes are a
+// tangential contact), the domain and its margins, clipping to Bounds, the
+// lattice placements, the subdivision (paper 5.3), the extraction (4.3), the
+// exact embedding check, the topology report of the whole surface (also when
+// this process holds one piece of it), and *the* definition of
+// TopologyGuaranteed with the reasons when it is 0.
+//
+// The VTK filter, the core tests, the fuzz target and the MPI piece path all
+// call it, so a change of criterion is made here once and every test and the
+// fuzzer see it.
+#pragma once
+
+#include "CsgExpression.h"
+#include "MeshRepair.h"
+#include "Parallel.h"
+#include "SurfaceEmbedding.h"
+#include "SurfaceExtraction.h"
+#include "TopologyPreservingSubdivision.h"
+#include "TopologyReport.h"
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tpc
+{
+
+/// One solid of the scene.
+struct SceneInput
+{
+  std::string Name; ///< how messages call it ("Input 2", "The ImplicitFunction")
+  CsgTerm Solid;
+  /// For an input mesh: its index in the scene's Primitives.Meshes.
+  int Mesh = -1;
+  /// For an input mesh: what repair found. Absent: the caller vouches that the
+  /// mesh is closed, manifold and free of self-intersections (test scenes).
+  std::optional<MeshRepairReport> Repair;
+  /// Called once the domain is known, with the scene's primitives, this
+  /// input's solid and a box around the domain: an error text when the
+  /// solid's description disagrees with the caller's own evaluation of it
+  /// (the VTK adapter samples its vtkImplicitFunction), empty otherwise.
+  std::function<std::string(const PrimitiveSet&, const CsgTerm&, const Box3&)> Verify;
+};
+
+struct ContourScene
+{
+  PrimitiveSet Primitives;
+  std::vector<SceneInput> Inputs;
+  /// Folds the inputs in order: ((S0 op S1) op ...) op Sn. In a difference
+  /// the first input is the minuend.
+  CsgTerm::Op Operation = CsgTerm::Op::Union;
+};
+
+struct ContourParameters
+{
+  /// The two-sided Hausdorff bound epsilon, relative to the diagonal of the
+  /// domain (Bounds, Region, or the solid's bounding box) or absolute.
+  double Tolerance = 0.01;
+  bool ToleranceIsRelative = true;
+  int MaximumDepth = 16;
+  std::size_t MaximumNumberOfCells = 10000000; ///< (at least 8 are used)
+  /// Clip the solid to this box (capped: the planes of its faces bound the
+  /// solid) and contour only there.
+  std::optional<Box3> Bounds;
+  /// Lay the lattice over this box (with the usual margin) instead of the
+  /// solid's bounding box, without clipping; it must contain the solid (to
+  /// 1 % of its diagonal). For tests that place the lattice on purpose.
+  std::optional<Box3> Region;
+  /// At most this many lattice placements (LatticePlacement.h); fewer when
+  /// the inputs violate the assumptions or the pieces cannot agree.
+  int LatticePlacements = tpc::LatticePlacements;
+};
+
+/// The report every output carries (the filter's field data).
+struct ContourReport
+{
+  long long Components = 0;
+  long long Genus = -1;
+  long long EulerCharacteristic = 0;
+  bool Guaranteed = false;
+  long long UnresolvedCells = 0;
+  bool Closed = false;
+  bool Manifold = false;
+  bool Embedded = false;
+  long long PlanarCells = 0;
+  long long ExactCells = 0;
+  /// Proven two-sided Hausdorff bound; NaN when a limit left surface without
+  /// a patch (then no bound is proven).
+  double HausdorffBound = 0.0;
+  double AbsoluteTolerance = 0.0;
+};
+
+struct ContourMessage
+{
+  enum class Level
+  {
+    Warning,
+    Error
+  };
+  Level Severity = Level::Warning;
+  std::string Text;
+};
+
+/// The exchanges a piece of a run split among processes needs, beyond
+/// PieceOfRun::Sum. Unset: the piece decides alone and reports itself only.
+struct PieceExchange
+{
+  std::function<double(double)> Max;
+  /// Every piece's vector, in piece order.
+  std::function<std::vector<std::vector<double>>(const std::vector<double>&)> GatherAll;
+
+  bool Agreed() const { return static_cast<bool>(this->GatherAll) && static_cast<bool>(this->Max); }
+};
+
+struct ContourResult
+{
+  enum class Outcome
+  {
+    Contoured, ///< outputs below are set
+    Refused,   ///< bad input or parameters: an Error message says why
+    Empty,     ///< the solid is empty (a Warning says so)
+    Aborted    ///< progress asked to stop; outputs are incomplete
+  };
+  Outcome Status = Outcome::Refused;
+  std::vector<ContourMessage> Messages; ///< in the order they arose
+  /// Every input met the paper's assumptions.
+  bool AssumptionsMet = true;
+  SubdivisionParameters Parameters; ///< as used (depth cap included)
+  PlacedSubdivision Placed;         ///< grid, octree (cells failing the embedding check marked)
+  ExtractionResult Extraction;
+  EmbeddingReport Embedding;        ///< of this piece
+  TopologyReport Topology;          ///< of the whole surface (all pieces)
+  ContourReport Report;
+
+  /// The octree and the statistics of the subdivision that was kept.
+  const SubdivisionResult& Subdivision() const { return this->Placed.Result; }
+  const TriangleMesh& Surface() const { return this->Extraction.Mesh; }
+};
+
+/// Contours `scene` (see the header comment). `progress` runs over [0, 1]:
+/// input checks to 0.02, subdivision to 0.86, extraction to 0.94, embedding
+/// check to 0.98, topology report to 1; its answer true asks to abort (a
+/// split run honours it only where the pieces agree, after a placement).
+ContourResult Contour(ContourScene scene, const ContourParameters& parameters,
+  const ParallelFor& parallelFor = SequentialFor, const ProgressCallback& progress = nullptr,
+  const PieceOfRun& piece = PieceOfRun(), const PieceExchange& exchange = PieceExchange());
+
+} // namespace tpc
