@@ -65,7 +65,7 @@ struct Run
     }
     return this->AbortAsked;
   }
-  std::size_t Sum(std::size_t x) const { return this->Piece.Sum ? this->Piece.Sum(x) : x; }
+  std::size_t Sum(std::size_t x) const { return this->Piece.SumOverPieces(x); }
   /// This process holds one piece and exchanges with the others.
   bool Collective() const { return this->Piece.Pieces > 1 && this->Exchange.Agreed(); }
 };

@@ -517,7 +517,7 @@ PlacedSubdivision RunOnBestLatticePlacement(const ImplicitScene& scene, const Bo
       return false;
     };
   }
-  auto sum = [&piece, split](std::size_t x) { return split && piece.Sum ? piece.Sum(x) : x; };
+  auto sum = [&piece, split](std::size_t x) { return split ? piece.SumOverPieces(x) : x; };
   PlacedSubdivision best;
   if (progress && progress(0.0))
   {

@@ -135,6 +135,9 @@ struct PieceOfRun
   int Piece = 0;
   int Pieces = 1;
   std::function<std::size_t(std::size_t)> Sum; ///< unset: this piece alone (identity)
+
+  /// `x` summed over the pieces (this piece's own `x` when Sum is unset).
+  std::size_t SumOverPieces(std::size_t x) const { return this->Sum ? this->Sum(x) : x; }
 };
 
 PlacedSubdivision RunOnBestLatticePlacement(const ImplicitScene& scene, const Box3& domain,
