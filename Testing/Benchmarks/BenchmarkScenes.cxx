@@ -1,6 +1,7 @@
 #include "BenchmarkScenes.h"
 
 #include "vtkBox.h"
+#include "vtkCylinder.h"
 #include "vtkImplicitBoolean.h"
 #include "vtkImplicitPolyDataDistance.h"
 #include "vtkNew.h"
@@ -59,6 +60,41 @@ vtkSmartPointer<vtkImplicitFunction> EllipsoidFunction(const Ellipsoid& e)
   sphere->SetRadius(1.0);
   sphere->SetTransform(toUnit);
   return sphere;
+}
+
+/// The demo's solid: (cube ∩ sphere) − (x, y and z cylinders).
+vtkSmartPointer<vtkImplicitFunction> DemoSolid()
+{
+  vtkNew<vtkBox> cube;
+  cube->SetBounds(-0.5, 0.5, -0.5, 0.5, -0.5, 0.5);
+  vtkNew<vtkSphere> ball;
+  ball->SetRadius(0.68);
+  vtkNew<vtkImplicitBoolean> body;
+  body->SetOperationTypeToIntersection();
+  body->AddFunction(cube);
+  body->AddFunction(ball);
+  vtkNew<vtkImplicitBoolean> solid;
+  solid->SetOperationTypeToDifference();
+  solid->AddFunction(body);
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    vtkNew<vtkCylinder> hole;
+    hole->SetAxis(axis == 0, axis == 1, axis == 2);
+    hole->SetRadius(0.25);
+    solid->AddFunction(hole);
+  }
+  return solid;
+}
+
+vtkSmartPointer<vtkPolyData> Translated(vtkPolyData* mesh, double x, double y, double z)
+{
+  vtkNew<vtkTransform> move;
+  move->Translate(x, y, z);
+  vtkNew<vtkTransformPolyDataFilter> moved;
+  moved->SetTransform(move);
+  moved->SetInputData(mesh);
+  moved->Update();
+  return moved->GetOutput();
 }
 
 /// 60 disjoint spheres inside `mesh`, each at least its radius away from the
@@ -124,6 +160,10 @@ vtkSmartPointer<vtkImplicitFunction> Scene::HolesFunction() const
 
 vtkSmartPointer<vtkImplicitFunction> Scene::SolidFunction() const
 {
+  if (this->Implicit)
+  {
+    return this->Implicit;
+  }
   vtkNew<vtkImplicitBoolean> solid;
   solid->SetOperationTypeToDifference();
   if (this->HasPlate)
@@ -132,17 +172,11 @@ vtkSmartPointer<vtkImplicitFunction> Scene::SolidFunction() const
     plate->SetBounds(this->PlateBounds.data());
     solid->AddFunction(plate);
   }
-  else
+  for (const auto& mesh : this->Meshes)
   {
-    vtkNew<vtkImplicitBoolean> meshes;
-    meshes->SetOperationTypeToUnion();
-    for (const auto& mesh : this->Meshes)
-    {
-      vtkNew<vtkImplicitPolyDataDistance> distance;
-      distance->SetInput(mesh);
-      meshes->AddFunction(distance);
-    }
-    solid->AddFunction(meshes);
+    vtkNew<vtkImplicitPolyDataDistance> distance;
+    distance->SetInput(mesh);
+    solid->AddFunction(distance);
   }
   for (const Ellipsoid& e : this->Holes)
   {
@@ -190,6 +224,31 @@ Scene MakeScene(const std::string& name, const std::string& meshDirectory)
     s.Bounds = { -1.05, 1.05, -1.05, 1.05, -0.1, 0.1 };
     s.Components = 1;
     s.Genus = 100;
+    return s;
+  }
+  if (name == "demo-csg")
+  {
+    s.Implicit = DemoSolid();
+    s.Bounds = { -0.6, 0.6, -0.6, 0.6, -0.6, 0.6 };
+    s.HasBounds = false;
+    s.Components = 1;
+    s.Genus = 5;
+    return s;
+  }
+  if (name == "couplingdown" || name == "joint-minus-knot")
+  {
+    const bool boolean = name == "joint-minus-knot";
+    s.Meshes.push_back(ReadOff(meshDirectory + (boolean ? "/joint.off" : "/couplingdown.off")));
+    if (boolean)
+    {
+      s.Meshes.push_back(Translated(ReadOff(meshDirectory + "/knot1.off"), 0.0158, 0.0442, 0.0271));
+    }
+    s.Components = 1;
+    s.Genus = 9;
+    double b[6];
+    s.Meshes[0]->GetBounds(b);
+    s.Bounds = Padded(b, 0.01);
+    s.HasBounds = false;
     return s;
   }
   throw std::runtime_error("unknown scene " + name);

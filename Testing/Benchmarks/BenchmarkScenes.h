@@ -6,6 +6,13 @@
 //   (mesh minus implicit primitives): 61 components, genus 0;
 // - "plate-ellipsoids": a thin plate minus 100 thin ellipsoids piercing it at
 //   20 degrees (the paper's "curved Boolean"): 1 component, genus 100.
+// Not in the timed tables, for checking that a change keeps the output
+// (run_benchmark.py --compare): the demo's two scenes and a mesh Boolean:
+// - "demo-csg": (cube ∩ sphere) − (three cylinders), the filter's domain
+//   derived from the solid (no Bounds): 1 component, genus 5;
+// - "couplingdown": CGAL's couplingdown.off, a CAD part of genus 9;
+// - "joint-minus-knot": CGAL's joint.off minus knot1.off moved by
+//   (0.0158, 0.0442, 0.0271): 1 component, genus 9 (Data/CsgReference.csv).
 #pragma once
 
 #include "vtkImplicitFunction.h"
@@ -29,16 +36,22 @@ struct Ellipsoid
 struct Scene
 {
   std::string Name;
-  /// Closed meshes (one solid each), unioned.
+  /// Closed meshes (one solid each): the first minus the others, as the
+  /// filter folds its inputs by Difference.
   std::vector<vtkSmartPointer<vtkPolyData>> Meshes;
+  /// A whole implicit solid (VTK functions), for scenes that are neither
+  /// meshes nor the plate; OpenVDB does not run on it.
+  vtkSmartPointer<vtkImplicitFunction> Implicit;
   /// Subtracted from the meshes / from the plate (spheres are ellipsoids
   /// with equal axes).
   std::vector<Ellipsoid> Holes;
   /// The plate (implicit scenes): a box.
   bool HasPlate = false;
   std::array<double, 6> PlateBounds{};
-  /// The solid's domain (xmin, xmax, ...).
+  /// The solid's domain (xmin, xmax, ...); the filter derives its own
+  /// domain from the solid when HasBounds is false.
   std::array<double, 6> Bounds{};
+  bool HasBounds = true;
   long long Components = 0;
   long long Genus = 0;
 
@@ -49,6 +62,7 @@ struct Scene
   vtkSmartPointer<vtkImplicitFunction> HolesFunction() const;
 };
 
+/// The timed scenes.
 std::vector<std::string> SceneNames();
 /// `meshDirectory` holds CGAL's data/meshes/*.off.
 Scene MakeScene(const std::string& name, const std::string& meshDirectory);

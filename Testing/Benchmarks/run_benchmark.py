@@ -11,6 +11,9 @@ grows from epsilon to epsilon/2.
     python3 Testing/Benchmarks/run_benchmark.py --quick    # 1/64 and 1/128 only
     python3 Testing/Benchmarks/run_benchmark.py --limits   # memory budget and abort latency
     python3 Testing/Benchmarks/run_benchmark.py --ranks    # 1 vs 2 MPI ranks
+    python3 Testing/Benchmarks/run_benchmark.py --compare OLD/tpc_benchmark
+        # this build's filter vs another build's, interleaved: seconds and
+        # whether the outputs are identical (a refactoring keeps them)
     ... --scenes plate-ellipsoids --epsilons 64,128        # a subset
 
 The filter runs first; the others get its surface-cell edge as their spacing.
@@ -24,6 +27,8 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SCENES = ["armadillo", "turbine", "armadillo-cavities", "plate-ellipsoids"]
+# Untimed scenes that --compare also checks: the demo's two and a mesh Boolean.
+CHECK_SCENES = ["demo-csg", "couplingdown", "joint-minus-knot"]
 METHODS = [("tpc", 1), ("tpc", 2), ("vtk", 2), ("vdb", 2)]
 LABEL = {("tpc", 1): "filter, 1 thread", ("tpc", 2): "filter, 2 threads",
          ("vtk", 2): "VTK sample+FE, 2 thr", ("vdb", 2): "OpenVDB, 2 threads"}
@@ -46,9 +51,12 @@ ABORT_POINTS = [("inputs", 0.01), ("subdivision", 0.3), ("subdivision", 0.8), ("
                 ("grid output", 0.96)]
 
 
-def run(program, meshes, method, scene, epsilon, threads, cell_size, timeout, max_cells=None, abort_at=None):
+def run(program, meshes, method, scene, epsilon, threads, cell_size, timeout, max_cells=None, abort_at=None,
+        fingerprint=False):
     cmd = [program, "--method", method, "--scene", scene, "--epsilon", repr(epsilon),
            "--threads", str(threads), "--meshes", meshes]
+    if fingerprint:
+        cmd += ["--fingerprint", "1"]
     if cell_size:
         cmd += ["--cell-size", repr(cell_size)]
     if max_cells:
@@ -186,6 +194,47 @@ def ranks(a):
     return 1 if failed else 0
 
 
+def compare(a):
+    """This build's filter against another build's (--compare PROGRAM), both
+    with 2 threads, runs interleaved (new, old, new, old, ...) so that the
+    machine's drift hits both alike: median seconds, their ratio, and whether
+    the two outputs are identical (a hash of every point, triangle, grid cell
+    and array: tpc_benchmark --fingerprint). Returns 1 if any output differs."""
+    print("Machine:", machine())
+    scenes = a.scenes.split(",") if a.scenes != ",".join(SCENES) else SCENES + CHECK_SCENES
+    denominators = [int(d) for d in ("64,128" if a.quick or a.epsilons == "64,128,256" else a.epsilons).split(",")]
+    rows = [["scene", "epsilon", "new s", "old s", "new / old", "triangles", "grid cells", "output"]]
+    differ = []
+    for scene in scenes:
+        for d in denominators:
+            runs = {"new": [], "old": []}
+            for _ in range(a.repeat):
+                for key, program in (("new", a.program), ("old", a.compare)):
+                    runs[key].append(run(program, a.meshes, "tpc", scene, 1.0 / d, 2, None, 4 * 3600,
+                                         fingerprint=True))
+            print(f"  ran {scene:20} 1/{d:<4} x {a.repeat}", file=sys.stderr, flush=True)
+            every = runs["new"] + runs["old"]
+            if any("error" in r for r in every):
+                rows.append([scene, f"1/{d}", "-", "-", "-", "-", "-",
+                             next(r["error"] for r in every if "error" in r)])
+                differ.append((scene, d))
+                continue
+            median = {k: sorted(r["seconds"] for r in v)[len(v) // 2] for k, v in runs.items()}
+            same = len({r["fingerprint"] for r in every}) == 1
+            differ += [] if same else [(scene, d)]
+            new, old = runs["new"][0], runs["old"][0]
+            counts = lambda key: str(new[key]) if new[key] == old[key] else f"{new[key]} (old {old[key]})"
+            rows.append([scene, f"1/{d}", f"{median['new']:.2f}", f"{median['old']:.2f}",
+                         ratio(median["new"], median["old"]), counts("triangles"), counts("grid_cells"),
+                         "identical" if same else "DIFFERENT"])
+    print(f"\nThis build vs {a.compare}: 2 threads, median of {a.repeat} interleaved runs each")
+    table(rows)
+    if differ:
+        print("\nOutputs differ (or a run failed) on:", differ)
+        return 1
+    return 0
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--program", default=os.path.join(HERE, "../../build/bin/tpc_benchmark"))
@@ -201,7 +250,13 @@ def main():
                         help="only the limits: memory vs MaximumNumberOfCells, abort latency (~3 min)")
     parser.add_argument("--ranks", action="store_true",
                         help="only the MPI runs: 1 vs 2 ranks under pvbatch (~3 min)")
+    parser.add_argument("--compare", metavar="PROGRAM",
+                        help="only the filter, against another build's tpc_benchmark: interleaved seconds and "
+                             "identical outputs, on the timed scenes and " + ", ".join(CHECK_SCENES))
+    parser.add_argument("--repeat", type=int, default=3, help="with --compare: runs of each build per case")
     a = parser.parse_args()
+    if a.compare:
+        return compare(a)
     if a.limits:
         return limits(a)
     if a.ranks:

@@ -4,6 +4,7 @@
 //
 //   tpc_benchmark --method tpc|vtk|vdb --scene NAME --epsilon E --threads N
 //                 --meshes DIR [--cell-size H] [--max-depth D] [--max-cells N] [--abort-at P]
+//                 [--fingerprint 1]
 //
 // tpc: vtkTopologyPreservingContour, epsilon relative to the diagonal of
 //      the scene's domain (Bounds set to it);
@@ -15,6 +16,8 @@
 //      at voxel size H.
 // H is the edge of the filter's surface cells at epsilon (the driver passes
 // it), so all three resolve the surface at the same finest cell size.
+// With --fingerprint 1 the filter's run also prints a hash of everything it
+// output (run_benchmark.py --compare: the same output from two builds).
 #include "BenchmarkScenes.h"
 
 #include "TopologyReport.h"
@@ -24,16 +27,20 @@
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
 #include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
 #include "vtkCubeSource.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkFlyingEdges3D.h"
+#include "vtkHyperTree.h"
 #include "vtkHyperTreeGrid.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkSMPTools.h"
 #include "vtkSampleFunction.h"
+#include "vtkStringArray.h"
 #include "vtkTopologyPreservingContour.h"
 #include "vtkTriangleFilter.h"
 
@@ -77,7 +84,79 @@ struct RunResult
   double LongestProgressGap = 0.0;
   double LongestProgressGapAt = 0.0;
   double AbortLatency = -1.0;
+  std::string Fingerprint; ///< tpc with --fingerprint only
 };
+
+/// FNV-1a over bytes: a fingerprint, not a cryptographic hash.
+struct Fnv1a
+{
+  std::uint64_t Hash = 1469598103934665603ULL;
+  void Add(const void* data, std::size_t bytes)
+  {
+    const auto* b = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < bytes; ++i)
+    {
+      this->Hash = (this->Hash ^ b[i]) * 1099511628211ULL;
+    }
+  }
+  template <typename T>
+  void AddValue(T value)
+  {
+    this->Add(&value, sizeof(value));
+  }
+  /// An array's name and values (numbers as their bytes, strings as text).
+  void AddArray(vtkAbstractArray* a)
+  {
+    if (!a)
+    {
+      return;
+    }
+    const std::string name = a->GetName() ? a->GetName() : "";
+    this->Add(name.data(), name.size());
+    this->AddValue(a->GetNumberOfValues());
+    if (auto* strings = vtkStringArray::SafeDownCast(a))
+    {
+      for (vtkIdType i = 0; i < strings->GetNumberOfValues(); ++i)
+      {
+        this->Add(strings->GetValue(i).data(), strings->GetValue(i).size());
+      }
+      return;
+    }
+    this->Add(a->GetVoidPointer(0), static_cast<std::size_t>(a->GetNumberOfValues() * a->GetDataTypeSize()));
+  }
+  void AddArrays(vtkFieldData* arrays)
+  {
+    for (int i = 0; i < arrays->GetNumberOfArrays(); ++i)
+    {
+      this->AddArray(arrays->GetAbstractArray(i));
+    }
+  }
+};
+
+/// Everything the filter output: the surface's points, triangles, point,
+/// cell and field data; the grid's trees (vertices and levels of each), cell
+/// and field data.
+std::string Fingerprint(vtkPolyData* surface, vtkHyperTreeGrid* grid)
+{
+  Fnv1a h;
+  h.AddArray(surface->GetPoints()->GetData());
+  h.AddArray(surface->GetPolys()->GetOffsetsArray());
+  h.AddArray(surface->GetPolys()->GetConnectivityArray());
+  h.AddArrays(surface->GetPointData());
+  h.AddArrays(surface->GetCellData());
+  h.AddArrays(surface->GetFieldData());
+  for (vtkIdType t = 0; t < grid->GetMaxNumberOfTrees(); ++t)
+  {
+    vtkHyperTree* tree = grid->GetTree(t);
+    h.AddValue(tree ? tree->GetNumberOfVertices() : vtkIdType(-1));
+    h.AddValue(tree ? tree->GetNumberOfLevels() : 0u);
+  }
+  h.AddArrays(grid->GetCellData());
+  h.AddArrays(grid->GetFieldData());
+  char text[17];
+  std::snprintf(text, sizeof(text), "%016llx", static_cast<unsigned long long>(h.Hash));
+  return text;
+}
 
 /// Records the filter's progress reports; requests an abort at `AbortAt`.
 struct ProgressWatch
@@ -151,8 +230,8 @@ double Diagonal(const std::array<double, 6>& b)
   return std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
 }
 
-RunResult RunFilter(
-  const tpcbench::Scene& scene, double epsilon, int maximumDepth, long long maximumCells, double abortAt)
+RunResult RunFilter(const tpcbench::Scene& scene, double epsilon, int maximumDepth, long long maximumCells,
+  double abortAt, bool fingerprint)
 {
   vtkNew<vtkTopologyPreservingContour> filter;
   ProgressWatch watch;
@@ -170,12 +249,15 @@ RunResult RunFilter(
   {
     filter->AddInputData(mesh);
   }
-  if (!scene.Holes.empty() || scene.HasPlate)
+  if (!scene.Holes.empty() || scene.HasPlate || scene.Implicit)
   {
-    filter->SetImplicitFunction(scene.HasPlate ? scene.SolidFunction() : scene.HolesFunction());
+    filter->SetImplicitFunction(scene.Meshes.empty() ? scene.SolidFunction() : scene.HolesFunction());
   }
   filter->SetOperationToDifference(); // (meshes minus holes; unused without meshes)
-  filter->SetBounds(const_cast<double*>(scene.Bounds.data()));
+  if (scene.HasBounds)
+  {
+    filter->SetBounds(const_cast<double*>(scene.Bounds.data()));
+  }
   filter->SetTolerance(epsilon);
   filter->SetToleranceIsRelative(true);
   if (maximumDepth > 0)
@@ -218,6 +300,10 @@ RunResult RunFilter(
   const double rootSize = grid->GetXCoordinates()->GetTuple1(1) - grid->GetXCoordinates()->GetTuple1(0);
   r.SurfaceCellSize = std::ldexp(rootSize, -static_cast<int>(std::ceil(std::log2(rootSize * std::sqrt(3.0) / tolerance) - 1e-9)));
   r.PlanarCells = static_cast<long>(fd->GetArray("PlanarCells")->GetTuple1(0));
+  if (fingerprint)
+  {
+    r.Fingerprint = Fingerprint(surface, grid);
+  }
   return r;
 }
 
@@ -271,6 +357,10 @@ openvdb::FloatGrid::Ptr MeshLevelSet(vtkPolyData* surface, const openvdb::math::
 
 RunResult RunOpenVdb(const tpcbench::Scene& scene, double h)
 {
+  if (scene.Implicit)
+  {
+    throw std::runtime_error("the OpenVDB baseline takes meshes, spheres and the plate, not " + scene.Name);
+  }
   openvdb::initialize();
   const auto start = Clock::now();
   const auto xform = openvdb::math::Transform::createLinearTransform(h);
@@ -287,7 +377,7 @@ RunResult RunOpenVdb(const tpcbench::Scene& scene, double h)
     openvdb::FloatGrid::Ptr next = MeshLevelSet(mesh, *xform);
     if (solid)
     {
-      openvdb::tools::csgUnion(*solid, *next);
+      openvdb::tools::csgDifference(*solid, *next);
     }
     else
     {
@@ -349,7 +439,7 @@ int main(int argc, char* argv[])
     if (!args.count(required))
     {
       std::cerr << "usage: tpc_benchmark --method tpc|vtk|vdb --scene NAME --epsilon E --threads N "
-                   "--meshes DIR [--cell-size H] [--max-depth D] [--max-cells N] [--abort-at P]\n";
+                   "--meshes DIR [--cell-size H] [--max-depth D] [--max-cells N] [--abort-at P] [--fingerprint 1]\n";
       return 1;
     }
   }
@@ -370,7 +460,7 @@ int main(int argc, char* argv[])
     {
       r = RunFilter(scene, epsilon, args.count("--max-depth") ? std::stoi(args["--max-depth"]) : 0,
         args.count("--max-cells") ? std::stoll(args["--max-cells"]) : 0,
-        args.count("--abort-at") ? std::stod(args["--abort-at"]) : 0.0);
+        args.count("--abort-at") ? std::stod(args["--abort-at"]) : 0.0, args.count("--fingerprint") > 0);
     }
     else if (method == "vtk")
     {
@@ -402,7 +492,12 @@ int main(int argc, char* argv[])
          << ", \"guaranteed\": " << (r.Guaranteed ? "true" : "false")
          << ", \"longest_progress_gap_s\": " << r.LongestProgressGap
          << ", \"longest_progress_gap_at\": " << r.LongestProgressGapAt
-         << ", \"abort_latency_s\": " << r.AbortLatency << "}";
+         << ", \"abort_latency_s\": " << r.AbortLatency;
+    if (!r.Fingerprint.empty())
+    {
+      json << ", \"fingerprint\": \"" << r.Fingerprint << "\"";
+    }
+    json << "}";
     std::cout << json.str() << std::endl;
   }
   catch (const std::exception& e)
