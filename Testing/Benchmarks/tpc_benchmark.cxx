@@ -104,7 +104,9 @@ struct Fnv1a
   {
     this->Add(&value, sizeof(value));
   }
-  /// An array's name and values (numbers as their bytes, strings as text).
+  /// An array's name, shape and values: numbers as doubles, whatever type
+  /// stores them (exact for ids below 2^53), so that a change of storage
+  /// (32- or 64-bit ids) keeps the fingerprint; strings as text.
   void AddArray(vtkAbstractArray* a)
   {
     if (!a)
@@ -113,7 +115,8 @@ struct Fnv1a
     }
     const std::string name = a->GetName() ? a->GetName() : "";
     this->Add(name.data(), name.size());
-    this->AddValue(a->GetNumberOfValues());
+    this->AddValue(a->GetNumberOfTuples());
+    this->AddValue(a->GetNumberOfComponents());
     if (auto* strings = vtkStringArray::SafeDownCast(a))
     {
       for (vtkIdType i = 0; i < strings->GetNumberOfValues(); ++i)
@@ -122,7 +125,16 @@ struct Fnv1a
       }
       return;
     }
-    this->Add(a->GetVoidPointer(0), static_cast<std::size_t>(a->GetNumberOfValues() * a->GetDataTypeSize()));
+    if (auto* numbers = vtkDataArray::SafeDownCast(a))
+    {
+      for (vtkIdType t = 0; t < numbers->GetNumberOfTuples(); ++t)
+      {
+        for (int c = 0; c < numbers->GetNumberOfComponents(); ++c)
+        {
+          this->AddValue(numbers->GetComponent(t, c));
+        }
+      }
+    }
   }
   void AddArrays(vtkFieldData* arrays)
   {
