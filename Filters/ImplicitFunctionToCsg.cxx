@@ -71,36 +71,11 @@ public:
       this->Error = "a null implicit function was found in the tree";
       return false;
     }
-    // vtkImplicitFunction::FunctionValue evaluates EvaluateFunction(T x):
-    // compose this function's own transform after the parent's.
-    Matrix toLocal = toParent;
-    if (vtkAbstractTransform* t = f->GetTransform())
+    Matrix toLocal;
+    if (!this->ComposeTransform(f, toParent, toLocal))
     {
-      auto* linear = vtkLinearTransform::SafeDownCast(t);
-      if (!linear)
-      {
-        this->Error = std::string("the Transform of a ") + f->GetClassName() + " is a " +
-          t->GetClassName() + "; only linear transforms (e.g. vtkTransform) are supported";
-        return false;
-      }
-      Matrix m;
-      vtkMatrix4x4* vm = linear->GetMatrix();
-      for (int i = 0; i < 4; ++i)
-      {
-        for (int j = 0; j < 4; ++j)
-        {
-          m[4 * i + j] = vm->GetElement(i, j);
-        }
-      }
-      if (m[12] != 0.0 || m[13] != 0.0 || m[14] != 0.0 || m[15] != 1.0)
-      {
-        this->Error = "a projective Transform on a " + std::string(f->GetClassName()) +
-          " is not supported; use an affine vtkTransform";
-        return false;
-      }
-      toLocal = Multiply(m, toParent);
+      return false;
     }
-
     if (auto* b = vtkImplicitBoolean::SafeDownCast(f))
     {
       return this->ConvertBoolean(b, toLocal, term);
@@ -129,23 +104,7 @@ public:
     }
     if (auto* p = vtkPlane::SafeDownCast(f))
     {
-      // Read the plane back from the function itself rather than from Origin
-      // and Normal: ParaView's vtkPVPlane (the Plane widget) adds an Offset
-      // along the normal and may snap the normal to an axis. Both are affine:
-      // the gradient is the normal, and f(origin) / |n|^2 the offset.
-      double o[3] = { p->GetOrigin()[0], p->GetOrigin()[1], p->GetOrigin()[2] };
-      double n[3];
-      p->EvaluateGradient(o, n);
-      const double nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
-      if (!(nn > 0.0))
-      {
-        this->Error = "a vtkPlane has a zero normal";
-        return false;
-      }
-      const double shift = p->EvaluateFunction(o) / nn;
-      const Vec3 point(o[0] - shift * n[0], o[1] - shift * n[1], o[2] - shift * n[2]);
-      term = CsgTerm::Primitive(this->Add(Quadric::Plane(point, { n[0], n[1], n[2] }), toLocal));
-      return true;
+      return this->ConvertPlane(p, toLocal, term);
     }
     if (auto* box = vtkBox::SafeDownCast(f))
     {
@@ -155,6 +114,63 @@ public:
       " are not supported; use vtkSphere, vtkQuadric, vtkBox, vtkCylinder, vtkPlane or a "
       "vtkImplicitBoolean of them";
     return false;
+  }
+
+  /// vtkImplicitFunction::FunctionValue evaluates EvaluateFunction(T x):
+  /// this function's own (affine) transform composed after the parent's.
+  bool ComposeTransform(vtkImplicitFunction* f, const Matrix& toParent, Matrix& toLocal)
+  {
+    toLocal = toParent;
+    vtkAbstractTransform* t = f->GetTransform();
+    if (!t)
+    {
+      return true;
+    }
+    auto* linear = vtkLinearTransform::SafeDownCast(t);
+    if (!linear)
+    {
+      this->Error = std::string("the Transform of a ") + f->GetClassName() + " is a " + t->GetClassName() +
+        "; only linear transforms (e.g. vtkTransform) are supported";
+      return false;
+    }
+    Matrix m;
+    vtkMatrix4x4* vm = linear->GetMatrix();
+    for (int i = 0; i < 4; ++i)
+    {
+      for (int j = 0; j < 4; ++j)
+      {
+        m[4 * i + j] = vm->GetElement(i, j);
+      }
+    }
+    if (m[12] != 0.0 || m[13] != 0.0 || m[14] != 0.0 || m[15] != 1.0)
+    {
+      this->Error = "a projective Transform on a " + std::string(f->GetClassName()) +
+        " is not supported; use an affine vtkTransform";
+      return false;
+    }
+    toLocal = Multiply(m, toParent);
+    return true;
+  }
+
+  /// The plane read back from the function itself rather than from Origin and
+  /// Normal: ParaView's vtkPVPlane (the Plane widget) adds an Offset along the
+  /// normal and may snap the normal to an axis. Both are affine: the gradient
+  /// is the normal, and f(origin) / |n|^2 the offset.
+  bool ConvertPlane(vtkPlane* p, const Matrix& toLocal, CsgTerm& term)
+  {
+    double o[3] = { p->GetOrigin()[0], p->GetOrigin()[1], p->GetOrigin()[2] };
+    double n[3];
+    p->EvaluateGradient(o, n);
+    const double nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+    if (!(nn > 0.0))
+    {
+      this->Error = "a vtkPlane has a zero normal";
+      return false;
+    }
+    const double shift = p->EvaluateFunction(o) / nn;
+    const Vec3 point(o[0] - shift * n[0], o[1] - shift * n[1], o[2] - shift * n[2]);
+    term = CsgTerm::Primitive(this->Add(Quadric::Plane(point, { n[0], n[1], n[2] }), toLocal));
+    return true;
   }
 
   bool ConvertBoolean(vtkImplicitBoolean* b, const Matrix& toLocal, CsgTerm& term)

@@ -10,6 +10,7 @@
 
 #include <fstream>
 #include <sstream>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkOFFReader);
@@ -47,6 +48,88 @@ bool NextLine(std::istream& in, std::string& line)
   }
   return false;
 }
+/// The header ([ST][C][N][4][n]OFF, possibly followed by the counts) and the
+/// vertex and face counts; what is wrong (after the file's name), or empty.
+std::string ReadCounts(std::istream& in, long long& nv, long long& nf)
+{
+  std::string line;
+  if (!NextLine(in, line))
+  {
+    return " is empty.";
+  }
+  std::istringstream header(line);
+  std::string keyword;
+  header >> keyword;
+  if (keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0)
+  {
+    return " is not an OFF file (header '" + keyword + "').";
+  }
+  if (keyword.find('4') != std::string::npos || keyword.find('n') != std::string::npos)
+  {
+    return ": " + keyword + " (non 3-D) files are not supported.";
+  }
+  if (!(header >> nv >> nf))
+  {
+    if (!NextLine(in, line))
+    {
+      return ": missing vertex and face counts.";
+    }
+    std::istringstream counts(line);
+    if (!(counts >> nv >> nf))
+    {
+      return ": bad counts line '" + line + "'.";
+    }
+  }
+  return nv < 0 || nf < 0 ? ": negative counts." : "";
+}
+
+/// `nv` vertices (x y z first on each line); what is wrong, or empty.
+std::string ReadVertices(std::istream& in, long long nv, vtkPoints* points)
+{
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(nv));
+  std::string line;
+  for (long long v = 0; v < nv; ++v)
+  {
+    double p[3];
+    std::istringstream fields;
+    if (!NextFields(in, line, fields) || !(fields >> p[0] >> p[1] >> p[2]))
+    {
+      return ": vertex " + std::to_string(v) + " of " + std::to_string(nv) + " is missing or malformed.";
+    }
+    points->SetPoint(static_cast<vtkIdType>(v), p);
+  }
+  return "";
+}
+
+/// `nf` faces (a count, then that many vertex indices below `nv`); what is
+/// wrong, or empty.
+std::string ReadFaces(std::istream& in, long long nf, long long nv, vtkCellArray* polys)
+{
+  std::string line;
+  std::vector<vtkIdType> ids;
+  for (long long f = 0; f < nf; ++f)
+  {
+    long long n = 0;
+    std::istringstream fields;
+    if (!NextFields(in, line, fields) || !(fields >> n) || n < 1)
+    {
+      return ": face " + std::to_string(f) + " of " + std::to_string(nf) + " is missing or malformed.";
+    }
+    ids.resize(static_cast<std::size_t>(n));
+    for (auto& id : ids)
+    {
+      long long index = -1;
+      if (!(fields >> index) || index < 0 || index >= nv)
+      {
+        return ": face " + std::to_string(f) + " has a bad vertex index.";
+      }
+      id = static_cast<vtkIdType>(index);
+    }
+    polys->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+  }
+  return "";
+}
 } // namespace
 
 vtkOFFReader::vtkOFFReader()
@@ -68,84 +151,16 @@ int vtkOFFReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInform
     vtkErrorMacro("Cannot open " << this->FileName << ".");
     return 0;
   }
-  std::string line;
-  if (!NextLine(in, line))
-  {
-    vtkErrorMacro(<< this->FileName << " is empty.");
-    return 0;
-  }
-  // Header: [ST][C][N][4][n]OFF, possibly followed by the counts.
-  std::istringstream header(line);
-  std::string keyword;
-  header >> keyword;
-  if (keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0)
-  {
-    vtkErrorMacro(<< this->FileName << " is not an OFF file (header '" << keyword << "').");
-    return 0;
-  }
-  if (keyword.find('4') != std::string::npos || keyword.find('n') != std::string::npos)
-  {
-    vtkErrorMacro(<< this->FileName << ": " << keyword << " (non 3-D) files are not supported.");
-    return 0;
-  }
   long long nv = -1, nf = -1;
-  if (!(header >> nv >> nf))
-  {
-    if (!NextLine(in, line))
-    {
-      vtkErrorMacro(<< this->FileName << ": missing vertex and face counts.");
-      return 0;
-    }
-    std::istringstream counts(line);
-    if (!(counts >> nv >> nf))
-    {
-      vtkErrorMacro(<< this->FileName << ": bad counts line '" << line << "'.");
-      return 0;
-    }
-  }
-  if (nv < 0 || nf < 0)
-  {
-    vtkErrorMacro(<< this->FileName << ": negative counts.");
-    return 0;
-  }
-
   vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(nv));
-  for (long long v = 0; v < nv; ++v)
-  {
-    double p[3];
-    std::istringstream fields;
-    if (!NextFields(in, line, fields) || !(fields >> p[0] >> p[1] >> p[2]))
-    {
-      vtkErrorMacro(<< this->FileName << ": vertex " << v << " of " << nv << " is missing or malformed.");
-      return 0;
-    }
-    points->SetPoint(static_cast<vtkIdType>(v), p);
-  }
   vtkNew<vtkCellArray> polys;
-  std::vector<vtkIdType> ids;
-  for (long long f = 0; f < nf; ++f)
+  std::string error = ReadCounts(in, nv, nf);
+  error = error.empty() ? ReadVertices(in, nv, points) : error;
+  error = error.empty() ? ReadFaces(in, nf, nv, polys) : error;
+  if (!error.empty())
   {
-    long long n = 0;
-    std::istringstream fields;
-    if (!NextFields(in, line, fields) || !(fields >> n) || n < 1)
-    {
-      vtkErrorMacro(<< this->FileName << ": face " << f << " of " << nf << " is missing or malformed.");
-      return 0;
-    }
-    ids.resize(static_cast<std::size_t>(n));
-    for (auto& id : ids)
-    {
-      long long index = -1;
-      if (!(fields >> index) || index < 0 || index >= nv)
-      {
-        vtkErrorMacro(<< this->FileName << ": face " << f << " has a bad vertex index.");
-        return 0;
-      }
-      id = static_cast<vtkIdType>(index);
-    }
-    polys->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+    vtkErrorMacro(<< this->FileName << error);
+    return 0;
   }
   output->SetPoints(points);
   output->SetPolys(polys);

@@ -23,7 +23,9 @@
 #include "vtkPolyData.h"
 #include "vtkMultiProcessController.h"
 #include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkTypeInt32Array.h"
 
 #include "Contour.h"
 
@@ -129,37 +131,58 @@ void ExchangeThrough(vtkMultiProcessController* controller, tpc::PieceOfRun& pie
   };
 }
 
-/// The surface with its normals and each triangle's grid cell.
-void ConvertSurface(const tpc::TriangleMesh& mesh, const std::vector<vtkIdType>& nodeToCell, vtkPolyData* out)
+/// A data array that takes over the memory of `values`, each `Width` array
+/// values (no copy; it frees it with free(), as ReleasableArray allocated
+/// it), in tuples of `components`.
+template <typename ArrayT, int Width, typename T>
+vtkSmartPointer<ArrayT> TakeOver(tpc::ReleasableArray<T>& values, int components)
 {
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.Points.size()));
-  vtkNew<vtkDoubleArray> normals;
-  normals->SetName("Normals");
-  normals->SetNumberOfComponents(3);
-  normals->SetNumberOfTuples(static_cast<vtkIdType>(mesh.Points.size()));
-  for (std::size_t i = 0; i < mesh.Points.size(); ++i)
-  {
-    points->SetPoint(static_cast<vtkIdType>(i), mesh.Points[i].x);
-    normals->SetTypedTuple(static_cast<vtkIdType>(i), mesh.Normals[i].x);
-  }
-  vtkNew<vtkCellArray> triangles;
-  triangles->AllocateExact(static_cast<vtkIdType>(mesh.Triangles.size()),
-    static_cast<vtkIdType>(3 * mesh.Triangles.size()));
+  using Value = typename ArrayT::ValueType;
+  static_assert(sizeof(T) == Width * sizeof(Value), "a value is Width array values");
+  auto array = vtkSmartPointer<ArrayT>::New();
+  array->SetNumberOfComponents(components);
+  const auto count = static_cast<vtkIdType>(Width * values.size());
+  array->SetArray(reinterpret_cast<Value*>(values.Release()), count, /*save=*/0, ArrayT::VTK_DATA_ARRAY_FREE);
+  return array;
+}
+
+/// The surface with its normals and each triangle's grid cell. The core's
+/// points, normals and triangles become the output's arrays without a copy
+/// (ReleasableArray.h); the mesh is left empty.
+void MoveSurface(tpc::TriangleMesh& mesh, const std::vector<vtkIdType>& nodeToCell, vtkPolyData* out)
+{
   vtkNew<vtkIdTypeArray> gridCell;
   gridCell->SetName("GridCell");
-  gridCell->SetNumberOfValues(static_cast<vtkIdType>(mesh.Triangles.size()));
-  for (std::size_t t = 0; t < mesh.Triangles.size(); ++t)
+  gridCell->SetNumberOfValues(static_cast<vtkIdType>(mesh.TriangleCell.size()));
+  for (std::size_t t = 0; t < mesh.TriangleCell.size(); ++t)
   {
-    const vtkIdType ids[3] = { mesh.Triangles[t][0], mesh.Triangles[t][1], mesh.Triangles[t][2] };
-    triangles->InsertNextCell(3, ids);
     gridCell->SetValue(static_cast<vtkIdType>(t), nodeToCell[mesh.TriangleCell[t]]);
   }
+  // Point ids fit 32-bit connectivity (VTK reads it natively) below 2^31.
+  vtkNew<vtkCellArray> triangles;
+  if (mesh.Points.size() <= static_cast<std::size_t>(VTK_TYPE_INT32_MAX))
+  {
+    triangles->SetData(3, TakeOver<vtkTypeInt32Array, 3>(mesh.Triangles, 1));
+  }
+  else
+  {
+    vtkNew<vtkIdTypeArray> ids;
+    ids->SetNumberOfValues(static_cast<vtkIdType>(3 * mesh.Triangles.size()));
+    for (std::size_t k = 0; k < 3 * mesh.Triangles.size(); ++k)
+    {
+      ids->SetValue(static_cast<vtkIdType>(k), mesh.Triangles[k / 3][k % 3]);
+    }
+    triangles->SetData(3, ids);
+  }
+  vtkNew<vtkPoints> points;
+  points->SetData(TakeOver<vtkDoubleArray, 3>(mesh.Points, 3));
+  auto normals = TakeOver<vtkDoubleArray, 3>(mesh.Normals, 3);
+  normals->SetName("Normals");
   out->SetPoints(points);
   out->SetPolys(triangles);
   out->GetPointData()->SetNormals(normals);
   out->GetCellData()->AddArray(gridCell);
+  mesh = tpc::TriangleMesh();
 }
 enum class InputConversion
 {
@@ -363,18 +386,19 @@ int vtkTopologyPreservingContour::RequestData(
   // empty. (The core decides where a split run may abort.)
   // A split run's ranks must all reach every collective call, so there the
   // filter's own stages never stop; the core's stage passes every request on
-  // (it knows where the pieces agree).
+  // (it knows where the pieces agree). CheckAbort sees this filter's
+  // AbortExecute and an abort of the whole pipeline or of a container filter.
   bool abortRequested = false; // (one this process may honour alone)
   auto stage = [this, collective, &abortRequested](double lo, double hi) -> tpc::ProgressCallback {
     return [this, lo, hi, collective, &abortRequested](double f) {
       this->UpdateProgress(lo + (hi - lo) * f);
-      abortRequested = abortRequested || (!collective && this->GetAbortExecute() != 0);
+      abortRequested = abortRequested || (!collective && this->CheckAbort());
       return abortRequested;
     };
   };
   auto coreStage = [this](double f) {
     this->UpdateProgress(0.08 + 0.89 * f);
-    return this->GetAbortExecute() != 0;
+    return this->CheckAbort();
   };
   auto aborted = [&]() {
     clearOutputs();
@@ -421,7 +445,7 @@ int vtkTopologyPreservingContour::RequestData(
   {
     return aborted();
   }
-  ConvertSurface(result.Surface(), nodeToCell, surfaceOut);
+  MoveSurface(result.Extraction.Mesh, nodeToCell, surfaceOut);
   surfaceOut->GetFieldData()->Initialize(); // (ConvertOctree initialized the grid)
   AddReport(gridOut, result.Report);
   AddReport(surfaceOut, result.Report);

@@ -22,7 +22,7 @@
 #include "Parallel.h"
 #include "SurfaceEmbedding.h"
 #include "SurfaceExtraction.h"
-#include "TopologyPreservingSubdivision.h"
+#include "BestLatticePlacement.h"
 #include "TopologyReport.h"
 
 #include <functional>

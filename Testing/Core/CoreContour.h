@@ -33,7 +33,7 @@ inline tpcoracle::EmbeddingVerdict CgalVerdict(const tpc::TriangleMesh& mesh)
   {
     points.push_back({ p[0], p[1], p[2] });
   }
-  return tpcoracle::CheckEmbeddingWithCgal(points, mesh.Triangles);
+  return tpcoracle::CheckEmbeddingWithCgal(points, mesh.Triangles.ToVector());
 }
 
 #ifndef TPC_TESTS_WITHOUT_GTEST

@@ -1,11 +1,23 @@
 // Helpers for tests: build CSG scenes of quadrics directly in the core.
 #pragma once
 
-#include "TopologyPreservingSubdivision.h"
+#include "BestLatticePlacement.h"
 
 namespace tpctest
 {
 using tpc::CsgTerm;
+
+/// One cubic root cell of side `size` at `origin`, with a lattice of
+/// 2^`maxDepth` spacings.
+inline tpc::RootGrid SingleRoot(const tpc::Vec3& origin, double size, int maxDepth)
+{
+  tpc::RootGrid grid;
+  grid.Origin = origin;
+  grid.RootSize = size;
+  grid.MaxDepth = maxDepth;
+  return grid;
+}
+
 using tpc::Quadric;
 using tpc::Vec3;
 

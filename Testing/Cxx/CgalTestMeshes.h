@@ -8,6 +8,8 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
+#include <gtest/gtest.h>
+
 #include <iterator>
 #include <string>
 
@@ -37,6 +39,14 @@ inline const KnownMesh CgalMeshes[] = {
   // (an exact cell).
   { "pinion", 1, 1 },
 };
+
+/// Starts a test that reads CGAL's meshes: without them (the data was not
+/// found when configuring) the test is skipped, saying why.
+#define TPC_SKIP_WITHOUT_CGAL_MESHES()                                                                              \
+  if (std::string(TPC_CGAL_DATA_MISSING).size() > 0)                                                                \
+  {                                                                                                                 \
+    GTEST_SKIP() << TPC_CGAL_DATA_MISSING;                                                                          \
+  }
 
 inline vtkSmartPointer<vtkPolyData> ReadCgalMesh(const std::string& name)
 {

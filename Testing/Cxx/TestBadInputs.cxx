@@ -7,6 +7,7 @@
 #include "FilterTestHelpers.h"
 
 #include "vtkCellArray.h"
+#include "vtkIdList.h"
 #include "vtkLineSource.h"
 #include "vtkPoints.h"
 #include "vtkSphereSource.h"
@@ -187,28 +188,91 @@ TEST(BadInputs, NonManifoldEdgesAreComputedWithoutGuarantee)
   EXPECT_EQ(t.NonManifoldEdges, 0);
 }
 
+namespace
+{
+/// The sphere scaled by `scale` and moved by (3, -2, 1) x scale, in double
+/// precision (so that only the scale, not float rounding, differs).
+vtkSmartPointer<vtkPolyData> ScaledSphere(double scale)
+{
+  vtkNew<vtkSphereSource> s;
+  s->SetThetaResolution(16);
+  s->SetPhiResolution(12);
+  s->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  vtkNew<vtkTransform> t;
+  t->Translate(3 * scale, -2 * scale, scale);
+  t->Scale(scale, scale, scale);
+  vtkNew<vtkTransformPolyDataFilter> scaled;
+  scaled->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  scaled->SetTransform(t);
+  scaled->SetInputConnection(s->GetOutputPort());
+  scaled->Update();
+  return scaled->GetOutput();
+}
+} // namespace
+
 TEST(BadInputs, HugeAndTinyCoordinatesGiveTheSameAnswer)
 {
+  const Outcome unit = Contour(ScaledSphere(1.0));
+  ExpectGuaranteedSphere(unit);
+  vtkPolyData* u = unit.Result.Surface;
+  // Scaled by a power of two every floating-point step scales exactly: the
+  // same surface, point for point, about 1e-9 and 1e9 times as large.
+  for (const double scale : { std::ldexp(1.0, -30), std::ldexp(1.0, 30) })
+  {
+    SCOPED_TRACE(scale);
+    const Outcome o = Contour(ScaledSphere(scale));
+    ExpectGuaranteedSphere(o);
+    vtkPolyData* s = o.Result.Surface;
+    ASSERT_EQ(s->GetNumberOfPoints(), u->GetNumberOfPoints());
+    ASSERT_EQ(s->GetNumberOfPolys(), u->GetNumberOfPolys());
+    EXPECT_EQ(o.Result.HausdorffBound, unit.Result.HausdorffBound * scale);
+    EXPECT_EQ(o.Result.Tolerance, unit.Result.Tolerance * scale);
+    for (vtkIdType i = 0; i < s->GetNumberOfPoints(); ++i)
+    {
+      const double* p = s->GetPoint(i);
+      const double* q = u->GetPoint(i);
+      for (int k = 0; k < 3; ++k)
+      {
+        ASSERT_EQ(p[k], q[k] * scale) << "point " << i;
+      }
+    }
+    vtkNew<vtkIdList> a, b;
+    for (vtkIdType c = 0; c < s->GetNumberOfCells(); ++c)
+    {
+      s->GetCellPoints(c, a);
+      u->GetCellPoints(c, b);
+      ASSERT_EQ(a->GetId(0), b->GetId(0));
+      ASSERT_EQ(a->GetId(1), b->GetId(1));
+      ASSERT_EQ(a->GetId(2), b->GetId(2));
+    }
+  }
+  // Decimal scales round every coordinate differently, so lattice lines
+  // fall a hair differently past the sphere's creases: the same topology,
+  // guarantee and relative bound, a surface of the same size.
   for (const double scale : { 1e-9, 1e9 })
   {
-    vtkNew<vtkTransform> t;
-    t->Translate(3 * scale, -2 * scale, scale);
-    t->Scale(scale, scale, scale);
-    vtkNew<vtkTransformPolyDataFilter> scaled;
-    scaled->SetTransform(t);
-    scaled->SetInputData(Sphere());
-    scaled->Update();
-    const Outcome o = Contour(scaled->GetOutput());
     SCOPED_TRACE(scale);
+    const Outcome o = Contour(ScaledSphere(scale));
     ExpectGuaranteedSphere(o);
-    EXPECT_LE(o.Result.HausdorffBound, o.Result.Tolerance * (1 + 1e-9)) << scale;
-    EXPECT_GT(o.Result.Tolerance, 0.01 * scale) << scale;
+    EXPECT_NEAR(o.Result.Tolerance / scale, unit.Result.Tolerance, 1e-12 * unit.Result.Tolerance);
+    EXPECT_NEAR(o.Result.HausdorffBound / scale, unit.Result.HausdorffBound, 1e-12 * unit.Result.HausdorffBound);
+    EXPECT_NEAR(static_cast<double>(o.Result.Surface->GetNumberOfPolys()), static_cast<double>(u->GetNumberOfPolys()),
+      0.01 * static_cast<double>(u->GetNumberOfPolys()));
   }
 }
 
 TEST(BadInputs, ToleranceLargerThanTheDomainGivesACoarseClosedSurface)
 {
-  ExpectGuaranteedSphere(Contour(Sphere(), 5.0));
+  // Five times the diagonal: no size test refines; the topology tests alone
+  // split the root once, and the closed sphere has a handful of triangles.
+  const Outcome coarse = Contour(Sphere(), 5.0);
+  ExpectGuaranteedSphere(coarse);
+  EXPECT_LE(coarse.Result.Grid->GetNumberOfCells(), 9);
+  EXPECT_LE(coarse.Result.Surface->GetNumberOfPolys(), 16);
+  EXPECT_GE(coarse.Result.Surface->GetNumberOfPolys(), 4);
+  EXPECT_LE(coarse.Result.HausdorffBound, coarse.Result.Tolerance);
+  const Outcome fine = Contour(Sphere(), 0.05);
+  EXPECT_GT(fine.Result.Surface->GetNumberOfPolys(), 100 * coarse.Result.Surface->GetNumberOfPolys());
 }
 
 TEST(BadInputs, AbsurdMaximumDepthIsClamped)

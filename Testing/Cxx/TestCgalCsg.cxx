@@ -95,6 +95,7 @@ TEST(CgalCsgReference, CoversUnionIntersectionDifferenceAndImplicits)
 
 TEST_P(CgalCsg, SameTopologyAsTheExactBoolean)
 {
+  TPC_SKIP_WITHOUT_CGAL_MESHES();
   ASSERT_LT(static_cast<std::size_t>(std::get<0>(GetParam())), Cases().size());
   const CsgCase& c = Cases()[std::get<0>(GetParam())];
   const int denominator = std::get<1>(GetParam()) == 0 ? 32 : 64;
@@ -151,6 +152,7 @@ TEST_P(CgalCsg, SameTopologyAsTheExactBoolean)
 // them and still return a closed manifold surface.
 TEST(CgalCsgLimits, ShallowIntersectionIsFlaggedNotSilentlyWrong)
 {
+  TPC_SKIP_WITHOUT_CGAL_MESHES();
   vtkNew<vtkTopologyPreservingContour> filter;
   filter->AddInputData(tpctest::ReadCgalMesh("couplingdown"));
   vtkNew<vtkTransform> t;

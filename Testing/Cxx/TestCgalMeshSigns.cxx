@@ -46,6 +46,7 @@ class CgalMeshSigns : public testing::TestWithParam<int>
 
 TEST_P(CgalMeshSigns, InsideTestAgreesWithWindingNumberAwayFromTheSurface)
 {
+  TPC_SKIP_WITHOUT_CGAL_MESHES();
   const tpctest::KnownMesh& known = tpctest::CgalMeshes[GetParam()];
   vtkSmartPointer<vtkPolyData> input = tpctest::ReadCgalMesh(known.Name);
   std::vector<tpc::Vec3> points;

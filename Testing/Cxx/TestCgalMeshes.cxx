@@ -69,6 +69,7 @@ class CgalRemeshing : public testing::TestWithParam<std::tuple<int, int>>
 
 TEST(CgalMeshInputs, AreClosedManifoldWithThePublishedTopology)
 {
+  TPC_SKIP_WITHOUT_CGAL_MESHES();
   for (const KnownMesh& m : CgalMeshes)
   {
     vtkSmartPointer<vtkPolyData> input = ReadCgalMesh(m.Name);
@@ -86,6 +87,7 @@ TEST(CgalMeshInputs, AreClosedManifoldWithThePublishedTopology)
 
 TEST_P(CgalRemeshing, SameTopologyClosedManifoldGuaranteedWithinTolerance)
 {
+  TPC_SKIP_WITHOUT_CGAL_MESHES();
   const KnownMesh& m = CgalMeshes[std::get<0>(GetParam())];
   const int denominator = Denominators[std::get<1>(GetParam())];
   vtkSmartPointer<vtkPolyData> input = ReadCgalMesh(m.Name);
@@ -122,6 +124,7 @@ TEST_P(CgalRemeshing, SameTopologyClosedManifoldGuaranteedWithinTolerance)
 // dense inputs come out with fewer triangles and the same topology.
 TEST(CgalRemeshing, CoarseToleranceReducesTriangleCountKeepingTopology)
 {
+  TPC_SKIP_WITHOUT_CGAL_MESHES();
   for (const char* name : { "turbine", "knot2", "knot1" })
   {
     const KnownMesh* m = nullptr;

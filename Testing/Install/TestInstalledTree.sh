@@ -4,9 +4,9 @@
 #    built and run on two CGAL meshes;
 #  - the plugin loaded by pvpython from PV_PLUGIN_PATH;
 #  - the Python package and tpcontour from the installed folders.
-# Usage: TestInstalledTree.sh <build dir> <source dir> <CGAL data/meshes> <pvpython>
+# Usage: TestInstalledTree.sh <build dir> <source dir> <CGAL data/meshes> <pvpython> <plugin dir under lib>
 set -euo pipefail
-build=$1 source=$2 meshes=$3 pvpython=$4
+build=$1 source=$2 meshes=$3 pvpython=$4 plugins=$5
 prefix="$build/test-install"
 consumer="$build/test-consumer"
 rm -rf "$prefix" "$consumer"
@@ -18,7 +18,7 @@ out=$("$consumer/MeshBoolean" "$meshes/joint.off" "$meshes/knot1.off" difference
 echo "installed-package example: $out"
 [[ $out == "components 1 genus 9 guaranteed 1"* ]]
 
-PV_PLUGIN_PATH="$prefix/lib/paraview-5.11/plugins/TopologyPreservingContour" "$pvpython" -c "
+PV_PLUGIN_PATH="$prefix/lib/$plugins/TopologyPreservingContour" "$pvpython" -c "
 from paraview.simple import TopologyPreservingContour
 f = TopologyPreservingContour(ImplicitFunction='Sphere')
 f.UpdatePipeline()

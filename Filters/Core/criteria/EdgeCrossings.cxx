@@ -1,0 +1,246 @@
+#include "EdgeCrossings.h"
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace tpc
+{
+namespace
+{
+/// Pieces examined per edge at most. Depth alone does not bound the work: a
+/// leaf that is undecided on every piece yet proven on the finest ones (a
+/// surface grazing the edge) would visit 2^depth pieces.
+constexpr int MaximumPieces = 4096;
+
+EdgeCrossingCount Count(const CsgExpressionPtr& expression, const PrimitiveSet& prims,
+  const Vec3& a, const Vec3& b, int axis, bool inA, bool inB, int budget, int& pieces)
+{
+  if (++pieces > MaximumPieces)
+  {
+    return { 0, false };
+  }
+  Box3 seg{ a, b };
+  const auto pruned = CsgExpression::Prune(expression, seg, prims);
+  if (pruned.Sign != RegionSign::Mixed)
+  {
+    return { 0, true };
+  }
+  // The combined status is a monotone Boolean function (union and
+  // intersection; complements are in the leaves' sigma) of the leaves'
+  // statuses. If each leaf changes status at most once on the piece and all
+  // that change do so the same way (all enter, or all leave), the combined
+  // status changes at most once. (Coincident surfaces - a Bounds plane on a
+  // box face - change together: still decided.)
+  bool decided = true;
+  std::vector<CsgLeaf> changing; // leaves whose status differs at a and b
+  for (const CsgLeaf& leaf : pruned.Expression->Leaves())
+  {
+    if (leaf.Kind == PrimitiveKind::Quadric)
+    {
+      // A quadric strictly monotone along the piece, or constant on it.
+      const Interval slope = prims.Quadrics[leaf.Primitive].EncloseDerivative(seg, axis);
+      if (slope.ContainsZero() && !(slope.lo == 0.0 && slope.hi == 0.0))
+      {
+        decided = false;
+        break;
+      }
+      if (LeafIsInside(leaf, prims, a) != LeafIsInside(leaf, prims, b))
+      {
+        changing.push_back(leaf);
+      }
+      continue;
+    }
+    // A mesh leaf changes status iff it is crossed once (exact parity).
+    const int crossings = prims.Meshes[leaf.Primitive].CountCrossings(a, b, axis, *leaf.Triangles);
+    if (crossings > 1)
+    {
+      decided = false;
+      break;
+    }
+    if (crossings == 1)
+    {
+      changing.push_back(leaf);
+    }
+  }
+  // Which way each changes matters only when several do; then the mesh
+  // leaves' statuses are asked (rays to infinity, the costly part).
+  int enters = 0, exits = 0;
+  for (std::size_t i = 0; decided && changing.size() > 1 && i < changing.size(); ++i)
+  {
+    (LeafIsInside(changing[i], prims, a) ? exits : enters) += 1;
+  }
+  if (decided && (enters == 0 || exits == 0))
+  {
+    return { inA != inB ? 1 : 0, true };
+  }
+  if (budget == 0)
+  {
+    return { 0, false };
+  }
+  Vec3 m = a;
+  m[axis] = 0.5 * (a[axis] + b[axis]);
+  if (m[axis] <= a[axis] || m[axis] >= b[axis])
+  {
+    return { 0, false }; // no representable midpoint left
+  }
+  const bool inM = pruned.Expression->IsInside(m, prims);
+  const EdgeCrossingCount left = Count(pruned.Expression, prims, a, m, axis, inA, inM, budget - 1, pieces);
+  if (!left.Proven || left.Count >= 2)
+  {
+    return left;
+  }
+  const EdgeCrossingCount right = Count(pruned.Expression, prims, m, b, axis, inM, inB, budget - 1, pieces);
+  return { left.Count + right.Count, right.Proven };
+}
+/// Illinois (modified regula falsi) on the floating-point field between `a`
+/// (value fa) and `b` (value fb), whose signs differ.
+Vec3 IllinoisRoot(const CsgExpression& expression, const PrimitiveSet& primitives, const Vec3& a, const Vec3& b,
+  double fa, double fb)
+{
+  double ta = 0.0, tb = 1.0;
+  const Vec3 d = b - a;
+  auto at = [&](double t) { return a + d * t; };
+  int side = 0;
+  for (int it = 0; it < 100 && tb - ta > 1e-15; ++it)
+  {
+    double t = (ta * fb - tb * fa) / (fb - fa);
+    if (!(t > ta && t < tb))
+    {
+      t = 0.5 * (ta + tb);
+    }
+    const double ft = expression.Value(at(t), primitives);
+    if (ft == 0.0)
+    {
+      return at(t);
+    }
+    if ((ft < 0.0) == (fa < 0.0))
+    {
+      ta = t;
+      fa = ft;
+      if (side == -1)
+      {
+        fb *= 0.5;
+      }
+      side = -1;
+    }
+    else
+    {
+      tb = t;
+      fb = ft;
+      if (side == 1)
+      {
+        fa *= 0.5;
+      }
+      side = 1;
+    }
+    if (std::fabs(ft) < 1e-300)
+    {
+      break;
+    }
+  }
+  return at(0.5 * (ta + tb));
+}
+
+/// Bisection on exact signs. A mesh leaf's sign along an axis-aligned edge
+/// is its sign at `a` (one ray to infinity) flipped by each crossing of the
+/// cell's own triangles between a and the point: the same perturbed solid
+/// as IsInside, so the same answers, without a ray per step.
+Vec3 BisectOnExactSigns(
+  const CsgExpression& expression, const PrimitiveSet& primitives, const Vec3& a, const Vec3& b, bool insideA)
+{
+  double ta = 0.0, tb = 1.0;
+  const Vec3 d = b - a;
+  auto at = [&](double t) { return a + d * t; };
+  int axis = -1, differing = 0;
+  for (int k = 0; k < 3; ++k)
+  {
+    if (a[k] != b[k])
+    {
+      axis = k;
+      ++differing;
+    }
+  }
+  const bool alongAxis = differing == 1 && a[axis] < b[axis];
+  // A lone mesh leaf crossed once: the crossing is on that triangle's plane.
+  const CsgExpression::Node& root = expression.NodeAt(expression.Root());
+  if (alongAxis && root.NodeKind == CsgExpression::Node::Kind::Leaf &&
+    root.LeafData.Kind == PrimitiveKind::Mesh && root.Triangles)
+  {
+    Vec3 p;
+    if (primitives.Meshes[root.LeafData.Primitive].CrossingPoint(a, b, axis, *root.Triangles, p))
+    {
+      return p;
+    }
+  }
+  std::vector<std::int8_t> meshInsideAtA(expression.NodeCount(), -1);
+  auto insideAt = [&](const Vec3& p) {
+    if (!alongAxis)
+    {
+      return expression.IsInside(p, primitives);
+    }
+    return expression.Evaluate([&](std::uint32_t i, const CsgExpression::Node& n) {
+      const CsgLeaf& leaf = n.LeafData;
+      if (leaf.Kind != PrimitiveKind::Mesh || !n.Triangles)
+      {
+        return LeafIsInside(leaf, primitives, p);
+      }
+      const MeshSolid& mesh = primitives.Meshes[leaf.Primitive];
+      std::int8_t& atA = meshInsideAtA[i];
+      if (atA < 0)
+      {
+        atA = mesh.IsInside(a) ? 1 : 0;
+      }
+      const bool inside = (atA != 0) != ((mesh.CountCrossings(a, p, axis, *n.Triangles) & 1) != 0);
+      return inside == (leaf.Sigma > 0);
+    });
+  };
+  for (int it = 0; it < 60; ++it)
+  {
+    const double t = 0.5 * (ta + tb);
+    if (insideAt(at(t)) == insideA)
+    {
+      ta = t;
+    }
+    else
+    {
+      tb = t;
+    }
+  }
+  return at(0.5 * (ta + tb));
+}
+} // namespace
+
+EdgeCrossingCount CountEdgeCrossings(const CsgExpressionPtr& expression,
+  const PrimitiveSet& primitives, const Vec3& a, const Vec3& b, int axis, bool insideA,
+  bool insideB, int maxBisections)
+{
+  // A lone mesh leaf (remeshing): its crossings with the cell's triangles are
+  // counted exactly, with the perturbation that decides the signs. The
+  // bisection would find the same number, or give up on two crossings closer
+  // than its depth: a complex edge either way.
+  const CsgExpression::Node& root = expression->NodeAt(expression->Root());
+  if (root.NodeKind == CsgExpression::Node::Kind::Leaf && root.LeafData.Kind == PrimitiveKind::Mesh &&
+    root.Triangles)
+  {
+    return { primitives.Meshes[root.LeafData.Primitive].CountCrossings(a, b, axis, *root.Triangles), true };
+  }
+  int pieces = 0;
+  return Count(expression, primitives, a, b, axis, insideA, insideB, maxBisections, pieces);
+}
+
+Vec3 FindEdgeCrossing(const CsgExpression& expression, const PrimitiveSet& primitives,
+  const Vec3& a, const Vec3& b, bool insideA)
+{
+  // The floating-point field is used where its signs agree with the exact
+  // ones at the ends; mesh leaves only have an approximate value, and
+  // rounding may contradict the exact signs: then exact bisection.
+  const double fa = expression.Value(a, primitives);
+  const double fb = expression.Value(b, primitives);
+  const bool usable = !expression.HasMeshLeaves() &&
+    (insideA ? (fa < 0.0 && fb >= 0.0) : (fa >= 0.0 && fb < 0.0));
+  return usable ? IllinoisRoot(expression, primitives, a, b, fa, fb)
+                : BisectOnExactSigns(expression, primitives, a, b, insideA);
+}
+
+} // namespace tpc

@@ -1,0 +1,121 @@
+#include "FaceRefinement.h"
+
+#include "ComplexCellCriterion.h"
+
+namespace tpc
+{
+
+namespace
+{
+struct FaceRefiner
+{
+  const CsgExpressionPtr& Expression;
+  const PrimitiveSet& Primitives;
+  const RootGrid& Grid;
+  int Axis;
+  std::uint32_t Plane;
+  CellSignCache& Signs;
+  FaceRefinementResult Result;
+
+  bool Inside(std::uint32_t u, std::uint32_t v)
+  {
+    return this->Signs.Inside(TileCorner(this->Axis, this->Plane, { u, v, u, v }, 0));
+  }
+
+  /// Where to split a failing tile. A midpoint split meets a thin wedge tip
+  /// at every level with the same odds (it slips between the corners again);
+  /// splitting at a sample of the opposite sign puts a corner inside the
+  /// wedge, which settles it at once.
+  void SplitPoint(const FaceTile& t, SplitReason why, int edge, const bool inside[4],
+    std::uint32_t& us, std::uint32_t& vs)
+  {
+    us = t.U0 + (t.U1 - t.U0) / 2;
+    vs = t.V0 + (t.V1 - t.V0) / 2;
+    constexpr int Samples = 8;
+    if (why == SplitReason::ComplexFace)
+    {
+      // Corners agree: look for an interior sample that does not.
+      for (int i = 1; i < Samples; ++i)
+      {
+        for (int j = 1; j < Samples; ++j)
+        {
+          const std::uint32_t u = t.U0 + static_cast<std::uint32_t>((std::uint64_t(t.U1 - t.U0) * i) / Samples);
+          const std::uint32_t v = t.V0 + static_cast<std::uint32_t>((std::uint64_t(t.V1 - t.V0) * j) / Samples);
+          if (u > t.U0 && u < t.U1 && v > t.V0 && v < t.V1 && this->Inside(u, v) != inside[0])
+          {
+            us = u;
+            vs = v;
+            return;
+          }
+        }
+      }
+    }
+    else if (why == SplitReason::ComplexEdge && edge >= 0 && inside[edge] == inside[(edge + 1) % 4])
+    {
+      // An edge crossed twice with equal end signs: split it between the crossings.
+      const bool alongU = edge == 0 || edge == 2;
+      const std::uint32_t fixed = edge == 0 ? t.V0 : edge == 1 ? t.U1 : edge == 2 ? t.V1 : t.U0;
+      const std::uint32_t a = alongU ? t.U0 : t.V0, b = alongU ? t.U1 : t.V1;
+      for (int i = 1; i < 4 * Samples; ++i)
+      {
+        const std::uint32_t x = a + static_cast<std::uint32_t>((std::uint64_t(b - a) * i) / (4 * Samples));
+        if (x <= a || x >= b)
+        {
+          continue;
+        }
+        if ((alongU ? this->Inside(x, fixed) : this->Inside(fixed, x)) != inside[edge])
+        {
+          (alongU ? us : vs) = x;
+          return;
+        }
+      }
+    }
+  }
+
+  bool Refine(const FaceTile& t, int levels)
+  {
+    const bool inside[4] = { this->Inside(t.U0, t.V0), this->Inside(t.U1, t.V0),
+      this->Inside(t.U1, t.V1), this->Inside(t.U0, t.V1) };
+    const int U = (this->Axis + 1) % 3, V = (this->Axis + 2) % 3;
+    Box3 face;
+    face.lo[this->Axis] = face.hi[this->Axis] = this->Grid.Coordinate(this->Axis, this->Plane);
+    face.lo[U] = this->Grid.Coordinate(U, t.U0);
+    face.hi[U] = this->Grid.Coordinate(U, t.U1);
+    face.lo[V] = this->Grid.Coordinate(V, t.V0);
+    face.hi[V] = this->Grid.Coordinate(V, t.V1);
+    int edge = -1;
+    const SplitReason r =
+      FaceCompatibilityTest(this->Expression, this->Primitives, face, this->Axis, inside, &edge);
+    if (r == SplitReason::None)
+    {
+      this->Result.Tiles.push_back(t);
+      return true;
+    }
+    if (levels == 0 || t.U1 - t.U0 < 2 || t.V1 - t.V0 < 2)
+    {
+      this->Result.Failure = r;
+      return false;
+    }
+    std::uint32_t us, vs;
+    this->SplitPoint(t, r, edge, inside, us, vs);
+    return this->Refine({ t.U0, t.V0, us, vs }, levels - 1) &&
+      this->Refine({ us, t.V0, t.U1, vs }, levels - 1) &&
+      this->Refine({ t.U0, vs, us, t.V1 }, levels - 1) &&
+      this->Refine({ us, vs, t.U1, t.V1 }, levels - 1);
+  }
+};
+} // namespace
+
+FaceRefinementResult RefineFace(const CsgExpressionPtr& expression,
+  const PrimitiveSet& primitives, const RootGrid& grid, int axis, std::uint32_t plane,
+  const FaceTile& face, int maxLevels, CellSignCache& signs)
+{
+  FaceRefiner r{ expression, primitives, grid, axis, plane, signs, {} };
+  if (!r.Refine(face, maxLevels))
+  {
+    r.Result.Tiles.clear();
+  }
+  return std::move(r.Result);
+}
+
+} // namespace tpc

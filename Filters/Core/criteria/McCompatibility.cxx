@@ -1,0 +1,123 @@
+#include "McCompatibility.h"
+
+#include "BoundaryLoops.h"
+#include "ComplexCellCriterion.h"
+#include "FaceRefinement.h"
+#include "PlanarCell.h"
+#include "StarShapedCriterion.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tpc
+{
+
+namespace
+{
+/// Refines each face of cell `n` until its tiles pass the face tests
+/// (FaceRefinement.h) and gathers the tiles and their corner samples into
+/// `boundary`; false, with the failing test in `v.Reason`, when a face
+/// cannot be tiled within `levels`.
+bool TileFaces(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& prims, int levels,
+  CellSignCache& signs, CellBoundary& boundary, McCompatibility& v)
+{
+  const RootGrid& grid = tree.Grid;
+  const OctreeNode& node = tree.Nodes[n];
+  const int shift = grid.MaxDepth - node.Level;
+  const std::uint32_t size = 1u << shift;
+  boundary.Size = size;
+  for (int a = 0; a < 3; ++a)
+  {
+    boundary.Base[a] = node.Ijk[a] << shift;
+  }
+  for (int f = 0; f < 6; ++f)
+  {
+    const int axis = f / 2, side = f % 2;
+    const std::uint32_t plane = boundary.Base[axis] + (side ? size : 0);
+    const std::uint32_t u0 = boundary.Base[(axis + 1) % 3], v0 = boundary.Base[(axis + 2) % 3];
+    const FaceRefinementResult r = RefineFace(tree.Expressions[n], prims, grid, axis, plane,
+      { u0, v0, u0 + size, v0 + size }, std::min(levels, shift), signs);
+    if (r.Tiles.empty())
+    {
+      v.Reason = r.Failure;
+      return false;
+    }
+    for (const FaceTile& t : r.Tiles)
+    {
+      for (int c = 0; c < 4; ++c)
+      {
+        const PointKey key = TileCorner(axis, plane, t, c);
+        boundary.Points.emplace_back(key, signs.Inside(key));
+      }
+    }
+    if (r.Tiles.size() > 1)
+    {
+      v.Refinements.emplace_back(FaceOf(grid, node, f), r.Tiles);
+    }
+    boundary.Tiles[f] = r.Tiles;
+  }
+  return true;
+}
+} // namespace
+
+McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& prims,
+  double tolerance, int faceRefinementLevels)
+{
+  McCompatibility v;
+  v.Kind = McVerdict::Split;
+  const RootGrid& grid = tree.Grid;
+  const OctreeNode& node = tree.Nodes[n];
+  const CsgExpressionPtr& expression = tree.Expressions[n];
+  const Box3 box = grid.CellBox(node.Level, node.Ijk);
+  unsigned mask = 0;
+  for (int c = 0; c < 8; ++c)
+  {
+    mask |= tree.CornerInside(n, c) ? (1u << c) : 0u;
+  }
+  // Corners of one sign: free of the surface if an enclosure proves it,
+  // else (in a cell no larger than the tolerance) a complex voxel unless the
+  // faces' loops show surface.
+  const bool uniform = mask == 0 || mask == 0xFF;
+  if (uniform)
+  {
+    const RegionSign s =
+      ProveConstantSign(expression, prims, box, ConstantProofDepth, ConstantProofBudget);
+    if (s != RegionSign::Mixed)
+    {
+      v.Kind = McVerdict::Constant;
+      v.Sign = s;
+      return v;
+    }
+  }
+  // Cells that must shrink anyway skip the costlier tests; a plane section
+  // may stay larger (error-driven acceptance, PlanarCell.h).
+  const bool oversized = grid.CellDiagonal(node.Level) > tolerance * (1.0 + 1e-9);
+  if (oversized && (uniform || !IsPlanarCell(*expression, prims, box)))
+  {
+    v.Reason = uniform ? SplitReason::ComplexVoxel : SplitReason::HausdorffSize;
+    return v;
+  }
+  CellSignCache signs(tree.Signs, grid, *expression, prims);
+  CellBoundary boundary;
+  if (!TileFaces(tree, n, prims, faceRefinementLevels, signs, boundary, v))
+  {
+    return v;
+  }
+  v.Reason = VoxelCompatibilityTest(TraceBoundaryLoops(boundary), expression, prims, grid, box);
+  if (v.Reason != SplitReason::None)
+  {
+    return v;
+  }
+  if (!IsStarShapedWithRespectToVoxel(expression, prims, box))
+  {
+    v.Reason = SplitReason::NotStarShapedVoxel;
+    return v;
+  }
+  v.Kind = McVerdict::Pass;
+  v.Reason = SplitReason::None;
+  v.Planar = oversized; // (an oversized cell only gets this far as a plane section)
+  v.NewSigns = signs.NewSigns();
+  return v;
+}
+
+} // namespace tpc

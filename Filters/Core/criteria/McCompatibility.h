@@ -1,0 +1,59 @@
+// MC-compatibility of one cell (paper 4.2, Definition 1), as decided during
+// the subdivision: the complex-cell test, the star-shaped test and the
+// Hausdorff size, with faces refined where a face test fails.
+#pragma once
+
+#include "AdaptiveOctree.h"
+#include "BoundaryLoops.h"
+
+#include <utility>
+#include <vector>
+
+namespace tpc
+{
+
+/// Outcome of the tests for one cell.
+enum class McVerdict : std::uint8_t
+{
+  Pass,
+  Constant, // proven free of the surface after local refinement
+  Split
+};
+
+struct McCompatibility
+{
+  McVerdict Kind = McVerdict::Pass;
+  SplitReason Reason = SplitReason::None;
+  RegionSign Sign = RegionSign::Mixed;
+  /// Passed while larger than the tolerance: the surface in it is a plane
+  /// section (PlanarCell.h), so its patch is exact whatever its size.
+  bool Planar = false;
+  /// Faces this cell refined (only kept if it passes).
+  std::vector<std::pair<FaceKey, std::vector<FaceTile>>> Refinements;
+  /// Signs evaluated during the tests, for the global table.
+  std::vector<std::pair<PointKey, bool>> NewSigns;
+};
+
+/// Face refinement levels allowed below a cell (bounded by the lattice).
+constexpr int FaceRefinementLevels = 10;
+
+/// The tests of paper 5.3 on one cell, with faces refined where a face test
+/// fails (FaceRefinement.h). A cell passes when
+/// - it is no larger than the tolerance (Hausdorff, 5.3.4), or the surface in
+///   it is a plane section (PlanarCell.h: the patch is then exact);
+/// - each face can be tiled by MC-compatible tiles (complex face and edge,
+///   face ambiguity, star-shaped w.r.t. the face; Lemma 1 per tile);
+/// - the surface draws at least one loop on the cell boundary (none while the
+///   voxel is not proven empty is a complex voxel), and if several, they are
+///   proven to bound different pieces of the surface (ComplexCellCriterion.h);
+///   otherwise it is the voxel ambiguity of Fig. 2(d) - two corners joined by
+///   a tube, or not;
+/// - the solid in the voxel is star-shaped (verified witness). With the ray
+///   argument of Lemma 2 this makes each piece of the surface in the cell a
+///   disk (Lemma 3) bounded by its own loop.
+/// `faceRefinementLevels` below the cell at most (FaceRefinementLevels; fewer
+/// where a failing cell keeps its mesh anyway, ExactCell.h).
+McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
+  const PrimitiveSet& primitives, double tolerance, int faceRefinementLevels = FaceRefinementLevels);
+
+} // namespace tpc

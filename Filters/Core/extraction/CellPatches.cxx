@@ -1,0 +1,201 @@
+#include "CellPatches.h"
+
+#include "LoopTriangulation.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tpc
+{
+namespace
+{
+/// The per-cell loop runs in chunks reporting progress.
+constexpr std::size_t Chunk = 8192;
+
+/// Faces of the cell (bit f, CubeTopology.h numbering) that a loop's crossing
+/// lies on; all six for a bend (never a fan point).
+unsigned FacesOf(const Crossing& c, const std::uint32_t base[3], std::uint32_t size)
+{
+  if (c.Kind == CrossingKind::Bend)
+  {
+    return 0x3F;
+  }
+  if (c.Kind == CrossingKind::MeshEdge)
+  {
+    const int axis = static_cast<int>(c.Key >> 32);
+    const std::uint32_t plane = static_cast<std::uint32_t>(c.Key & 0xFFFFFFFFu);
+    return (plane == base[axis] ? 1u : 0u) << (2 * axis) | (plane == base[axis] + size ? 1u : 0u) << (2 * axis + 1);
+  }
+  if (c.Kind == CrossingKind::MeshVertex)
+  {
+    return 0; // inside an exact cell
+  }
+  std::uint32_t p[3];
+  SplitPointKey(c.Key >> 2, p);
+  const int along = static_cast<int>(c.Key & 3);
+  unsigned mask = 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (a != along)
+    {
+      mask |= (p[a] == base[a] ? 1u : 0u) << (2 * a);
+      mask |= (p[a] == base[a] + size ? 1u : 0u) << (2 * a + 1);
+    }
+  }
+  return mask;
+}
+
+/// Cell i's apexes and triangles written at their offsets, apex normals
+/// summed over the cell's triangles in order (an apex is in its own cell's
+/// triangles only).
+void WriteCellPatches(const CellPatches& patches, std::uint32_t cell, std::size_t firstApex,
+  std::size_t firstTriangle, TriangleMesh& mesh)
+{
+  std::copy(patches.Apexes.begin(), patches.Apexes.end(), mesh.Points.begin() + firstApex);
+  std::fill(mesh.Normals.begin() + firstApex, mesh.Normals.begin() + firstApex + patches.Apexes.size(), Vec3());
+  for (std::size_t k = 0; k < patches.Triangles.size(); ++k)
+  {
+    Triangle t = patches.Triangles[k];
+    for (auto& v : t)
+    {
+      v = (v & CellPatches::LocalFlag) ? static_cast<std::uint32_t>(firstApex) + (v & ~CellPatches::LocalFlag) : v;
+    }
+    mesh.Triangles[firstTriangle + k] = t;
+    mesh.TriangleCell[firstTriangle + k] = cell;
+    const Vec3 n = Cross(mesh.Points[t[1]] - mesh.Points[t[0]], mesh.Points[t[2]] - mesh.Points[t[0]]);
+    for (const std::uint32_t v : t)
+    {
+      if (v >= firstApex)
+      {
+        mesh.Normals[v] += n;
+      }
+    }
+  }
+  for (std::size_t v = firstApex; v < firstApex + patches.Apexes.size(); ++v)
+  {
+    mesh.Normals[v] = Normalized(mesh.Normals[v]);
+  }
+}
+} // namespace
+
+void TriangulateCell(const BoundaryLoopSet& loops, const OctreeNode& node, const CsgExpression& expression,
+  const PrimitiveSet& prims, const RootGrid& grid, const CrossingVertices& vertices, const TriangleMesh& mesh,
+  CellPatches& out)
+{
+  const Box3 box = grid.CellBox(node.Level, node.Ijk);
+  std::uint32_t base[3];
+  CornerLattice(grid, node, 0, base);
+  const std::uint32_t size = 1u << (grid.MaxDepth - node.Level);
+  std::vector<std::vector<std::uint32_t>> ids;
+  std::vector<std::vector<LoopPoint>> points;
+  std::vector<Box3> boxes;
+  std::size_t offset = 0;
+  for (const std::uint32_t loopSize : loops.LoopSizes)
+  {
+    ids.emplace_back();
+    points.emplace_back();
+    Box3 b{ { HUGE_VAL, HUGE_VAL, HUGE_VAL }, { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL } };
+    for (std::uint32_t k = 0; k < loopSize; ++k)
+    {
+      const Crossing& c = loops.Crossings[offset + k];
+      const std::uint32_t id = vertices.IdOf(c);
+      ids.back().push_back(id);
+      points.back().push_back({ mesh.Points[id], mesh.Normals[id], FacesOf(c, base, size) });
+      for (int a = 0; a < 3; ++a)
+      {
+        b.lo[a] = std::min(b.lo[a], mesh.Points[id][a]);
+        b.hi[a] = std::max(b.hi[a], mesh.Points[id][a]);
+      }
+    }
+    boxes.push_back(b);
+    offset += loopSize;
+  }
+  for (std::size_t l = 0; l < ids.size(); ++l)
+  {
+    const std::vector<std::uint32_t>& id = ids[l];
+    const std::size_t k = id.size();
+    if (k < 3)
+    {
+      continue; // only from inconsistent loops, counted by the caller
+    }
+    const Box3 region = ids.size() > 1 ? ApexRegion(boxes, l, box) : box;
+    const LoopPatch patch = TriangulateLoop(points[l], region, node.PlaneSection, expression, prims);
+    if (patch.Kind == LoopPatchKind::Triangle)
+    {
+      out.Triangles.push_back({ id[0], id[1], id[2] });
+    }
+    else if (patch.Kind == LoopPatchKind::LoopFan)
+    {
+      const std::size_t s = static_cast<std::size_t>(patch.FanPoint);
+      for (std::size_t i = 1; i + 1 < k; ++i)
+      {
+        out.Triangles.push_back({ id[s], id[(s + i) % k], id[(s + i + 1) % k] });
+      }
+    }
+    else
+    {
+      const std::uint32_t apex = CellPatches::LocalFlag | static_cast<std::uint32_t>(out.Apexes.size());
+      out.Apexes.push_back(patch.Apex);
+      for (std::size_t i = 0; i < k; ++i)
+      {
+        out.Triangles.push_back({ id[i], id[(i + 1) % k], apex });
+      }
+    }
+  }
+}
+
+void TriangulateExactCell(const BoundaryLoopSet& polygons, const CrossingVertices& vertices,
+  const TriangleMesh& mesh, CellPatches& out)
+{
+  std::size_t offset = 0;
+  for (const std::uint32_t size : polygons.LoopSizes)
+  {
+    std::vector<std::uint32_t> id;
+    Vec3 centroid;
+    for (std::uint32_t k = 0; k < size; ++k)
+    {
+      id.push_back(vertices.IdOf(polygons.Crossings[offset + k]));
+      centroid += mesh.Points[id.back()];
+    }
+    offset += size;
+    if (size == 3)
+    {
+      out.Triangles.push_back({ id[0], id[1], id[2] });
+      continue;
+    }
+    const std::uint32_t apex = CellPatches::LocalFlag | static_cast<std::uint32_t>(out.Apexes.size());
+    out.Apexes.push_back(centroid * (1.0 / size));
+    for (std::uint32_t k = 0; k < size; ++k)
+    {
+      out.Triangles.push_back({ id[k], id[(k + 1) % size], apex });
+    }
+  }
+}
+
+bool WritePatches(std::vector<CellPatches>& patches, const std::vector<std::uint32_t>& cells, TriangleMesh& mesh,
+  const ParallelFor& parallelFor, const ProgressCallback& progress)
+{
+  // Count, prefix sum.
+  std::vector<std::size_t> firstApex(cells.size() + 1), firstTriangle(cells.size() + 1);
+  firstApex[0] = mesh.Points.size();
+  firstTriangle[0] = mesh.Triangles.size();
+  for (std::size_t i = 0; i < cells.size(); ++i)
+  {
+    firstApex[i + 1] = firstApex[i] + patches[i].Apexes.size();
+    firstTriangle[i + 1] = firstTriangle[i] + patches[i].Triangles.size();
+  }
+  mesh.Points.resize(firstApex.back());
+  mesh.Normals.resize(firstApex.back());
+  mesh.Triangles.resize(firstTriangle.back());
+  mesh.TriangleCell.resize(firstTriangle.back());
+  // Write.
+  return ChunkedFor(cells.size(), Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+    {
+      WriteCellPatches(patches[i], cells[i], firstApex[i], firstTriangle[i], mesh);
+      patches[i] = CellPatches();
+    }
+  }, progress);
+}
+
+} // namespace tpc

@@ -1,0 +1,48 @@
+// The patches of the surface cells (paper 4.3): each loop of a cell spanned
+// inside the cell (LoopTriangulation.h), an exact cell's polygons fanned in
+// their planes, and the output written once from them.
+#pragma once
+
+#include "AdaptiveOctree.h"
+#include "BoundaryLoops.h"
+#include "CrossingVertices.h"
+#include "Parallel.h"
+#include "TriangleMesh.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace tpc
+{
+
+/// The triangles of one cell; vertex ids with LocalFlag set index Apexes,
+/// the others are crossing vertices.
+struct CellPatches
+{
+  static constexpr std::uint32_t LocalFlag = 1u << 31;
+  std::vector<Vec3> Apexes;
+  std::vector<Triangle> Triangles;
+};
+
+/// Spans every loop of leaf `node` (LoopTriangulation.h), each apex in its
+/// own loop's region of the cell; `mesh` holds the crossing vertices.
+void TriangulateCell(const BoundaryLoopSet& loops, const OctreeNode& node, const CsgExpression& expression,
+  const PrimitiveSet& primitives, const RootGrid& grid, const CrossingVertices& vertices, const TriangleMesh& mesh,
+  CellPatches& out);
+
+/// An exact cell's polygons (ExactCell.h), each a triangle or a fan around
+/// its centroid (in its triangle's plane: the polygon is convex, and its
+/// inserted tile-side points are collinear with their neighbours).
+void TriangulateExactCell(
+  const BoundaryLoopSet& polygons, const CrossingVertices& vertices, const TriangleMesh& mesh, CellPatches& out);
+
+/// Writes the patches into `mesh` once, count -> prefix sum -> write: each
+/// cell's apexes (with their normals, the area-weighted mean of their fans)
+/// after the crossing vertices and the earlier cells' apexes, its triangles
+/// after the earlier cells' triangles, each with its cell (`cells`, node
+/// indices). The patches are released as they are written. False when
+/// `progress` asked to stop.
+bool WritePatches(std::vector<CellPatches>& patches, const std::vector<std::uint32_t>& cells, TriangleMesh& mesh,
+  const ParallelFor& parallelFor, const ProgressCallback& progress);
+
+} // namespace tpc

@@ -1,0 +1,130 @@
+#include "CrossingVertices.h"
+
+#include "EdgeCrossings.h"
+#include "ExactCell.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tpc
+{
+namespace
+{
+/// The per-vertex loop runs in chunks reporting progress, so that an abort
+/// stops it within a chunk.
+constexpr std::size_t Chunk = 4 * 8192;
+constexpr std::size_t Blocks = 64, Buckets = 256;
+
+std::size_t BucketOf(const CrossingVertices::Record& r)
+{
+  return static_cast<std::size_t>((r.Vertex.Key * 0x9E3779B97F4A7C15ULL) >> 56);
+}
+
+/// A surface crossing on its lattice sub-edge, found on the exact field, then
+/// put exactly on the sub-edge's line and strictly inside it: crossings of
+/// different sub-edges never coincide and a loop's chords meet only at their
+/// ends (LoopTriangulation.h).
+Vec3 PlaceCrossing(const Crossing& c, const RootGrid& grid, const CsgExpression& expression,
+  const PrimitiveSet& prims)
+{
+  const int axis = static_cast<int>(c.Key & 3);
+  std::uint32_t lo[3], hi[3];
+  SplitPointKey(c.Key >> 2, lo);
+  std::copy(lo, lo + 3, hi);
+  hi[axis] = c.Upper;
+  const Vec3 a = grid.Point(lo), b = grid.Point(hi);
+  const Vec3 found = FindEdgeCrossing(expression, prims, a, b, c.LowerInside);
+  Vec3 p = a;
+  p[axis] = std::clamp(found[axis], std::nextafter(a[axis], b[axis]), std::nextafter(b[axis], a[axis]));
+  return p;
+}
+
+/// Bends (cells stopped by a limit only, BoundaryLoops.h): between the run's
+/// two crossings, nudged off their line into the bend's tile so that bends
+/// of different tiles around the line do not coincide.
+void PlaceBendVertices(const CrossingVertices& vertices, TriangleMesh& mesh)
+{
+  for (std::size_t i = 0; i < vertices.Records().size(); ++i)
+  {
+    const Crossing& c = vertices.Records()[i].Vertex;
+    if (c.Kind != CrossingKind::Bend)
+    {
+      continue;
+    }
+    Crossing first, last;
+    first.Key = c.Key;
+    last.Key = c.Partner;
+    const Vec3 a = mesh.Points[vertices.IdOf(first)], b = mesh.Points[vertices.IdOf(last)];
+    std::uint32_t corner[3], on[3];
+    SplitPointKey((c.Tile - 1) >> 2, corner);
+    SplitPointKey(c.Key >> 2, on);
+    const int plane = static_cast<int>((c.Tile - 1) & 3), along = static_cast<int>(c.Key & 3);
+    const int across = 3 - plane - along;
+    Vec3 p = (a + b) * 0.5;
+    p[across] += (on[across] == corner[across] ? 1e-3 : -1e-3) * Norm(b - a);
+    mesh.Points[i] = p;
+    mesh.Normals[i] = Normalized(mesh.Normals[vertices.IdOf(first)] + mesh.Normals[vertices.IdOf(last)]);
+  }
+}
+} // namespace
+
+bool CrossingVertices::Build(
+  const std::vector<BoundaryLoopSet>& loops, const ParallelFor& parallelFor, const ProgressCallback& progress)
+{
+  return GatherDistinct<Record>(Blocks, Buckets,
+    [&loops](std::size_t b, const auto& out) {
+      for (std::size_t i = loops.size() * b / Blocks; i < loops.size() * (b + 1) / Blocks; ++i)
+      {
+        for (const Crossing& c : loops[i].Crossings)
+        {
+          out(Record{ c, static_cast<std::uint32_t>(i) });
+        }
+      }
+    },
+    BucketOf,
+    [](const Record& a, const Record& b) {
+      return !a.Vertex.SameVertex(b.Vertex) ? a.Vertex < b.Vertex : a.CellIndex < b.CellIndex;
+    },
+    [](const Record& a, const Record& b) { return a.Vertex.SameVertex(b.Vertex); }, parallelFor, progress,
+    this->Distinct);
+}
+
+std::uint32_t CrossingVertices::IdOf(const Crossing& c) const
+{
+  const std::size_t k = BucketOf(Record{ c, 0 });
+  const auto& records = this->Distinct.Records;
+  const auto first = records.begin() + static_cast<std::ptrdiff_t>(this->Distinct.BucketStart[k]);
+  const auto last = records.begin() + static_cast<std::ptrdiff_t>(this->Distinct.BucketStart[k + 1]);
+  auto it = std::lower_bound(first, last, c, [](const Record& r, const Crossing& key) { return r.Vertex < key; });
+  return static_cast<std::uint32_t>(it - records.begin());
+}
+
+bool PlaceCrossingVertices(const CrossingVertices& vertices, const AdaptiveOctree& tree,
+  const std::vector<std::uint32_t>& cells, const PrimitiveSet& prims, TriangleMesh& mesh,
+  const ParallelFor& parallelFor, const ProgressCallback& progress)
+{
+  const auto& records = vertices.Records();
+  mesh.Points.resize(records.size());
+  mesh.Normals.resize(records.size());
+  if (!ChunkedFor(records.size(), Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+    {
+      const Crossing& c = records[i].Vertex;
+      if (c.Kind == CrossingKind::Bend)
+      {
+        continue; // bend vertices are placed from their crossings (PlaceBendVertices)
+      }
+      const CsgExpression& e = *tree.Expressions[cells[records[i].CellIndex]];
+      mesh.Points[i] = c.Kind == CrossingKind::SubEdge ? PlaceCrossing(c, tree.Grid, e, prims)
+                                                       : ExactCrossingPosition(c, prims, tree.Grid);
+      mesh.Normals[i] = Normalized(e.Gradient(mesh.Points[i], prims));
+    }
+  }, progress))
+  {
+    return false;
+  }
+  PlaceBendVertices(vertices, mesh);
+  return true;
+}
+
+} // namespace tpc

@@ -1,0 +1,55 @@
+// The vertices of the extracted surface on the cells' boundaries: one per
+// distinct crossing of all loops, placed by one cell (the first in node
+// order among the cells whose loops hold it, so that every piece of a split
+// run places it alike: ForestPartition.h) on the exact field.
+#pragma once
+
+#include "AdaptiveOctree.h"
+#include "BoundaryLoops.h"
+#include "DistinctRecords.h"
+#include "Parallel.h"
+#include "TriangleMesh.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace tpc
+{
+
+class CrossingVertices
+{
+public:
+  struct Record
+  {
+    Crossing Vertex;
+    std::uint32_t CellIndex = 0; ///< index into the surface leaves
+  };
+
+  /// The distinct crossings of `loops` (one set per surface leaf), gathered
+  /// in parallel (DistinctRecords.h); a vertex's id is its rank among them.
+  /// False when `progress` asked to stop.
+  bool Build(const std::vector<BoundaryLoopSet>& loops, const ParallelFor& parallelFor,
+    const ProgressCallback& progress);
+
+  /// The id of a crossing of the loops.
+  std::uint32_t IdOf(const Crossing& c) const;
+
+  const std::vector<Record>& Records() const { return this->Distinct.Records; }
+
+private:
+  BucketedRecords<Record> Distinct;
+};
+
+/// Positions and normals of the crossing vertices (mesh.Points and Normals
+/// from index 0), each placed by its cell: on its lattice sub-edge by root
+/// finding on the exact field, exactly on the sub-edge's line and strictly
+/// inside it (crossings of different sub-edges never coincide and a loop's
+/// chords meet only at their ends: LoopTriangulation.h); exact cells' kinds
+/// where the mesh crosses the lattice (ExactCell.h); bends last, from their
+/// crossings. `cells` are the surface leaves. False when `progress` asked to
+/// stop.
+bool PlaceCrossingVertices(const CrossingVertices& vertices, const AdaptiveOctree& tree,
+  const std::vector<std::uint32_t>& cells, const PrimitiveSet& primitives, TriangleMesh& mesh,
+  const ParallelFor& parallelFor, const ProgressCallback& progress);
+
+} // namespace tpc

@@ -1,0 +1,103 @@
+// The patch of one boundary loop (paper 4.3): the triangles that span a loop
+// the surface draws on a cell's boundary, placed so that the extracted
+// surface is embedded - no two triangles meet except in a shared edge or
+// vertex - by construction.
+//
+// Why the patches are embedded. Let C be a (closed, convex) cell and L one of
+// its loops: a closed polygon whose vertices lie on the boundary of C and
+// whose every edge is a chord of one face tile, so lies in one face of C. L is
+// simple when its edges meet only at the ends they share: every crossing lies
+// strictly inside its own lattice sub-edge (CrossingVertices.h places them so,
+// exactly on the sub-edge's line), a tile of a cell that passed the tests
+// holds one chord (MC-compatible tiles; BoundaryLoops.h), and a chord touches
+// its tile's boundary only at its ends. Three triangulations of a simple L
+// are embedded discs that meet the boundary of C in L only:
+//
+// 1. ApexFan: the triangles (p_k, p_k+1, c) around an apex c strictly inside
+//    C. A point x != c of triangle (a, b, c) is c + t (p - c) with p on the
+//    chord ab and 0 < t <= 1. The ray from c through x leaves the convex cell
+//    once, at p, so x determines p; two triangles share x only if their chords
+//    share p, i.e. only along the edge (c, p) from a common end p. A triangle
+//    meets the boundary only in its chord (t = 1) and is not degenerate (c is
+//    not in the plane of the face holding ab).
+// 2. LoopFan: Marching Cubes' k - 2 triangles (s, p_i, p_i+1) from a loop
+//    point s, allowed when no loop point but s and its two neighbours lies
+//    on a face of C that holds s. The same argument with s for c: a point p of
+//    a chord not incident to s lies on a face with s only if both ends of the
+//    chord do (p inside the chord) or p is such an end, so the open segment
+//    (s, p) is interior and p is the only other point of the boundary on the
+//    ray from s through p. The diagonals (s, p_i) cross the interior.
+// 3. Triangle: three loop points not on one face of C. They are not collinear
+//    (three collinear points of a convex cell's boundary lie on one face).
+//
+// Several loops in one cell: a cell passes the tests with several loops only
+// when every two are separated by an axis-aligned plane that the surface does
+// not meet (LoopsSeparated, ComplexCellCriterion.h), so their points' bounding
+// boxes are apart along some axis. A patch lies in the convex hull of its loop
+// and apex; ApexRegion cuts the cell between the boxes of every two loops, and
+// with each apex in its loop's region the patches of different loops lie
+// strictly on opposite sides of a plane.
+//
+// Patches of different cells are in different cells, which meet on their
+// boundaries only; there each patch is its chords, and both cells sharing a
+// tile draw the same chords between the same crossing vertices
+// (BoundaryLoops.h), so patches of different cells meet in shared edges and
+// vertices only. Every comparison above is exact on the computed
+// coordinates; the result is checked exactly anyway (SurfaceEmbedding.h),
+// which also covers cells stopped by a limit, where a tile may hold several
+// chords and loops need not be separated.
+#pragma once
+
+#include "CsgExpression.h"
+#include "Vector3.h"
+
+#include <vector>
+
+namespace tpc
+{
+
+/// A vertex of a loop: a surface crossing on the cell boundary.
+struct LoopPoint
+{
+  Vec3 Position;
+  Vec3 Normal; ///< unit surface normal there (zero if unknown)
+  /// Faces of the cell the point lies on: bit f (CubeTopology.h numbering;
+  /// all six for a bend vertex, which never serves as a fan point).
+  unsigned Faces = 0;
+};
+
+enum class LoopPatchKind
+{
+  Triangle, ///< the three loop points
+  LoopFan,  ///< k - 2 triangles from loop point FanPoint
+  ApexFan   ///< k triangles around Apex
+};
+
+struct LoopPatch
+{
+  LoopPatchKind Kind = LoopPatchKind::ApexFan;
+  int FanPoint = -1;
+  Vec3 Apex;
+};
+
+/// The open region of `cell` where loop `i`'s apex may lie: the cell cut, for
+/// every other loop whose bounding box is apart from loop i's along some axis,
+/// halfway between the two boxes. Loops not apart from loop i (only in cells
+/// stopped by a limit) do not cut it.
+Box3 ApexRegion(const std::vector<Box3>& loopBoxes, std::size_t i, const Box3& cell);
+
+/// How to span `loop` (at least three points, in order) inside its cell, with
+/// an apex (if any) strictly inside `region` (the cell, or ApexRegion).
+/// `planeSection`: the surface in the cell is a union of plane sections kept
+/// larger than the tolerance (PlanarCell.h), so the patch must stay in the
+/// loop's plane up to rounding: the apex is the loop's centroid. Otherwise the
+/// apex recovers sharp features from the crossing normals (as Extended Marching
+/// Cubes does) and keeps 1/32 of the region's width from its boundary.
+/// `expression` (pruned to the cell) places apexes of caps over one face.
+LoopPatch TriangulateLoop(const std::vector<LoopPoint>& loop, const Box3& region, bool planeSection,
+  const CsgExpression& expression, const PrimitiveSet& primitives);
+
+/// True when `p` lies strictly inside `box` on every axis (exact comparisons).
+bool StrictlyInside(const Vec3& p, const Box3& box);
+
+} // namespace tpc

@@ -1,0 +1,48 @@
+// Marching-Cubes-like extraction on the adaptive grid with crack patching
+// (paper 4.3), in four passes over the leaves that meet the surface (passed
+// the tests, were stopped by a limit, or are exact):
+//
+// 1. each leaf's boundary loops, from the samples on its faces at the finest
+//    resolution present there - the same samples its neighbours see, so no
+//    crack can appear and every output edge has two triangles, whether or not
+//    the cell passed the tests (CrackPatching.h, BoundaryLoops.h);
+// 2. one vertex per distinct crossing, found on the exact field by root
+//    finding and placed strictly inside its lattice sub-edge
+//    (CrossingVertices.h);
+// 3. each loop's patch: a fan around an apex strictly inside the cell, or,
+//    where the surface is smooth in the cell, Marching Cubes' fan from one of
+//    the loop's points - embedded by construction (LoopTriangulation.h,
+//    CellPatches.h); an exact cell's patch is its input mesh clipped to it,
+//    and its neighbours draw the mesh's exact trace on the tiles they share
+//    with it (ExactCell.h);
+// 4. the output written once: counted per cell, prefix-summed, written in
+//    parallel (CellPatches.h).
+#pragma once
+
+#include "AdaptiveOctree.h"
+#include "CsgExpression.h"
+#include "Parallel.h"
+#include "TriangleMesh.h"
+
+namespace tpc
+{
+
+struct ExtractionResult
+{
+  TriangleMesh Mesh;
+  /// Cells whose boundary crossings did not close into loops (never expected;
+  /// reported rather than hidden).
+  std::size_t InconsistentCells = 0;
+  /// Cells that may hold surface (passed, or stopped by a limit) without a
+  /// patch: no crossings on their boundary (a complex voxel left by a limit).
+  /// The surface there, if any, is missing from the mesh, so no Hausdorff
+  /// bound holds.
+  std::size_t CellsWithoutPatch = 0;
+  /// `progress` asked to stop: the mesh is incomplete.
+  bool Aborted = false;
+};
+
+ExtractionResult ExtractSurface(const AdaptiveOctree& octree, const ImplicitScene& scene,
+  const ParallelFor& parallelFor = SequentialFor, const ProgressCallback& progress = nullptr);
+
+} // namespace tpc

@@ -1,0 +1,114 @@
+// The adaptive octree forest produced by the topology preserving subdivision
+// (paper 5.3): nodes with their level, lattice position, split reason and
+// state, the exact corner signs, and for each leaf meeting the surface the
+// CSG expression pruned to it (what the extraction evaluates).
+#pragma once
+
+#include "CsgExpression.h"
+#include "FaceTile.h"
+#include "ForestPartition.h"
+#include "LatticeSignTable.h"
+#include "RootGrid.h"
+#include "SplitReason.h"
+
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+namespace tpc
+{
+
+struct OctreeNode
+{
+  std::uint32_t Ijk[3] = { 0, 0, 0 }; ///< integer position at this node's level
+  std::uint8_t Level = 0;
+  SplitReason Reason = SplitReason::None;
+  CellState State = CellState::Outside;
+  /// For Unresolved leaves: the criterion that still failed.
+  SplitReason FailedTest = SplitReason::None;
+  /// A Surface leaf kept larger than the tolerance because the surface in it
+  /// is a union of plane sections (PlanarCell.h): its patches must stay in
+  /// their planes.
+  bool PlaneSection = false;
+  /// Children are FirstChild + c, c = x + 2y + 4z (VTK's HyperTree order); -1 for leaves.
+  std::int32_t FirstChild = -1;
+
+  bool IsLeaf() const { return FirstChild < 0; }
+};
+
+/// Corner c of a cell is at offset (c&1, (c>>1)&1, (c>>2)&1).
+inline void CornerLattice(const RootGrid& grid, const OctreeNode& n, int c, std::uint32_t p[3])
+{
+  const int shift = grid.MaxDepth - n.Level;
+  for (int a = 0; a < 3; ++a)
+  {
+    p[a] = (n.Ijk[a] + ((c >> a) & 1)) << shift;
+  }
+}
+
+/// A face of a cell: its low corner (lattice), normal axis and cell level.
+struct FaceKey
+{
+  PointKey Low = 0;
+  std::uint8_t Axis = 0;
+  std::uint8_t Level = 0;
+  bool operator==(const FaceKey& o) const { return Low == o.Low && Axis == o.Axis && Level == o.Level; }
+};
+
+struct FaceKeyHash
+{
+  std::size_t operator()(const FaceKey& k) const
+  {
+    return std::hash<std::uint64_t>()(k.Low * 0x9E3779B97F4A7C15ULL ^ (k.Axis * 64u + k.Level));
+  }
+};
+
+/// Face f (see CubeTopology.h) of node n.
+FaceKey FaceOf(const RootGrid& grid, const OctreeNode& n, int f);
+
+class AdaptiveOctree
+{
+public:
+  RootGrid Grid;
+  /// Role of each tree in a run split into pieces (ForestPartition.h);
+  /// empty: one piece, every tree its own.
+  std::vector<TreeRole> Roles;
+  TreeRole RoleOf(const OctreeNode& n) const
+  {
+    return this->Roles.empty() ? TreeRole::Own
+                               : this->Roles[static_cast<std::size_t>(TreeOf(this->Grid, n.Level, n.Ijk))];
+  }
+  /// Roots first: node t is the root of tree t (t = i + Dims0 * (j + Dims1 * k)).
+  std::vector<OctreeNode> Nodes;
+  /// Pruned expression of each node that meets the surface (null elsewhere).
+  std::vector<CsgExpressionPtr> Expressions;
+  /// Exact inside/outside at lattice corners of cells that met the surface.
+  LatticeSignTable Signs;
+
+  /// Tiles of faces that were refined (FaceRefinement.h), for leaves that
+  /// passed the tests; faces not listed are a single tile.
+  std::unordered_map<FaceKey, std::vector<FaceTile>, FaceKeyHash> FaceRefinements;
+  /// Positions of face-refinement sample points on each lattice line (see
+  /// LineKey), sorted: the points every cell touching the line must use.
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> RefinementLines;
+
+  /// Fills RefinementLines from FaceRefinements.
+  void IndexRefinementPoints();
+  /// Refinement points strictly inside the lattice segment from `p` along
+  /// `axis` to coordinate `end`.
+  void RefinementPointsOn(const std::uint32_t p[3], int axis, std::uint32_t end,
+    std::vector<PointKey>& out) const;
+
+  /// Index of the node at (level, ijk) if it exists, otherwise of the deepest
+  /// existing ancestor (a leaf containing that position), or -1 outside the grid.
+  std::int64_t Find(int level, const std::int64_t ijk[3]) const;
+
+  /// Inside/outside at a corner of node `n` (constant leaves know their sign
+  /// without a table entry).
+  bool CornerInside(std::size_t n, int corner) const;
+  bool PointInside(std::size_t leafContainingPoint, PointKey key) const;
+
+  std::size_t MemoryBytes() const;
+};
+
+} // namespace tpc

@@ -1,0 +1,51 @@
+#include "CellSignCache.h"
+
+namespace tpc
+{
+
+bool CellSignCache::Inside(PointKey key)
+{
+  const int known = this->Global.Find(key);
+  if (known >= 0)
+  {
+    return known == 1;
+  }
+  // A few fresh points are found fastest by a scan; a cell that evaluates
+  // many (a face refined along a long sliver) switches to a hash table, or
+  // its lookups would grow quadratically.
+  constexpr std::size_t ScanLimit = 32;
+  if (this->Fresh.size() <= ScanLimit)
+  {
+    for (const auto& f : this->Fresh)
+    {
+      if (f.first == key)
+      {
+        return f.second;
+      }
+    }
+  }
+  else
+  {
+    if (this->Local.Size() == 0)
+    {
+      for (const auto& f : this->Fresh)
+      {
+        this->Local.Insert(f.first, f.second);
+      }
+    }
+    const int local = this->Local.Find(key);
+    if (local >= 0)
+    {
+      return local == 1;
+    }
+  }
+  const bool in = this->Expression.IsInside(this->Grid.Point(key), this->Primitives);
+  this->Fresh.emplace_back(key, in);
+  if (this->Local.Size() > 0)
+  {
+    this->Local.Insert(key, in);
+  }
+  return in;
+}
+
+} // namespace tpc

@@ -1,0 +1,29 @@
+// The tiles of a cell face: a face is one tile, or - where face refinement
+// sampled it finer (FaceRefinement.h) - the rectangles it was split into.
+#pragma once
+
+#include "RootGrid.h"
+
+#include <cstdint>
+
+namespace tpc
+{
+
+/// A rectangular tile [U0, U1] x [V0, V1] of a face, in lattice units of the
+/// face's (u, v) axes, u = axis + 1, v = axis + 2 (mod 3).
+struct FaceTile
+{
+  std::uint32_t U0 = 0, V0 = 0, U1 = 1, V1 = 1;
+};
+
+/// Corner c (bit 0: U1, bit 1: V1) of a tile lying in the plane axis = plane.
+inline PointKey TileCorner(int axis, std::uint32_t plane, const FaceTile& t, int c)
+{
+  std::uint32_t p[3];
+  p[axis] = plane;
+  p[(axis + 1) % 3] = (c & 1) ? t.U1 : t.U0;
+  p[(axis + 2) % 3] = (c & 2) ? t.V1 : t.V0;
+  return MakePointKey(p[0], p[1], p[2]);
+}
+
+} // namespace tpc

@@ -1,0 +1,217 @@
+#include "LatticePlacement.h"
+
+#include "MeshEdges.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace tpc
+{
+namespace
+{
+/// Distance from x to the nearest of the values origin + k spacing.
+double DistanceToLattice(double x, double origin, double spacing)
+{
+  double f = (x - origin) / spacing;
+  f -= std::floor(f);
+  return std::min(f, 1.0 - f) * spacing;
+}
+
+/// Integral over [0, u] (in spacings) of the periodic tent that is 1 on the
+/// lattice values and 0 beyond `w` (< 1/2) spacings from them.
+double TentIntegral(double u, double w)
+{
+  const double periods = std::floor(u);
+  const double f = u - periods;
+  double g = 0.5 * w;
+  if (f < w)
+  {
+    g = f - f * f / (2.0 * w);
+  }
+  else if (f > 1.0 - w)
+  {
+    g = 0.5 * w + (f - 1.0 + w) - (w * w - (1.0 - f) * (1.0 - f)) / (2.0 * w);
+  }
+  return w * periods + g;
+}
+
+/// Weight of a flat edge coming within `band` of a plane: its length, in
+/// cells of `spacing`, times the mean tent along it (exact: an edge spanning
+/// several planes weighs the same at every origin).
+double FlatPenalty(const FlatCreaseEdge& e, double origin, double spacing, double band, double cell)
+{
+  const double w = std::min(0.49, band / spacing);
+  const double lo = (e.Lo - origin) / spacing, hi = (e.Hi - origin) / spacing;
+  double mean = 0.0;
+  if (hi - lo > 1e-9)
+  {
+    mean = (TentIntegral(hi, w) - TentIntegral(lo, w)) / (hi - lo);
+  }
+  else
+  {
+    const double d = DistanceToLattice(e.Lo, origin, spacing) / spacing;
+    mean = d < w ? 1.0 - d / w : 0.0;
+  }
+  return mean * e.Length / cell;
+}
+
+} // namespace
+
+namespace
+{
+/// The vertex of triangle `t` that is not on the edge `key`.
+const Vec3& ThirdVertex(const MeshSolid& mesh, std::uint32_t t, std::uint64_t key)
+{
+  for (const std::uint32_t v : mesh.Triangles()[t])
+  {
+    if (v != EdgeLow(key) && v != EdgeHigh(key))
+    {
+      return mesh.Points()[v];
+    }
+  }
+  return mesh.Points()[mesh.Triangles()[t][0]];
+}
+
+/// The mesh edge from p to q between facets with third vertices r1 and r2,
+/// classified per axis: a ridge or valley along it, or lying in its plane.
+void AddCreaseEdge(const Vec3& p, const Vec3& q, const Vec3& r1, const Vec3& r2, double ridgeThickness,
+  double planeThickness, LatticeCreases& creases)
+{
+  const double length = Norm(q - p);
+  for (int a = 0; a < 3; ++a)
+  {
+    // A crease that is a ridge or valley along the axis: both facets
+    // leave it on the same side, so a plane below the ridge cuts both,
+    // along two lines delta (cot A1 + cot A2) apart (Ai: angle of facet
+    // i with the plane). That sliver is unresolvable once it is thinner
+    // than the finest spacing: the band of delta to stay out of.
+    // Facets lying in the plane themselves (a flat face of a CAD part)
+    // sit a hair from a lattice plane just as badly.
+    const bool extremal = (r1[a] - std::max(p[a], q[a])) * (r2[a] - std::max(p[a], q[a])) > 0.0 &&
+      (r1[a] - std::min(p[a], q[a])) * (r2[a] - std::min(p[a], q[a])) > 0.0;
+    const double extent = std::fabs(q[a] - p[a]);
+    if (extent < planeThickness && std::fabs(r1[a] - p[a]) < planeThickness &&
+      std::fabs(r2[a] - p[a]) < planeThickness && length > 0.0)
+    {
+      creases.InPlane[a].push_back({ std::min(p[a], q[a]), std::max(p[a], q[a]), length, 0.0 });
+    }
+    else if (extremal && extent < ridgeThickness && length > 0.0)
+    {
+      double cotangents = 0.0;
+      for (const Vec3* r : { &r1, &r2 })
+      {
+        Vec3 n = Cross(q - p, *r - p);
+        const double norm = Norm(n);
+        const double cosine = norm > 0.0 ? std::min(1.0, std::fabs(n[a]) / norm) : 1.0;
+        cotangents += cosine / std::max(1e-12, std::sqrt(1.0 - cosine * cosine));
+      }
+      creases.Ridges[a].push_back({ std::min(p[a], q[a]), std::max(p[a], q[a]), length, 1.0 / std::max(cotangents, 1e-12) });
+    }
+  }
+}
+} // namespace
+
+LatticeCreases FindLatticeCreases(const PrimitiveSet& primitives, double ridgeThickness, double planeThickness)
+{
+  LatticeCreases creases;
+  for (const MeshSolid& mesh : primitives.Meshes)
+  {
+    std::vector<EdgeUse> uses;
+    BuildEdgeTable(mesh.Triangles().data(), mesh.Triangles().size(), uses);
+    // (Closed meshes: every edge has two triangles; a non-manifold edge's
+    // uses are taken in pairs.)
+    ForEachEdge(uses, [&](std::size_t first, std::size_t count) {
+      for (std::size_t k = first; k + 1 < first + count; k += 2)
+      {
+        const std::uint64_t key = uses[k].Key;
+        AddCreaseEdge(mesh.Points()[EdgeLow(key)], mesh.Points()[EdgeHigh(key)],
+          ThirdVertex(mesh, uses[k].Triangle, key), ThirdVertex(mesh, uses[k + 1].Triangle, key), ridgeThickness,
+          planeThickness, creases);
+      }
+    });
+  }
+  return creases;
+}
+
+double LatticeShiftPenalty(const LatticeCreases& creases, const Vec3& origin, const LatticeSpacings& spacings)
+{
+  // Ridges meet the planes of the cells at the tolerance's level (present all
+  // along the surface); a sliver is unresolvable below a few finest spacings
+  // (face refinement samples). Faces in a plane meet the planes of cells
+  // down to the deepest; the farther from them the better.
+  const double slivers = 4.0 * spacings.Finest;
+  double penalty = 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    for (const FlatCreaseEdge& e : creases.Ridges[a])
+    {
+      penalty += FlatPenalty(e, origin[a], spacings.Surface, slivers * e.BandPerSeparation, spacings.Deepest);
+    }
+    for (const FlatCreaseEdge& e : creases.InPlane[a])
+    {
+      penalty += FlatPenalty(e, origin[a], spacings.Deepest, 0.5 * spacings.Deepest, spacings.Deepest);
+    }
+  }
+  return penalty;
+}
+
+std::vector<Vec3> RankLatticeShifts(const PrimitiveSet& primitives, const RootGrid& base,
+  double hausdorffTolerance, int maximumDepth, int count, const ParallelFor& parallelFor,
+  const ProgressCallback& progress)
+{
+  LatticeSpacings spacings;
+  int level = 0;
+  while (level < base.MaxDepth && base.CellDiagonal(level) > hausdorffTolerance * (1.0 + 1e-9))
+  {
+    ++level;
+  }
+  spacings.Surface = std::ldexp(base.RootSize, -std::min(level + 1, base.MaxDepth));
+  spacings.Deepest = std::ldexp(base.RootSize, -std::min(maximumDepth, base.MaxDepth));
+  spacings.Finest = std::ldexp(base.RootSize, -base.MaxDepth);
+
+  // Candidates: no shift, then a low-discrepancy (R3) sequence of fractions
+  // of the surface cells (MakeRootGrid leaves a margin of a cell).
+  constexpr int Candidates = 64;
+  const LatticeCreases creases = primitives.Meshes.empty()
+    ? LatticeCreases{}
+    : FindLatticeCreases(primitives, 4.0 * spacings.Surface, spacings.Finest);
+  const Vec3 step(0.8191725134, 0.6710436067, 0.5497004779);
+  std::vector<std::pair<double, Vec3>> ranked(
+    static_cast<std::size_t>(primitives.Meshes.empty() ? std::max(0, std::min(count, Candidates)) : Candidates));
+  if (progress && progress(0.1))
+  {
+    return {};
+  }
+  const bool done = ChunkedFor(ranked.size(), 8, parallelFor, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
+    {
+      Vec3 shift;
+      for (int a = 0; a < 3; ++a)
+      {
+        const double f = static_cast<double>(k) * step[a];
+        shift[a] = (f - std::floor(f)) * spacings.Surface;
+      }
+      Vec3 origin = base.Origin;
+      for (int a = 0; a < 3; ++a)
+      {
+        origin[a] -= shift[a];
+      }
+      ranked[k] = { LatticeShiftPenalty(creases, origin, spacings), shift };
+    }
+  }, ProgressRange(progress, 0.1, 1.0));
+  if (!done)
+  {
+    return {};
+  }
+  std::stable_sort(ranked.begin(), ranked.end(),
+    [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<Vec3> shifts;
+  for (std::size_t k = 0; k < ranked.size() && static_cast<int>(k) < count; ++k)
+  {
+    shifts.push_back(ranked[k].second);
+  }
+  return shifts;
+}
+
+} // namespace tpc

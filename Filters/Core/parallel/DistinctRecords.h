@@ -1,0 +1,86 @@
+// Distinct records gathered in parallel: the unseen corners of a subdivision
+// level (each sign evaluated once) and the crossing vertices of the
+// extraction (each vertex placed once) are both many records with repeats.
+//
+// Blocks of work emit records in parallel, each into the bucket of its key's
+// hash; each bucket is then sorted and deduplicated on its own, in parallel
+// and in chunks reporting progress (one global sort of tens of millions of
+// records takes seconds without an abort check). The result is the buckets
+// concatenated, with where each starts, so a record is found by a binary
+// search in its bucket. Which record of a repeated key is kept depends only
+// on `less`, never on the number of threads.
+#pragma once
+
+#include "Parallel.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+namespace tpc
+{
+
+template <typename Record>
+struct BucketedRecords
+{
+  std::vector<Record> Records;          ///< the buckets' distinct records, bucket after bucket
+  std::vector<std::size_t> BucketStart; ///< where bucket k starts in Records (one more: the end)
+};
+
+/// Calls emit(b, out) for each block b < `blocks` (in parallel), which hands
+/// its records to out(record); each lands in bucket bucketOf(record) <
+/// `buckets`. Each bucket is sorted by `less`, and of each run of records
+/// that `sameKey` calls equal the first is kept. Progress: emitting over
+/// the first half, sorting over the second; false when it asked to stop.
+template <typename Record, typename Emit, typename BucketOf, typename Less, typename SameKey>
+bool GatherDistinct(std::size_t blocks, std::size_t buckets, const Emit& emit, const BucketOf& bucketOf,
+  const Less& less, const SameKey& sameKey, const ParallelFor& parallelFor, const ProgressCallback& progress,
+  BucketedRecords<Record>& out)
+{
+  // Pass 1: each block's records, by bucket.
+  std::vector<std::vector<Record>> parts(blocks * buckets);
+  if (!ChunkedFor(blocks, 8, parallelFor, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t b = begin; b < end; ++b)
+        {
+          emit(b, [&parts, &bucketOf, b, buckets](const Record& r) { parts[b * buckets + bucketOf(r)].push_back(r); });
+        }
+      }, ProgressRange(progress, 0.0, 0.5)))
+  {
+    return false;
+  }
+  // Pass 2: each bucket gathered from the blocks (in block order), sorted, deduplicated.
+  std::vector<std::vector<Record>> sorted(buckets);
+  if (!ChunkedFor(buckets, 8, parallelFor, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t k = begin; k < end; ++k)
+        {
+          std::vector<Record>& bucket = sorted[k];
+          for (std::size_t b = 0; b < blocks; ++b)
+          {
+            bucket.insert(bucket.end(), parts[b * buckets + k].begin(), parts[b * buckets + k].end());
+            std::vector<Record>().swap(parts[b * buckets + k]);
+          }
+          std::sort(bucket.begin(), bucket.end(), less);
+          bucket.erase(std::unique(bucket.begin(), bucket.end(), sameKey), bucket.end());
+        }
+      }, ProgressRange(progress, 0.5, 1.0)))
+  {
+    return false;
+  }
+  // Pass 3: offsets (prefix sum), then the buckets written into one array.
+  out.BucketStart.assign(buckets + 1, 0);
+  for (std::size_t k = 0; k < buckets; ++k)
+  {
+    out.BucketStart[k + 1] = out.BucketStart[k] + sorted[k].size();
+  }
+  out.Records.resize(out.BucketStart[buckets]);
+  parallelFor(buckets, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k)
+    {
+      std::copy(sorted[k].begin(), sorted[k].end(), out.Records.begin() + static_cast<std::ptrdiff_t>(out.BucketStart[k]));
+      std::vector<Record>().swap(sorted[k]);
+    }
+  });
+  return true;
+}
+
+} // namespace tpc

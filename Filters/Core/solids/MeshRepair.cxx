@@ -1,0 +1,390 @@
+#include "MeshRepair.h"
+
+#include "ExactPredicates.h"
+#include "MeshEdges.h"
+#include "MeshSolid.h"
+#include "SelfIntersection.h"
+#include "UnionFind.h"
+
+#include <algorithm>
+#include <numeric>
+#include <sstream>
+
+namespace tpc
+{
+namespace
+{
+void MergeCoincidentVertices(std::vector<Vec3>& points, std::vector<Triangle>& triangles, MeshRepairReport& r)
+{
+  std::vector<std::uint32_t> order(points.size());
+  std::iota(order.begin(), order.end(), 0u);
+  auto less = [&](std::uint32_t a, std::uint32_t b) {
+    const Vec3 &p = points[a], &q = points[b];
+    return p[0] != q[0] ? p[0] < q[0] : (p[1] != q[1] ? p[1] < q[1] : (p[2] != q[2] ? p[2] < q[2] : a < b));
+  };
+  std::sort(order.begin(), order.end(), less);
+  // Each vertex maps to the first (lowest index) vertex with its coordinates;
+  // the survivors keep their order.
+  std::vector<std::uint32_t> representative(points.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+  {
+    const Vec3& p = points[order[i]];
+    const bool same = i > 0 && p[0] == points[order[i - 1]][0] && p[1] == points[order[i - 1]][1] &&
+      p[2] == points[order[i - 1]][2];
+    representative[order[i]] = same ? representative[order[i - 1]] : order[i];
+  }
+  std::vector<std::uint32_t> remap(points.size());
+  std::vector<Vec3> merged;
+  for (std::uint32_t v = 0; v < points.size(); ++v)
+  {
+    if (representative[v] == v)
+    {
+      remap[v] = static_cast<std::uint32_t>(merged.size());
+      merged.push_back(points[v]);
+    }
+    else
+    {
+      ++r.MergedVertices;
+    }
+  }
+  for (std::uint32_t v = 0; v < points.size(); ++v)
+  {
+    remap[v] = remap[representative[v]];
+  }
+  for (Triangle& t : triangles)
+  {
+    for (auto& v : t)
+    {
+      v = remap[v];
+    }
+  }
+  points.swap(merged);
+}
+
+bool Degenerate(const std::vector<Vec3>& P, const Triangle& t)
+{
+  if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+  {
+    return true;
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    const int u = (k + 1) % 3, v = (k + 2) % 3;
+    if (Orient2D(P[t[0]][u], P[t[0]][v], P[t[1]][u], P[t[1]][v], P[t[2]][u], P[t[2]][v]) != 0)
+    {
+      return false;
+    }
+  }
+  return true; // collinear in every projection: no area
+}
+
+void DropDegenerateAndDuplicates(const std::vector<Vec3>& P, std::vector<Triangle>& triangles, MeshRepairReport& r)
+{
+  std::vector<Triangle> kept;
+  std::vector<std::pair<Triangle, std::size_t>> sorted;
+  for (const Triangle& t : triangles)
+  {
+    if (Degenerate(P, t))
+    {
+      ++r.DegenerateTriangles;
+      continue;
+    }
+    Triangle s = t;
+    std::sort(s.begin(), s.end());
+    sorted.emplace_back(s, kept.size());
+    kept.push_back(t);
+  }
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<bool> drop(kept.size(), false);
+  for (std::size_t i = 1; i < sorted.size(); ++i)
+  {
+    if (sorted[i].first == sorted[i - 1].first)
+    {
+      drop[sorted[i].second] = true;
+      ++r.DuplicateTriangles;
+    }
+  }
+  triangles.clear();
+  for (std::size_t i = 0; i < kept.size(); ++i)
+  {
+    if (!drop[i])
+    {
+      triangles.push_back(kept[i]);
+    }
+  }
+}
+
+/// Across a manifold edge, a triangle's neighbour and whether the two walk
+/// the edge the same way (one of them must then be flipped).
+struct Neighbour
+{
+  std::uint32_t Triangle;
+  bool SameDirection;
+};
+
+/// The triangles next to each triangle across manifold edges, from the edge
+/// table; counts boundary, non-manifold and inconsistently oriented edges and
+/// joins the triangles of each connected component.
+std::vector<std::vector<Neighbour>> EdgeNeighbours(
+  const std::vector<EdgeUse>& uses, std::size_t triangles, UnionFind& components, MeshRepairReport& r)
+{
+  std::vector<std::vector<Neighbour>> neighbours(triangles);
+  ForEachEdge(uses, [&](std::size_t first, std::size_t count) {
+    r.BoundaryEdges += count == 1 ? 1 : 0;
+    r.NonManifoldEdges += count > 2 ? 1 : 0;
+    for (std::size_t k = first + 1; k < first + count; ++k)
+    {
+      components.Join(uses[k].Triangle, uses[first].Triangle);
+    }
+    if (count == 2)
+    {
+      const EdgeUse &a = uses[first], &b = uses[first + 1];
+      const bool same = a.Ascending == b.Ascending;
+      r.InconsistentEdges += same ? 1 : 0;
+      neighbours[a.Triangle].push_back({ b.Triangle, same });
+      neighbours[b.Triangle].push_back({ a.Triangle, same });
+    }
+  });
+  return neighbours;
+}
+
+/// Which triangles to flip so that across every manifold edge the two
+/// triangles walk it in opposite directions: breadth-first from a seed per
+/// component (kept as it is). A contradiction makes the mesh not orientable.
+std::vector<bool> ConsistentFlips(const std::vector<std::vector<Neighbour>>& neighbours, MeshRepairReport& r)
+{
+  const std::size_t n = neighbours.size();
+  std::vector<int> flip(n, -1);
+  std::vector<std::uint32_t> queue;
+  for (std::uint32_t seed = 0; seed < n; ++seed)
+  {
+    if (flip[seed] >= 0)
+    {
+      continue;
+    }
+    flip[seed] = 0;
+    queue.assign(1, seed);
+    for (std::size_t q = 0; q < queue.size(); ++q)
+    {
+      const std::uint32_t t = queue[q];
+      for (const Neighbour& nb : neighbours[t])
+      {
+        const int wanted = nb.SameDirection ? 1 - flip[t] : flip[t];
+        if (flip[nb.Triangle] < 0)
+        {
+          flip[nb.Triangle] = wanted;
+          queue.push_back(nb.Triangle);
+        }
+        else if (flip[nb.Triangle] != wanted)
+        {
+          r.Orientable = false;
+        }
+      }
+    }
+  }
+  std::vector<bool> flips(n);
+  for (std::size_t t = 0; t < n; ++t)
+  {
+    flips[t] = flip[t] == 1;
+  }
+  return flips;
+}
+
+/// The component of each triangle, numbered in triangle order.
+std::vector<std::uint32_t> ComponentLabels(UnionFind& components, std::size_t triangles, MeshRepairReport& r)
+{
+  std::vector<std::uint32_t> component(triangles), label(triangles, UINT32_MAX);
+  std::uint32_t count = 0;
+  for (std::uint32_t t = 0; t < triangles; ++t)
+  {
+    const std::uint32_t root = components.Find(t);
+    if (label[root] == UINT32_MAX)
+    {
+      label[root] = count++;
+    }
+    component[t] = label[root];
+  }
+  r.Components = count;
+  return component;
+}
+
+/// Orients every component consistently; returns the component of each triangle.
+std::vector<std::uint32_t> OrientConsistently(std::vector<Triangle>& triangles, MeshRepairReport& r)
+{
+  std::vector<EdgeUse> uses;
+  BuildEdgeTable(triangles.data(), triangles.size(), uses);
+  UnionFind components(triangles.size());
+  const std::vector<bool> flips = ConsistentFlips(EdgeNeighbours(uses, triangles.size(), components, r), r);
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    if (flips[t])
+    {
+      std::swap(triangles[t][1], triangles[t][2]);
+    }
+  }
+  return ComponentLabels(components, triangles.size(), r);
+}
+
+/// Flips components so that each faces away from the solid: an outer shell
+/// encloses positive volume, a cavity's shell negative.
+void OrientOutward(const std::vector<Vec3>& P, std::vector<Triangle>& triangles,
+  const std::vector<std::uint32_t>& component, MeshRepairReport& r)
+{
+  const std::size_t count = r.Components;
+  std::vector<std::vector<Triangle>> parts(count);
+  std::vector<double> volume(count, 0.0);
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    const Triangle& f = triangles[t];
+    parts[component[t]].push_back(f);
+    volume[component[t]] += Dot(P[f[0]], Cross(P[f[1]], P[f[2]])) / 6.0;
+  }
+  // Nesting depth from exact inside tests (parity does not depend on
+  // orientation). Quadratic in the number of components: fine for the
+  // handful real solids have; beyond that, assume no nesting.
+  std::vector<int> depth(count, 0);
+  if (count > 1 && count <= 256)
+  {
+    std::vector<MeshSolid> solids;
+    for (const auto& part : parts)
+    {
+      solids.emplace_back(P, part);
+    }
+    for (std::size_t i = 0; i < count; ++i)
+    {
+      const Vec3& probe = P[parts[i].front()[0]];
+      for (std::size_t j = 0; j < count; ++j)
+      {
+        depth[i] += (j != i && solids[j].IsInside(probe)) ? 1 : 0;
+      }
+    }
+  }
+  std::vector<bool> flip(count, false);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    flip[i] = (volume[i] > 0.0) != (depth[i] % 2 == 0);
+    r.FlippedComponents += flip[i] ? 1 : 0;
+  }
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    if (flip[component[t]])
+    {
+      std::swap(triangles[t][1], triangles[t][2]);
+    }
+  }
+}
+} // namespace
+
+MeshRepairReport RepairMesh(std::vector<Vec3>& points, std::vector<Triangle>& triangles,
+  bool checkSelfIntersections, std::size_t maxReported, const ParallelFor& parallelFor,
+  const ProgressCallback& progress)
+{
+  // Progress after each step (a 1M-triangle mesh takes a few tenths of a
+  // second per step); the exact self-intersection test is most of the work.
+  auto stop = [&progress](double f) { return progress && progress(f); };
+  MeshRepairReport r;
+  r.InputTriangles = triangles.size();
+  MergeCoincidentVertices(points, triangles, r);
+  if (stop(0.03))
+  {
+    return r;
+  }
+  DropDegenerateAndDuplicates(points, triangles, r);
+  if (triangles.empty() || stop(0.06))
+  {
+    return r;
+  }
+  const std::vector<std::uint32_t> component = OrientConsistently(triangles, r);
+  if (stop(0.08))
+  {
+    return r;
+  }
+  if (r.Orientable)
+  {
+    OrientOutward(points, triangles, component, r);
+  }
+  if (stop(0.1))
+  {
+    return r;
+  }
+  if (checkSelfIntersections)
+  {
+    r.SelfIntersections =
+      CountSelfIntersections(points, triangles, maxReported, parallelFor, ProgressRange(progress, 0.1, 0.95));
+    r.SelfIntersectionsChecked = true;
+    if (stop(0.95))
+    {
+      return r;
+    }
+  }
+  // Topology of the input surface.
+  std::vector<bool> used(points.size(), false);
+  for (const Triangle& t : triangles)
+  {
+    for (auto v : t)
+    {
+      used[v] = true;
+    }
+  }
+  const long long vertices = std::count(used.begin(), used.end(), true);
+  std::vector<EdgeUse> uses;
+  BuildEdgeTable(triangles.data(), triangles.size(), uses);
+  long long edges = 0;
+  ForEachEdge(uses, [&edges](std::size_t, std::size_t) { ++edges; });
+  r.EulerCharacteristic = vertices - edges + static_cast<long long>(triangles.size());
+  if (r.Closed() && r.NonManifoldEdges == 0)
+  {
+    r.Genus = GenusFromEuler(static_cast<std::int64_t>(r.Components), r.EulerCharacteristic);
+  }
+  return r;
+}
+
+std::string MeshRepairReport::Describe() const
+{
+  std::ostringstream s;
+  if (MergedVertices)
+  {
+    s << MergedVertices << " duplicate vertices merged; ";
+  }
+  if (DegenerateTriangles)
+  {
+    s << DegenerateTriangles << " degenerate triangles dropped; ";
+  }
+  if (DuplicateTriangles)
+  {
+    s << DuplicateTriangles << " duplicate triangles dropped; ";
+  }
+  if (InconsistentEdges)
+  {
+    s << "inconsistent orientation repaired (" << InconsistentEdges << " edges); ";
+  }
+  if (FlippedComponents)
+  {
+    s << FlippedComponents << " component(s) turned to face outward; ";
+  }
+  if (BoundaryEdges)
+  {
+    s << "open: " << BoundaryEdges << " boundary edges; ";
+  }
+  if (NonManifoldEdges)
+  {
+    s << NonManifoldEdges << " non-manifold edges; ";
+  }
+  if (!Orientable)
+  {
+    s << "not orientable; ";
+  }
+  if (SelfIntersections)
+  {
+    s << (SelfIntersections >= 100 ? "at least " : "") << SelfIntersections
+      << " self-intersecting triangle pairs; ";
+  }
+  std::string out = s.str();
+  if (out.size() >= 2)
+  {
+    out.resize(out.size() - 2);
+  }
+  return out;
+}
+
+} // namespace tpc

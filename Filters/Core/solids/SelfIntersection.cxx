@@ -1,0 +1,540 @@
+#include "SelfIntersection.h"
+
+#include "ExactPredicates.h"
+#include "TriangleMesh.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tpc
+{
+namespace
+{
+/// A projection (dropping one axis) in which the triangle keeps its area; -1
+/// for a degenerate triangle.
+int ProjectionAxis(const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    const int u = (k + 1) % 3, v = (k + 2) % 3;
+    if (Orient2D(a[u], a[v], b[u], b[v], c[u], c[v]) != 0)
+    {
+      return k;
+    }
+  }
+  return -1;
+}
+
+struct Projected
+{
+  double U, V;
+};
+
+Projected Project(const Vec3& p, int k)
+{
+  return { p[(k + 1) % 3], p[(k + 2) % 3] };
+}
+
+int O2(const Projected& a, const Projected& b, const Projected& c)
+{
+  return Orient2D(a.U, a.V, b.U, b.V, c.U, c.V);
+}
+
+/// Closed 2-D segments ab and cd intersect.
+bool SegmentsMeet2D(const Projected& a, const Projected& b, const Projected& c, const Projected& d)
+{
+  const int o1 = O2(a, b, c), o2 = O2(a, b, d), o3 = O2(c, d, a), o4 = O2(c, d, b);
+  if (o1 != o2 && o3 != o4 && o1 * o2 <= 0 && o3 * o4 <= 0 && !(o1 == 0 && o2 == 0))
+  {
+    return true;
+  }
+  auto onSegment = [](const Projected& p, const Projected& q, const Projected& r) {
+    // r collinear with pq: within its bounding box
+    return std::min(p.U, q.U) <= r.U && r.U <= std::max(p.U, q.U) && std::min(p.V, q.V) <= r.V &&
+      r.V <= std::max(p.V, q.V);
+  };
+  return (o1 == 0 && onSegment(a, b, c)) || (o2 == 0 && onSegment(a, b, d)) ||
+    (o3 == 0 && onSegment(c, d, a)) || (o4 == 0 && onSegment(c, d, b));
+}
+
+/// Closed point-in-triangle in 2-D (triangle of either orientation).
+bool PointInTriangle2D(const Projected& p, const Projected& a, const Projected& b, const Projected& c)
+{
+  const int o = O2(a, b, c);
+  const int s1 = O2(a, b, p), s2 = O2(b, c, p), s3 = O2(c, a, p);
+  return s1 * o >= 0 && s2 * o >= 0 && s3 * o >= 0;
+}
+
+/// Two coplanar closed triangles overlap (k: a projection keeping their area).
+bool CoplanarTrianglesMeet(const Vec3 t1[3], const Vec3 t2[3], int k)
+{
+  Projected p[3], q[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    p[i] = Project(t1[i], k);
+    q[i] = Project(t2[i], k);
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      if (SegmentsMeet2D(p[i], p[(i + 1) % 3], q[j], q[(j + 1) % 3]))
+      {
+        return true;
+      }
+    }
+  }
+  return PointInTriangle2D(p[0], q[0], q[1], q[2]) || PointInTriangle2D(q[0], p[0], p[1], p[2]);
+}
+} // namespace
+
+bool TriangleIsDegenerate(const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  return ProjectionAxis(a, b, c) < 0;
+}
+
+bool SegmentMeetsTriangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  const int sp = Orient3D(a, b, c, p), sq = Orient3D(a, b, c, q);
+  if (sp != 0 && sp == sq)
+  {
+    return false;
+  }
+  if (sp == 0 && sq == 0)
+  {
+    const int k = ProjectionAxis(a, b, c);
+    if (k < 0)
+    {
+      return false;
+    }
+    const Projected P = Project(p, k), Q = Project(q, k), A = Project(a, k), B = Project(b, k), C = Project(c, k);
+    return PointInTriangle2D(P, A, B, C) || PointInTriangle2D(Q, A, B, C) || SegmentsMeet2D(P, Q, A, B) ||
+      SegmentsMeet2D(P, Q, B, C) || SegmentsMeet2D(P, Q, C, A);
+  }
+  // The segment reaches the plane: it meets the triangle iff it passes on the
+  // same side of (or through) all three edges.
+  const int e1 = Orient3D(p, q, a, b), e2 = Orient3D(p, q, b, c), e3 = Orient3D(p, q, c, a);
+  return (e1 >= 0 && e2 >= 0 && e3 >= 0) || (e1 <= 0 && e2 <= 0 && e3 <= 0);
+}
+
+bool TrianglesIntersect(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e,
+  const Vec3& f)
+{
+  const int s1 = Orient3D(a, b, c, d), s2 = Orient3D(a, b, c, e), s3 = Orient3D(a, b, c, f);
+  if ((s1 > 0 && s2 > 0 && s3 > 0) || (s1 < 0 && s2 < 0 && s3 < 0))
+  {
+    return false;
+  }
+  if (s1 == 0 && s2 == 0 && s3 == 0)
+  {
+    const int k = ProjectionAxis(a, b, c);
+    const Vec3 t1[3] = { a, b, c }, t2[3] = { d, e, f };
+    return k >= 0 && CoplanarTrianglesMeet(t1, t2, k);
+  }
+  const int r1 = Orient3D(d, e, f, a), r2 = Orient3D(d, e, f, b), r3 = Orient3D(d, e, f, c);
+  if ((r1 > 0 && r2 > 0 && r3 > 0) || (r1 < 0 && r2 < 0 && r3 < 0))
+  {
+    return false;
+  }
+  // Non-coplanar triangles meet iff an edge of one meets the other.
+  return SegmentMeetsTriangle(a, b, d, e, f) || SegmentMeetsTriangle(b, c, d, e, f) ||
+    SegmentMeetsTriangle(c, a, d, e, f) || SegmentMeetsTriangle(d, e, a, b, c) ||
+    SegmentMeetsTriangle(e, f, a, b, c) || SegmentMeetsTriangle(f, d, a, b, c);
+}
+
+namespace
+{
+/// The closed 2-D triangles (a, b, c) and (d, e, f) are apart: an edge line
+/// of one has the other strictly on its outer side.
+bool ApartIn2D(const Projected t1[3], const Projected t2[3])
+{
+  auto separates = [](const Projected t[3], const Projected u[3]) {
+    const int o = O2(t[0], t[1], t[2]);
+    for (int i = 0; i < 3; ++i)
+    {
+      const Projected &p = t[i], &q = t[(i + 1) % 3];
+      if (O2(p, q, u[0]) * o < 0 && O2(p, q, u[1]) * o < 0 && O2(p, q, u[2]) * o < 0)
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  return separates(t1, t2) || separates(t2, t1);
+}
+
+/// A fast, sound proof that two triangles meet properly, by a projection
+/// along an axis that keeps both of their areas (ProjectionAxis): it is
+/// injective on each, so a point the triangles share beyond what they share
+/// by index would project onto a point their projections share beyond the
+/// projection of that. Proper in projection (apart; on opposite sides of
+/// the shared edge; separated by a line through the shared vertex) is then
+/// proper in space. Nearly coplanar neighbours - patches of flat parts of a
+/// surface - are decided this way by well-conditioned 2-D orientations,
+/// where the 3-D predicates would need their exact stage. False: no proof
+/// (the full test decides).
+bool ProperInProjection(const Vec3* P, const std::array<std::uint32_t, 3>& t1,
+  const std::array<std::uint32_t, 3>& t2, int shared)
+{
+  const Vec3 &a = P[t1[0]], &b = P[t1[1]], &c = P[t1[2]], &d = P[t2[0]], &e = P[t2[1]], &f = P[t2[2]];
+  const Vec3 n = Cross(b - a, c - a);
+  int k = 0;
+  for (int i = 1; i < 3; ++i)
+  {
+    k = std::fabs(n[i]) > std::fabs(n[k]) ? i : k;
+  }
+  const Projected p[3] = { Project(a, k), Project(b, k), Project(c, k) };
+  const Projected q[3] = { Project(d, k), Project(e, k), Project(f, k) };
+  if (O2(p[0], p[1], p[2]) == 0 || O2(q[0], q[1], q[2]) == 0)
+  {
+    return false; // a projection without area: not injective
+  }
+  if (shared == 0)
+  {
+    return ApartIn2D(p, q);
+  }
+  // The shared vertices' positions in each triangle.
+  int in1[3] = { -1, -1, -1 }, in2[3] = { -1, -1, -1 };
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      if (t1[i] == t2[j])
+      {
+        in1[i] = j;
+        in2[j] = i;
+      }
+    }
+  }
+  if (shared == 2)
+  {
+    // Opposite vertices strictly on opposite sides of the shared edge.
+    const int o1 = in1[0] < 0 ? 0 : (in1[1] < 0 ? 1 : 2), o2 = in2[0] < 0 ? 0 : (in2[1] < 0 ? 1 : 2);
+    const Projected &u = p[(o1 + 1) % 3], &w = p[(o1 + 2) % 3];
+    return O2(u, w, p[o1]) * O2(u, w, q[o2]) < 0;
+  }
+  // One shared vertex v: the two (closed, convex) projections meet only at v
+  // iff their angles at v share no direction.
+  const int i1 = in1[0] >= 0 ? 0 : (in1[1] >= 0 ? 1 : 2), i2 = in1[i1];
+  const Projected &v = p[i1], &a1 = p[(i1 + 1) % 3], &b1 = p[(i1 + 2) % 3];
+  const Projected &a2 = q[(i2 + 1) % 3], &b2 = q[(i2 + 2) % 3];
+  const int s1 = O2(v, a1, b1), s2 = O2(v, a2, b2);
+  // Direction toward x within the closed angle (from, to) of orientation s.
+  auto within = [&](const Projected& from, const Projected& to, int s, const Projected& x) {
+    return O2(v, from, x) * s >= 0 && O2(v, x, to) * s >= 0;
+  };
+  return !within(a1, b1, s1, a2) && !within(a1, b1, s1, b2) && !within(a2, b2, s2, a1) && !within(a2, b2, s2, b1);
+}
+} // namespace
+
+namespace
+{
+/// Triangles t1 and t2 share exactly the vertex t1[i1] = t2[i2]: do they meet
+/// elsewhere?
+bool MeetBeyondSharedVertex(const Vec3* P, const Triangle& t1, const Triangle& t2, int i1, int i2)
+{
+  const Vec3 &a = P[t1[0]], &b = P[t1[1]], &c = P[t1[2]], &d = P[t2[0]], &e = P[t2[1]], &f = P[t2[2]];
+  // Only the shared vertex may be common: the edge opposite it in each
+  // triangle must miss the other triangle, and coplanar triangles must not
+  // overlap beyond the vertex.
+  const Vec3 &o1a = P[t1[(i1 + 1) % 3]], &o1b = P[t1[(i1 + 2) % 3]];
+  const Vec3 &o2a = P[t2[(i2 + 1) % 3]], &o2b = P[t2[(i2 + 2) % 3]];
+  if (SegmentMeetsTriangle(o1a, o1b, d, e, f) || SegmentMeetsTriangle(o2a, o2b, a, b, c))
+  {
+    return true;
+  }
+  if (Orient3D(a, b, c, o2a) == 0 && Orient3D(a, b, c, o2b) == 0)
+  {
+    // Coplanar fan around the shared vertex: overlap iff a side edge of one
+    // enters the other (the opposite edges were tested above).
+    const int k = ProjectionAxis(a, b, c);
+    if (k >= 0)
+    {
+      const Projected v = Project(P[t1[i1]], k);
+      const Projected A = Project(o1a, k), B = Project(o1b, k), C = Project(o2a, k), D = Project(o2b, k);
+      const int oa = O2(v, A, B);
+      // Is a direction toward C or D strictly inside angle (A, B) at v, or vice versa?
+      auto inside = [&](const Projected& x, const Projected& y, const Projected& z, int o) {
+        return O2(v, x, z) * o > 0 && O2(v, z, y) * o > 0;
+      };
+      const int ob = O2(v, C, D);
+      return inside(A, B, C, oa) || inside(A, B, D, oa) || inside(C, D, A, ob) || inside(C, D, B, ob);
+    }
+  }
+  return false;
+}
+
+/// Triangles t1 and t2 share exactly one edge: are they folded flat onto
+/// each other?
+bool FoldedOntoSharedEdge(const Vec3* P, const Triangle& t1, const Triangle& t2)
+{
+  const Vec3 &a = P[t1[0]], &b = P[t1[1]], &c = P[t1[2]];
+  int o1 = -1, o2 = -1;
+  for (int i = 0; i < 3; ++i)
+  {
+    if (t1[i] != t2[0] && t1[i] != t2[1] && t1[i] != t2[2])
+    {
+      o1 = i;
+    }
+    if (t2[i] != t1[0] && t2[i] != t1[1] && t2[i] != t1[2])
+    {
+      o2 = i;
+    }
+  }
+  const Vec3& p = P[t2[o2]];
+  if (Orient3D(a, b, c, p) != 0)
+  {
+    return false;
+  }
+  const int k = ProjectionAxis(a, b, c);
+  if (k < 0)
+  {
+    return false;
+  }
+  const Vec3& s0 = P[t1[(o1 + 1) % 3]];
+  const Vec3& s1 = P[t1[(o1 + 2) % 3]];
+  const Projected S0 = Project(s0, k), S1 = Project(s1, k), Q = Project(P[t1[o1]], k), R = Project(p, k);
+  return O2(S0, S1, Q) * O2(S0, S1, R) > 0; // both on the same side of the shared edge
+}
+} // namespace
+
+bool TrianglesMeetImproperly(const Vec3* P, const Triangle& t1, const Triangle& t2)
+{
+  int shared = 0, i1 = -1, i2 = -1;
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      if (t1[i] == t2[j])
+      {
+        ++shared;
+        i1 = i;
+        i2 = j;
+      }
+    }
+  }
+  if (shared < 3 && ProperInProjection(P, t1, t2, shared))
+  {
+    return false;
+  }
+  switch (shared)
+  {
+    case 0:
+      return TrianglesIntersect(P[t1[0]], P[t1[1]], P[t1[2]], P[t2[0]], P[t2[1]], P[t2[2]]);
+    case 1:
+      return MeetBeyondSharedVertex(P, t1, t2, i1, i2);
+    case 2:
+      return FoldedOntoSharedEdge(P, t1, t2);
+    default:
+      return true; // identical triangles
+  }
+}
+
+namespace
+{
+/// The bins of a uniform grid over triangle boxes: cells about twice the
+/// mean triangle size, at most about 8 n of them.
+struct BinGrid
+{
+  Box3 All{ { HUGE_VAL, HUGE_VAL, HUGE_VAL }, { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL } };
+  double Cell = 0.0;
+  int Dims[3] = { 1, 1, 1 };
+
+  BinGrid(const std::vector<Box3>& boxes)
+  {
+    double meanSize = 0.0;
+    for (const Box3& b : boxes)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        this->All.lo[a] = std::min(this->All.lo[a], b.lo[a]);
+        this->All.hi[a] = std::max(this->All.hi[a], b.hi[a]);
+      }
+      meanSize += std::max({ b.Width(0), b.Width(1), b.Width(2) });
+    }
+    meanSize /= static_cast<double>(boxes.size());
+    this->Cell = std::max(2.0 * meanSize, 1e-300);
+    for (;;)
+    {
+      double cells = 1.0;
+      for (int a = 0; a < 3; ++a)
+      {
+        this->Dims[a] = std::max(1, static_cast<int>(std::ceil(this->All.Width(a) / this->Cell)));
+        cells *= this->Dims[a];
+      }
+      if (cells <= 8.0 * static_cast<double>(boxes.size()) + 64.0)
+      {
+        break;
+      }
+      this->Cell *= 1.5;
+    }
+  }
+  int Index(int a, double x) const
+  {
+    return std::clamp(static_cast<int>(std::floor((x - this->All.lo[a]) / this->Cell)), 0, this->Dims[a] - 1);
+  }
+  /// (bin, triangle) for every bin each triangle's box meets.
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> Entries(const std::vector<Box3>& boxes) const
+  {
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> entries;
+    for (std::size_t t = 0; t < boxes.size(); ++t)
+    {
+      int lo[3], hi[3];
+      for (int a = 0; a < 3; ++a)
+      {
+        lo[a] = this->Index(a, boxes[t].lo[a]);
+        hi[a] = this->Index(a, boxes[t].hi[a]);
+      }
+      for (int x = lo[0]; x <= hi[0]; ++x)
+      {
+        for (int y = lo[1]; y <= hi[1]; ++y)
+        {
+          for (int z = lo[2]; z <= hi[2]; ++z)
+          {
+            const std::uint64_t key = (static_cast<std::uint64_t>(x) * this->Dims[1] + y) * this->Dims[2] + z;
+            entries.emplace_back(key, static_cast<std::uint32_t>(t));
+          }
+        }
+      }
+    }
+    return entries;
+  }
+};
+
+/// Pairs of triangles whose bounding boxes overlap (each pair once, smaller
+/// index first): binned by a uniform grid, sorted by bin, pairs within each
+/// bin. (Progress between the passes; an abort returns no pairs.)
+std::vector<std::pair<std::uint32_t, std::uint32_t>> CandidatePairs(const std::vector<Vec3>& points,
+  const std::vector<std::array<std::uint32_t, 3>>& triangles, const ProgressCallback& progress)
+{
+  auto stop = [&progress](double f) { return progress && progress(f); };
+  if (triangles.size() < 2)
+  {
+    return {};
+  }
+  std::vector<Box3> boxes(triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    boxes[t] = TriangleBox(points.data(), triangles[t]);
+  }
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> entries = BinGrid(boxes).Entries(boxes);
+  if (stop(0.1))
+  {
+    return {};
+  }
+  std::sort(entries.begin(), entries.end());
+  if (stop(0.4))
+  {
+    return {};
+  }
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  for (std::size_t i = 0; i < entries.size();)
+  {
+    std::size_t j = i;
+    while (j < entries.size() && entries[j].first == entries[i].first)
+    {
+      ++j;
+    }
+    for (std::size_t p = i; p < j; ++p)
+    {
+      for (std::size_t q = p + 1; q < j; ++q)
+      {
+        const std::uint32_t t1 = entries[p].second, t2 = entries[q].second;
+        if (boxes[t1].Overlaps(boxes[t2]))
+        {
+          pairs.emplace_back(std::min(t1, t2), std::max(t1, t2));
+        }
+      }
+    }
+    i = j;
+  }
+  if (stop(0.6))
+  {
+    return {};
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
+}
+
+/// How many candidate pairs `accept` takes, counting at most `limit`: fixed
+/// blocks of pairs, each counting up to the limit, so the capped sum is
+/// min(total, limit) whatever the thread count. Blocks run in chunks that
+/// report progress; counting stops once the limit is reached.
+template <typename Accept>
+std::size_t CountAccepted(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs,
+  std::size_t limit, const ParallelFor& parallelFor, const ProgressCallback& progress, const Accept& accept)
+{
+  constexpr std::size_t BlockSize = 4096, BlocksPerChunk = 8;
+  const std::size_t blocks = (pairs.size() + BlockSize - 1) / BlockSize;
+  std::vector<std::size_t> found(blocks, 0);
+  std::size_t total = 0;
+  ForEachChunk(blocks, BlocksPerChunk, parallelFor, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t b = begin; b < end; ++b)
+    {
+      const std::size_t last = std::min(pairs.size(), (b + 1) * BlockSize);
+      for (std::size_t i = b * BlockSize; i < last && found[b] < limit; ++i)
+      {
+        found[b] += accept(pairs[i].first, pairs[i].second) ? 1 : 0;
+      }
+    }
+  }, [&](std::size_t first, std::size_t last) {
+    for (std::size_t b = first; b < last; ++b)
+    {
+      total += found[b];
+    }
+    return total >= limit || (progress && progress(static_cast<double>(last) / static_cast<double>(blocks)));
+  });
+  return std::min(total, limit);
+}
+} // namespace
+
+std::size_t CountSelfIntersections(const std::vector<Vec3>& points,
+  const std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t limit,
+  const ParallelFor& parallelFor, const ProgressCallback& progress)
+{
+  return CountAccepted(CandidatePairs(points, triangles, ProgressRange(progress, 0.0, 0.2)), limit, parallelFor,
+    ProgressRange(progress, 0.2, 1.0),
+    [&](std::uint32_t t1, std::uint32_t t2) { return TrianglesMeetImproperly(points.data(), triangles[t1], triangles[t2]); });
+}
+
+std::size_t CountCoincidentFaces(const std::vector<Vec3>& pointsA,
+  const std::vector<std::array<std::uint32_t, 3>>& trianglesA, const std::vector<Vec3>& pointsB,
+  const std::vector<std::array<std::uint32_t, 3>>& trianglesB, bool facingEachOther, std::size_t limit,
+  const ParallelFor& parallelFor, const ProgressCallback& progress)
+{
+  // Both meshes in one list, B's indices after A's.
+  std::vector<Vec3> points = pointsA;
+  points.insert(points.end(), pointsB.begin(), pointsB.end());
+  std::vector<std::array<std::uint32_t, 3>> triangles = trianglesA;
+  const auto offset = static_cast<std::uint32_t>(pointsA.size());
+  for (const auto& t : trianglesB)
+  {
+    triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+  }
+  const auto fromA = static_cast<std::uint32_t>(trianglesA.size());
+  return CountAccepted(CandidatePairs(points, triangles, ProgressRange(progress, 0.0, 0.2)), limit, parallelFor,
+    ProgressRange(progress, 0.2, 1.0), [&](std::uint32_t t1, std::uint32_t t2) {
+      if ((t1 < fromA) == (t2 < fromA))
+      {
+        return false; // both from one mesh
+      }
+      const Vec3 p[3] = { points[triangles[t1][0]], points[triangles[t1][1]], points[triangles[t1][2]] };
+      const Vec3 q[3] = { points[triangles[t2][0]], points[triangles[t2][1]], points[triangles[t2][2]] };
+      for (const Vec3& v : q)
+      {
+        if (Orient3D(p[0], p[1], p[2], v) != 0)
+        {
+          return false;
+        }
+      }
+      // Facing each other: opposite windings in a common projection.
+      const int k = ProjectionAxis(p[0], p[1], p[2]);
+      const Projected pp[3] = { Project(p[0], k), Project(p[1], k), Project(p[2], k) };
+      const Projected qq[3] = { Project(q[0], k), Project(q[1], k), Project(q[2], k) };
+      const bool opposite = O2(pp[0], pp[1], pp[2]) * O2(qq[0], qq[1], qq[2]) < 0;
+      return opposite == facingEachOther && CoplanarTrianglesMeet(p, q, k);
+    });
+}
+
+} // namespace tpc

@@ -1,0 +1,137 @@
+// Each loop's patch (LoopTriangulation.h): which of the three embedded
+// triangulations is chosen, and where the apex of a fan goes.
+#include "LoopTriangulation.h"
+#include "SceneBuilder.h"
+
+#include <gtest/gtest.h>
+
+using tpc::Box3;
+using tpc::LoopPatchKind;
+using tpc::LoopPoint;
+using tpc::Vec3;
+using tpctest::SceneBuilder;
+
+namespace
+{
+const Box3 Cell{ { 0, 0, 0 }, { 1, 1, 1 } };
+
+/// Bit f of the cell faces (CubeTopology.h numbering) holding p.
+unsigned FacesOf(const Vec3& p)
+{
+  unsigned faces = 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    faces |= (p[a] == 0.0 ? 1u : 0u) << (2 * a);
+    faces |= (p[a] == 1.0 ? 1u : 0u) << (2 * a + 1);
+  }
+  return faces;
+}
+
+/// Loop points at `positions` with the normals of the solid `scene` there.
+std::vector<LoopPoint> Loop(const tpc::ImplicitScene& scene, const std::vector<Vec3>& positions)
+{
+  std::vector<LoopPoint> loop;
+  for (const Vec3& p : positions)
+  {
+    loop.push_back({ p, Normalized(scene.Expression->Gradient(p, scene.Primitives)), FacesOf(p) });
+  }
+  return loop;
+}
+
+/// Every fan triangle (p_k, p_k+1, apex) faces the way the surface does.
+void ExpectFanFacesOutward(const std::vector<LoopPoint>& loop, const Vec3& apex)
+{
+  for (std::size_t k = 0; k < loop.size(); ++k)
+  {
+    const LoopPoint &a = loop[k], &b = loop[(k + 1) % loop.size()];
+    EXPECT_GT(Dot(Cross(b.Position - a.Position, apex - a.Position), a.Normal + b.Normal), 0.0) << k;
+  }
+}
+} // namespace
+
+TEST(LoopTriangulation, ThreePointsNotOnOneFaceAreATriangle)
+{
+  SceneBuilder b;
+  b.Finish(b.Sphere({ 0, 0, 0 }, 0.5));
+  const auto loop = Loop(b.Scene, { { 0.5, 0, 0 }, { 0, 0.5, 0 }, { 0, 0, 0.5 } });
+  EXPECT_EQ(tpc::TriangulateLoop(loop, Cell, false, *b.Scene.Expression, b.Scene.Primitives).Kind,
+    LoopPatchKind::Triangle);
+}
+
+TEST(LoopTriangulation, SmoothLoopIsMarchingCubesFan)
+{
+  // A gently tilted plane through the four vertical edges: k - 2 triangles
+  // from a loop point that shares no face with the non-adjacent points.
+  SceneBuilder b;
+  b.Finish(b.Add(tpc::Quadric::Plane({ 0.5, 0.5, 0.5 }, { 0.1, 0.2, 1.0 })));
+  std::vector<Vec3> positions;
+  for (const auto& xy : { std::pair<double, double>{ 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } })
+  {
+    const double z = 0.5 - (0.1 * (xy.first - 0.5) + 0.2 * (xy.second - 0.5));
+    positions.push_back({ xy.first, xy.second, z });
+  }
+  const auto loop = Loop(b.Scene, positions);
+  const tpc::LoopPatch patch = tpc::TriangulateLoop(loop, Cell, false, *b.Scene.Expression, b.Scene.Primitives);
+  ASSERT_EQ(patch.Kind, LoopPatchKind::LoopFan);
+  ASSERT_GE(patch.FanPoint, 0);
+  const auto s = static_cast<std::size_t>(patch.FanPoint);
+  EXPECT_EQ(loop[s].Faces & loop[(s + 2) % 4].Faces, 0u);
+}
+
+TEST(LoopTriangulation, CreaseApexIsTheFeaturePoint)
+{
+  // The edge x = y = 1/2 of the quarter space x, y < 1/2 crosses the cell:
+  // the tangent planes at the four crossings meet on the crease, where the
+  // fan's apex goes (as Extended Marching Cubes places it).
+  SceneBuilder b;
+  b.Finish(SceneBuilder::Intersection({ b.Add(tpc::Quadric::Plane({ 0.5, 0, 0 }, { 1, 0, 0 })),
+    b.Add(tpc::Quadric::Plane({ 0, 0.5, 0 }, { 0, 1, 0 })) }));
+  // (Loops run counter-clockwise seen from outside the solid.)
+  const auto loop = Loop(b.Scene, { { 0.5, 0, 0 }, { 0, 0.5, 0 }, { 0, 0.5, 1 }, { 0.5, 0, 1 } });
+  const tpc::LoopPatch patch = tpc::TriangulateLoop(loop, Cell, false, *b.Scene.Expression, b.Scene.Primitives);
+  ASSERT_EQ(patch.Kind, LoopPatchKind::ApexFan);
+  EXPECT_NEAR(patch.Apex[0], 0.5, 1e-12);
+  EXPECT_NEAR(patch.Apex[1], 0.5, 1e-12);
+  EXPECT_TRUE(tpc::StrictlyInside(patch.Apex, Cell));
+  ExpectFanFacesOutward(loop, patch.Apex);
+}
+
+TEST(LoopTriangulation, CapApexIsStrictlyInsideItsRegion)
+{
+  // A sphere bulging through the top face: its eight crossings all lie on
+  // the face z = 1. The apex goes strictly inside the cell, 1/32 of it away
+  // from every face (the patch must meet the cell boundary in its loop
+  // only), where the fan faces the way the surface does.
+  SceneBuilder b;
+  const Vec3 c{ 0.5, 0.5, 1.3 };
+  const double r = 0.75;
+  b.Finish(b.Sphere(c, r));
+  const double d = std::sqrt(r * r - 0.09 - 0.25); // where the circle meets each face edge
+  const auto loop = Loop(b.Scene, { { 0, 0.5 - d, 1 }, { 0, 0.5 + d, 1 }, { 0.5 - d, 1, 1 }, { 0.5 + d, 1, 1 },
+                                    { 1, 0.5 + d, 1 }, { 1, 0.5 - d, 1 }, { 0.5 + d, 0, 1 }, { 0.5 - d, 0, 1 } });
+  const tpc::LoopPatch patch = tpc::TriangulateLoop(loop, Cell, false, *b.Scene.Expression, b.Scene.Primitives);
+  ASSERT_EQ(patch.Kind, LoopPatchKind::ApexFan);
+  EXPECT_TRUE(tpc::StrictlyInside(patch.Apex, Cell));
+  for (int a = 0; a < 3; ++a)
+  {
+    EXPECT_GE(patch.Apex[a], 1.0 / 32 - 1e-12);
+    EXPECT_LE(patch.Apex[a], 1.0 - 1.0 / 32 + 1e-12);
+  }
+  ExpectFanFacesOutward(loop, patch.Apex);
+}
+
+TEST(LoopTriangulation, SeveralLoopsKeepTheirApexesApart)
+{
+  // Two loops whose boxes are apart along x: each apex region is cut halfway
+  // between them, so their fans lie on opposite sides of that plane.
+  const std::vector<Box3> boxes = { { { 0, 0, 0 }, { 0.2, 1, 1 } }, { { 0.6, 0, 0 }, { 1, 1, 1 } } };
+  const Box3 left = tpc::ApexRegion(boxes, 0, Cell), right = tpc::ApexRegion(boxes, 1, Cell);
+  EXPECT_DOUBLE_EQ(left.hi[0], 0.4);
+  EXPECT_DOUBLE_EQ(right.lo[0], 0.4);
+  EXPECT_EQ(left.lo[0], 0.0);
+  EXPECT_EQ(right.hi[0], 1.0);
+  // Overlapping boxes (a cell stopped by a limit) do not cut each other.
+  const std::vector<Box3> overlapping = { { { 0, 0, 0 }, { 0.7, 1, 1 } }, { { 0.6, 0, 0 }, { 1, 1, 1 } } };
+  const Box3 whole = tpc::ApexRegion(overlapping, 0, Cell);
+  EXPECT_EQ(whole.hi[0], 1.0);
+}

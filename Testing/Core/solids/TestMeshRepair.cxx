@@ -1,0 +1,219 @@
+// Input meshes: what is repaired (orientation, duplicates, degenerate
+// triangles, inverted or nested shells) and what is reported (open edges,
+// self-intersections), with exact triangle intersection tests.
+#include "MeshBuilders.h"
+#include "MeshRepair.h"
+#include "SelfIntersection.h"
+
+#include "CgalEmbedding.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using tpc::Vec3;
+using Tris = std::vector<std::array<std::uint32_t, 3>>;
+
+namespace
+{
+double Volume(const std::vector<Vec3>& p, const Tris& t)
+{
+  double v = 0.0;
+  for (const auto& f : t)
+  {
+    v += tpc::Dot(p[f[0]], tpc::Cross(p[f[1]], p[f[2]])) / 6.0;
+  }
+  return v;
+}
+} // namespace
+
+TEST(MeshRepair, CleanMeshIsUntouched)
+{
+  const tpc::MeshSolid torus = tpctest::TorusMesh({ 0, 0, 0 }, 0.6, 0.25, 24, 12);
+  std::vector<Vec3> p = torus.Points();
+  Tris t = torus.Triangles();
+  const tpc::MeshRepairReport r = tpc::RepairMesh(p, t);
+  EXPECT_TRUE(r.MeetsAssumptions()) << r.Describe();
+  EXPECT_EQ(r.Describe(), "");
+  EXPECT_EQ(r.Components, 1u);
+  EXPECT_EQ(r.Genus, 1);
+  EXPECT_EQ(t, torus.Triangles());
+}
+
+TEST(MeshRepair, OrientationIsMadeConsistentAndOutward)
+{
+  const tpc::MeshSolid cube = tpctest::CubeMesh({ 0, 0, 0 }, { 1, 1, 1 });
+  std::vector<Vec3> p = cube.Points();
+  Tris t = cube.Triangles();
+  std::swap(t[3][1], t[3][2]); // one triangle flipped
+  for (auto& f : t)
+  {
+    std::swap(f[1], f[2]); // and the whole thing inverted
+  }
+  const tpc::MeshRepairReport r = tpc::RepairMesh(p, t);
+  EXPECT_GT(r.InconsistentEdges, 0u);
+  EXPECT_EQ(r.FlippedComponents, 1u);
+  EXPECT_TRUE(r.MeetsAssumptions()) << r.Describe();
+  EXPECT_NEAR(Volume(p, t), 1.0, 1e-12);
+}
+
+TEST(MeshRepair, NestedShellFacesItsCavity)
+{
+  // Outer and inner spheres given with the same (outward) orientation: the
+  // inner one must be turned to face into the cavity.
+  const tpc::MeshSolid outer = tpctest::SphereMesh({ 0, 0, 0 }, 1.0, 2);
+  const tpc::MeshSolid inner = tpctest::SphereMesh({ 0.1, 0, 0 }, 0.5, 2);
+  std::vector<Vec3> p = outer.Points();
+  Tris t = outer.Triangles();
+  const auto offset = static_cast<std::uint32_t>(p.size());
+  p.insert(p.end(), inner.Points().begin(), inner.Points().end());
+  for (auto f : inner.Triangles())
+  {
+    t.push_back({ f[0] + offset, f[1] + offset, f[2] + offset });
+  }
+  const double before = Volume(p, t);
+  const tpc::MeshRepairReport r = tpc::RepairMesh(p, t);
+  EXPECT_EQ(r.Components, 2u);
+  EXPECT_EQ(r.FlippedComponents, 1u);
+  EXPECT_LT(Volume(p, t), before); // the cavity is now subtracted
+  EXPECT_TRUE(r.MeetsAssumptions());
+}
+
+TEST(MeshRepair, DuplicatesAndDegeneratesAreDropped)
+{
+  const tpc::MeshSolid cube = tpctest::CubeMesh({ 0, 0, 0 }, { 1, 1, 1 });
+  // Every triangle with its own three vertices (a "triangle soup").
+  std::vector<Vec3> p;
+  Tris t;
+  for (const auto& f : cube.Triangles())
+  {
+    const auto base = static_cast<std::uint32_t>(p.size());
+    for (int k = 0; k < 3; ++k)
+    {
+      p.push_back(cube.Points()[f[k]]);
+    }
+    t.push_back({ base, base + 1, base + 2 });
+  }
+  t.push_back(t.front());                   // a duplicate
+  t.push_back({ 0, 0, 1 });                 // repeated vertex
+  p.push_back((p[0] + p[1]) * 0.5);         // collinear with 0 and 1
+  t.push_back({ 0, 1, static_cast<std::uint32_t>(p.size() - 1) });
+  const tpc::MeshRepairReport r = tpc::RepairMesh(p, t);
+  EXPECT_EQ(r.MergedVertices, 36u - 8u);
+  EXPECT_EQ(r.DuplicateTriangles, 1u);
+  EXPECT_EQ(r.DegenerateTriangles, 2u);
+  EXPECT_EQ(t.size(), 12u);
+  EXPECT_TRUE(r.MeetsAssumptions()) << r.Describe();
+}
+
+TEST(MeshRepair, OpenMeshAndSelfIntersectionsAreReported)
+{
+  const tpc::MeshSolid cube = tpctest::CubeMesh({ 0, 0, 0 }, { 1, 1, 1 });
+  std::vector<Vec3> p = cube.Points();
+  Tris t = cube.Triangles();
+  t.pop_back();
+  tpc::MeshRepairReport r = tpc::RepairMesh(p, t);
+  EXPECT_EQ(r.BoundaryEdges, 3u);
+  EXPECT_FALSE(r.Closed());
+  EXPECT_NE(r.Describe().find("open"), std::string::npos);
+
+  // Two interpenetrating cubes in one mesh.
+  const tpc::MeshSolid other = tpctest::CubeMesh({ 0.5, 0.5, 0.5 }, { 1.5, 1.5, 1.5 });
+  p = cube.Points();
+  t = cube.Triangles();
+  const auto offset = static_cast<std::uint32_t>(p.size());
+  p.insert(p.end(), other.Points().begin(), other.Points().end());
+  for (auto f : other.Triangles())
+  {
+    t.push_back({ f[0] + offset, f[1] + offset, f[2] + offset });
+  }
+  r = tpc::RepairMesh(p, t);
+  EXPECT_GT(r.SelfIntersections, 0u);
+  EXPECT_FALSE(r.MeetsAssumptions());
+  EXPECT_NE(r.Describe().find("self-intersecting"), std::string::npos);
+}
+
+TEST(SelfIntersection, ExactTriangleTests)
+{
+  // Crossing, touching at a point, coplanar overlapping, and apart.
+  EXPECT_TRUE(tpc::TrianglesIntersect({ 0, 0, 0 }, { 2, 0, 0 }, { 0, 2, 0 }, { 0.5, 0.5, -1 }, { 0.5, 0.5, 1 },
+    { 1.5, 0.5, 1 }));
+  EXPECT_TRUE(tpc::TrianglesIntersect({ 0, 0, 0 }, { 2, 0, 0 }, { 0, 2, 0 }, { 0.5, 0.5, 0 }, { 0.5, 0.5, 1 },
+    { 1.5, 0.5, 1 }));
+  EXPECT_TRUE(tpc::TrianglesIntersect({ 0, 0, 0 }, { 2, 0, 0 }, { 0, 2, 0 }, { 0.5, 0.5, 0 }, { 3, 0.5, 0 },
+    { 0.5, 3, 0 }));
+  EXPECT_FALSE(tpc::TrianglesIntersect({ 0, 0, 0 }, { 2, 0, 0 }, { 0, 2, 0 }, { 0.5, 0.5, 0.1 }, { 0.5, 0.5, 1 },
+    { 1.5, 0.5, 1 }));
+  EXPECT_FALSE(tpc::TrianglesIntersect({ 0, 0, 0 }, { 2, 0, 0 }, { 0, 2, 0 }, { 3, 3, 0 }, { 4, 3, 0 }, { 3, 4, 0 }));
+  // Clean closed meshes have none.
+  const tpc::MeshSolid sphere = tpctest::SphereMesh({ 0, 0, 0 }, 1.0, 3);
+  EXPECT_EQ(tpc::CountSelfIntersections(sphere.Points(), sphere.Triangles()), 0u);
+  const tpc::MeshSolid torus = tpctest::TorusMesh({ 0, 0, 0 }, 0.6, 0.25, 48, 24);
+  EXPECT_EQ(tpc::CountSelfIntersections(torus.Points(), torus.Triangles()), 0u);
+}
+
+TEST(SelfIntersection, TrianglePairsAgreeWithCgalsExactIntersection)
+{
+  // Random pairs sharing no vertex, one or two, with coordinates on a coarse
+  // grid and most in two planes: coplanar, touching and nearly flat pairs
+  // abound. The exact test (with its projection shortcut) against the
+  // intersection CGAL constructs exactly.
+  std::mt19937 rng(3);
+  std::uniform_int_distribution<int> c(0, 4), plane(0, 3);
+  int improper = 0, coplanar = 0;
+  for (int trial = 0; trial < 20000; ++trial)
+  {
+    std::vector<std::array<double, 3>> points(6);
+    for (auto& p : points)
+    {
+      const int z = plane(rng);
+      p = { c(rng) * 0.5, c(rng) * 0.5, z < 2 ? 0.0 : (z == 2 ? 1.0 : c(rng) * 0.25) };
+    }
+    const int shared = trial % 3;
+    const std::array<std::uint32_t, 3> t1 = { 0, 1, 2 };
+    const std::array<std::uint32_t, 3> t2 = { shared > 0 ? 0u : 3u, shared > 1 ? 1u : 4u, 5 };
+    std::vector<Vec3> vec;
+    for (const auto& p : points)
+    {
+      vec.emplace_back(p[0], p[1], p[2]);
+    }
+    if (tpc::TriangleIsDegenerate(vec[0], vec[1], vec[2]) || tpc::TriangleIsDegenerate(vec[t2[0]], vec[t2[1]], vec[5]) ||
+      points[3] == points[0] || points[3] == points[1] || points[3] == points[2] || points[4] == points[0] ||
+      points[4] == points[1] || points[4] == points[2] || points[5] == points[0] || points[5] == points[1] ||
+      points[5] == points[2])
+    {
+      continue; // degenerate, or vertices coinciding without being shared
+    }
+    const bool expected = tpcoracle::TrianglePairMeetsImproperly(points, t1, t2);
+    ASSERT_EQ(tpc::TrianglesMeetImproperly(vec.data(), t1, t2), expected) << "trial " << trial;
+    improper += expected ? 1 : 0;
+    coplanar += points[0][2] == 0 && points[1][2] == 0 && points[2][2] == 0 && points[5][2] == 0 ? 1 : 0;
+  }
+  EXPECT_GT(improper, 1000);
+  EXPECT_GT(coplanar, 500);
+}
+
+TEST(SelfIntersection, CoincidentFacesOfTwoMeshesAreFoundByWinding)
+{
+  auto count = [](const tpc::MeshSolid& a, const tpc::MeshSolid& b, bool facing) {
+    return tpc::CountCoincidentFaces(a.Points(), a.Triangles(), b.Points(), b.Triangles(), facing);
+  };
+  const tpc::MeshSolid a = tpctest::CubeMesh({ 0, 0, 0 }, { 1, 1, 1 });
+  // Touching along x = 1, facing each other.
+  const tpc::MeshSolid touching = tpctest::CubeMesh({ 1, 0.2, 0.3 }, { 1.5, 0.6, 0.7 });
+  EXPECT_GT(count(a, touching, true), 0u);
+  EXPECT_EQ(count(a, touching, false), 0u);
+  // Flush inside x = 1: the same winding.
+  const tpc::MeshSolid flush = tpctest::CubeMesh({ 0.5, 0.25, 0.25 }, { 1, 0.75, 0.75 });
+  EXPECT_EQ(count(a, flush, true), 0u);
+  EXPECT_GT(count(a, flush, false), 0u);
+  // A gap of one part in 1e12, and cubes that cross, have none.
+  const tpc::MeshSolid gap = tpctest::CubeMesh({ 1 + 1e-12, 0, 0 }, { 2, 1, 1 });
+  const tpc::MeshSolid crossing = tpctest::CubeMesh({ 0.5, 0.25, 0.25 }, { 1.5, 0.75, 0.75 });
+  for (const bool facing : { true, false })
+  {
+    EXPECT_EQ(count(a, gap, facing), 0u);
+    EXPECT_EQ(count(a, crossing, facing), 0u);
+    EXPECT_EQ(count(tpctest::SphereMesh({ 0, 0, 0 }, 1.0, 2), tpctest::SphereMesh({ 0.5, 0.1, 0 }, 1.0, 2), facing), 0u);
+  }
+}

@@ -1,0 +1,263 @@
+// Meshes as solids: exact inside/outside even for queries that hit edges and
+// vertices, crossing counts consistent with it, conservative triangle/box
+// overlap, and the whole pipeline on meshes and mesh/quadric CSG.
+#include "CoreContour.h"
+#include "ExactPredicates.h"
+#include "MeshBuilders.h"
+#include "SceneBuilder.h"
+#include "SurfaceExtraction.h"
+#include "TopologyReport.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using tpc::Box3;
+using tpc::Vec3;
+using tpctest::SceneBuilder;
+
+TEST(ExactPredicates, AgreeWithIntegerArithmetic)
+{
+  // Small integer coordinates: the determinants are exact in 64-bit integers.
+  std::mt19937 rng(4);
+  std::uniform_int_distribution<int> c(-3, 3);
+  int zeros = 0;
+  for (int trial = 0; trial < 20000; ++trial)
+  {
+    const long long a[3] = { c(rng), c(rng), c(rng) }, b[3] = { c(rng), c(rng), c(rng) },
+                    d[3] = { c(rng), c(rng), c(rng) }, e[3] = { c(rng), c(rng), c(rng) };
+    const long long ad[3] = { a[0] - e[0], a[1] - e[1], a[2] - e[2] };
+    const long long bd[3] = { b[0] - e[0], b[1] - e[1], b[2] - e[2] };
+    const long long cd[3] = { d[0] - e[0], d[1] - e[1], d[2] - e[2] };
+    const long long det = ad[0] * (bd[1] * cd[2] - bd[2] * cd[1]) - ad[1] * (bd[0] * cd[2] - bd[2] * cd[0]) +
+      ad[2] * (bd[0] * cd[1] - bd[1] * cd[0]);
+    const int expected = det > 0 ? 1 : (det < 0 ? -1 : 0);
+    // Scaling by a power of two keeps the coordinates exact, and the sign.
+    for (const double f : { 1.0, 0.125, 1024.0 })
+    {
+      ASSERT_EQ(tpc::Orient3D(Vec3(a[0] * f, a[1] * f, a[2] * f), Vec3(b[0] * f, b[1] * f, b[2] * f),
+                  Vec3(d[0] * f, d[1] * f, d[2] * f), Vec3(e[0] * f, e[1] * f, e[2] * f)),
+        expected);
+    }
+    const long long o2 = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
+    ASSERT_EQ(tpc::Orient2D(a[0], a[1], b[0], b[1], d[0], d[1]), o2 > 0 ? 1 : (o2 < 0 ? -1 : 0));
+    zeros += expected == 0 ? 1 : 0;
+  }
+  EXPECT_GT(zeros, 100); // degenerate cases were exercised
+}
+
+TEST(ExactPredicates, NearlyDegenerateCasesPastTheFloatingPointFilter)
+{
+  // Shewchuk's example: a point a hair off the line through (12, 12) and
+  // (24, 24), on a grid of ulps around (0.5, 0.5), where plain floating point
+  // gets signs wrong. Exact reference: every coordinate is an integer
+  // multiple of 2^-53, so the determinant is exact in 128-bit integers.
+  const double ulp = std::ldexp(1.0, -53);
+  const auto units = [ulp](double x) { return static_cast<__int128>(x / ulp); };
+  int positives = 0, negatives = 0, zeros = 0;
+  for (int i = 0; i < 64; ++i)
+  {
+    for (int j = 0; j < 64; ++j)
+    {
+      const double ax = 0.5 + i * ulp, ay = 0.5 + j * ulp;
+      const __int128 exact =
+        (units(12.0) - units(ax)) * (units(24.0) - units(ay)) - (units(12.0) - units(ay)) * (units(24.0) - units(ax));
+      const int expected = exact > 0 ? 1 : (exact < 0 ? -1 : 0);
+      ASSERT_EQ(tpc::Orient2D(ax, ay, 12.0, 12.0, 24.0, 24.0), expected) << i << " " << j;
+      // The same determinant as a 3-D one: a, b, c in z = 0, d above them.
+      ASSERT_EQ(tpc::Orient3D(Vec3(12.0, 12.0, 0.0), Vec3(24.0, 24.0, 0.0), Vec3(ax, ay, 1.0), Vec3(ax, ay, 0.0)),
+        expected)
+        << i << " " << j;
+      positives += expected > 0;
+      negatives += expected < 0;
+      zeros += expected == 0;
+    }
+  }
+  EXPECT_GT(positives, 0);
+  EXPECT_GT(negatives, 0);
+  EXPECT_GT(zeros, 0);
+}
+
+TEST(MeshSolid, InsideIsExactOnQueriesThroughEdgesAndVertices)
+{
+  // A cube mesh queried on a lattice that contains its vertices: rays hit
+  // edges and vertices all the time.
+  const tpc::MeshSolid cube = tpctest::CubeMesh({ -1, -1, -1 }, { 1, 1, 1 });
+  int inside = 0;
+  for (int i = -4; i <= 4; ++i)
+  {
+    for (int j = -4; j <= 4; ++j)
+    {
+      for (int k = -4; k <= 4; ++k)
+      {
+        const Vec3 p(0.5 * i, 0.5 * j, 0.5 * k);
+        // Off the surface: the cube. On it: as just beside p along (+, +, +)
+        // (the shared symbolic perturbation), i.e. inside iff each
+        // coordinate is in [-1, 1).
+        const bool expected = i >= -2 && i < 2 && j >= -2 && j < 2 && k >= -2 && k < 2;
+        ASSERT_EQ(cube.IsInside(p), expected) << i << " " << j << " " << k;
+        inside += expected ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_EQ(inside, 64);
+}
+
+TEST(MeshSolid, InsideMatchesTheAnalyticTorusAwayFromTheSurface)
+{
+  const double R = 0.6, r = 0.25;
+  const tpc::MeshSolid torus = tpctest::TorusMesh({ 0, 0, 0 }, R, r, 64, 32);
+  std::mt19937 rng(8);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int checked = 0;
+  for (int trial = 0; trial < 20000; ++trial)
+  {
+    const Vec3 p(u(rng), u(rng), 0.5 * u(rng));
+    const double q = std::hypot(std::hypot(p[0], p[1]) - R, p[2]) - r;
+    if (std::fabs(q) < 0.01) // the facetted mesh differs from the torus there
+    {
+      continue;
+    }
+    ASSERT_EQ(torus.IsInside(p), q < 0) << p[0] << " " << p[1] << " " << p[2];
+    ++checked;
+  }
+  EXPECT_GT(checked, 15000);
+}
+
+TEST(MeshSolid, CrossingCountsAgreeWithInsideChanges)
+{
+  const tpc::MeshSolid torus = tpctest::TorusMesh({ 0, 0, 0 }, 0.6, 0.25, 24, 12);
+  const tpc::TriangleList all = torus.Overlapping(torus.Bounds());
+  std::mt19937 rng(12);
+  std::uniform_int_distribution<int> lattice(-16, 16);
+  for (int trial = 0; trial < 3000; ++trial)
+  {
+    // Segments on a coarse lattice so that some pass through mesh vertices.
+    const int axis = trial % 3;
+    Vec3 a(lattice(rng) / 16.0, lattice(rng) / 16.0, lattice(rng) / 32.0);
+    Vec3 b = a;
+    b[axis] += (1 + trial % 7) / 8.0;
+    const int n = torus.CountCrossings(a, b, axis, all);
+    ASSERT_EQ(n % 2 == 1, torus.IsInside(a) != torus.IsInside(b)) << "trial " << trial;
+  }
+}
+
+TEST(MeshSolid, TriangleBoxOverlapNeverMissesAContact)
+{
+  const tpc::MeshSolid sphere = tpctest::SphereMesh({ 0, 0, 0 }, 0.7, 2);
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), s(0.01, 0.3);
+  int positives = 0, negatives = 0;
+  for (int trial = 0; trial < 2000; ++trial)
+  {
+    Box3 box;
+    const double size = s(rng);
+    for (int a = 0; a < 3; ++a)
+    {
+      box.lo[a] = u(rng);
+      box.hi[a] = box.lo[a] + size;
+    }
+    const tpc::TriangleList hit = sphere.Overlapping(box);
+    for (std::uint32_t t = 0; t < sphere.TriangleCount(); ++t)
+    {
+      // Brute force: dense samples of the triangle inside the box.
+      bool touches = false;
+      for (int i = 0; i <= 12 && !touches; ++i)
+      {
+        for (int j = 0; i + j <= 12 && !touches; ++j)
+        {
+          const Vec3 p = sphere.Vertex(t, 0) * ((12.0 - i - j) / 12.0) + sphere.Vertex(t, 1) * (i / 12.0) +
+            sphere.Vertex(t, 2) * (j / 12.0);
+          touches = box.Contains(p);
+        }
+      }
+      const bool reported = std::find(hit.begin(), hit.end(), t) != hit.end();
+      if (touches)
+      {
+        ASSERT_TRUE(reported) << "triangle " << t << " trial " << trial;
+      }
+      positives += touches ? 1 : 0;
+      negatives += !reported ? 1 : 0;
+    }
+  }
+  EXPECT_GT(positives, 100);
+  EXPECT_GT(negatives, 100000); // and it does reject
+}
+
+namespace
+{
+/// Largest distance from a point of `points` to the mesh (brute force).
+double FarthestFromMesh(const std::vector<Vec3>& points, const tpc::MeshSolid& mesh)
+{
+  tpc::TriangleList all(mesh.TriangleCount());
+  for (std::uint32_t t = 0; t < all.size(); ++t)
+  {
+    all[t] = t;
+  }
+  double worst = 0.0;
+  for (std::size_t i = 0; i < points.size(); i += 3)
+  {
+    worst = std::max(worst, std::fabs(mesh.ApproximateSignedDistance(points[i], all)));
+  }
+  return worst;
+}
+
+void ExpectClosedManifold(const tpctest::ContourRun& r)
+{
+  EXPECT_EQ(r.Subdivision.UnresolvedCells, 0u);
+  EXPECT_EQ(r.Extraction.InconsistentCells, 0u);
+  EXPECT_TRUE(r.Report.Closed);
+  EXPECT_TRUE(r.Report.Manifold);
+  EXPECT_TRUE(r.Report.Oriented);
+  EXPECT_GT(r.Report.SignedVolume, 0.0);
+}
+} // namespace
+
+TEST(MeshPipeline, RemeshedTorusKeepsItsTopologyWithinTolerance)
+{
+  for (const double tolerance : { 0.04, 0.02 })
+  {
+    SceneBuilder b;
+    const tpc::MeshSolid torus = tpctest::TorusMesh({ 0.01, 0.02, 0.03 }, 0.6, 0.25, 48, 24);
+    b.Finish(b.Mesh(torus));
+    const tpctest::ContourRun r = tpctest::Contour(b.Scene, torus.Bounds(), tolerance);
+    ExpectClosedManifold(r);
+    EXPECT_EQ(r.Report.Components, 1);
+    EXPECT_EQ(r.Report.Genus, 1);
+    // One side of the Hausdorff distance: output vertices near the mesh.
+    EXPECT_LE(FarthestFromMesh(r.Extraction.Mesh.Points.ToVector(), torus), r.Tolerance);
+  }
+}
+
+TEST(MeshPipeline, MeshMinusQuadricCylinderHasGenusOne)
+{
+  SceneBuilder b;
+  b.Finish(SceneBuilder::Difference({ b.Mesh(tpctest::SphereMesh({ 0, 0, 0 }, 0.7, 3)),
+    b.Cylinder({ 0.05, 0.02, 0 }, { 0.1, 0.2, 1.0 }, 0.2) }));
+  const tpctest::ContourRun r = tpctest::Contour(b.Scene, { { -0.7, -0.7, -0.7 }, { 0.7, 0.7, 0.7 } }, 0.03);
+  ExpectClosedManifold(r);
+  EXPECT_EQ(r.Report.Components, 1);
+  EXPECT_EQ(r.Report.Genus, 1);
+}
+
+TEST(MeshPipeline, BooleansOfMeshes)
+{
+  // Two overlapping sphere meshes: one component.
+  SceneBuilder u;
+  u.Finish(SceneBuilder::Union({ u.Mesh(tpctest::SphereMesh({ -0.3, 0, 0 }, 0.5, 3)),
+    u.Mesh(tpctest::SphereMesh({ 0.3, 0.05, 0 }, 0.45, 3)) }));
+  const tpctest::ContourRun ru = tpctest::Contour(u.Scene, { { -0.8, -0.5, -0.5 }, { 0.75, 0.5, 0.5 } }, 0.03);
+  ExpectClosedManifold(ru);
+  EXPECT_EQ(ru.Report.Components, 1);
+  EXPECT_EQ(ru.Report.Genus, 0);
+
+  // A slab minus a box through it: a hole, genus 1 (coplanar-free faces).
+  SceneBuilder d;
+  d.Finish(SceneBuilder::Difference({ d.Mesh(tpctest::CubeMesh({ -0.5, -0.5, -0.2 }, { 0.5, 0.5, 0.2 })),
+    d.Mesh(tpctest::CubeMesh({ -0.15, -0.1, -0.3 }, { 0.12, 0.1, 0.3 })) }));
+  const tpctest::ContourRun rd = tpctest::Contour(d.Scene, { { -0.5, -0.5, -0.2 }, { 0.5, 0.5, 0.2 } }, 0.03);
+  ExpectClosedManifold(rd);
+  EXPECT_EQ(rd.Report.Components, 1);
+  EXPECT_EQ(rd.Report.Genus, 1);
+}
