@@ -2,11 +2,14 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
+#include "vtkCleanPolyData.h"
+#include "vtkFillHolesFilter.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkTriangleFilter.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace tpc
@@ -14,8 +17,34 @@ namespace tpc
 namespace vtkadapter
 {
 
-bool ConvertPolyData(vtkPolyData* input, MeshInput& mesh, std::string& error, const ParallelFor& parallelFor,
-  const ProgressCallback& progress)
+namespace
+{
+/// `surface` with its holes closed: exactly coincident points merged (so
+/// that triangles of a soup share edges), every boundary loop filled by a
+/// polygon. The number of triangles this adds goes to `filled`.
+vtkSmartPointer<vtkPolyData> FilledHoles(vtkPolyData* surface, std::size_t& filled)
+{
+  vtkNew<vtkCleanPolyData> merge;
+  merge->SetInputData(surface);
+  merge->SetTolerance(0.0);
+  merge->ConvertLinesToPointsOff();
+  merge->ConvertPolysToLinesOff();
+  merge->ConvertStripsToPolysOff();
+  vtkNew<vtkFillHolesFilter> fill;
+  fill->SetInputConnection(merge->GetOutputPort());
+  fill->SetHoleSize(VTK_DOUBLE_MAX); // (every hole, however large)
+  vtkNew<vtkTriangleFilter> triangulate;
+  triangulate->SetInputConnection(fill->GetOutputPort());
+  triangulate->Update();
+  // (The merge keeps triangles triangles: its conversions are off.)
+  const vtkIdType added = triangulate->GetOutput()->GetNumberOfPolys() - merge->GetOutput()->GetNumberOfPolys();
+  filled = static_cast<std::size_t>(std::max<vtkIdType>(0, added));
+  return triangulate->GetOutput();
+}
+} // namespace
+
+bool ConvertPolyData(vtkPolyData* input, MeshInput& mesh, std::string& error, bool fillHoles,
+  const ParallelFor& parallelFor, const ProgressCallback& progress)
 {
   mesh.IgnoredLines = input->GetLines() ? static_cast<std::size_t>(input->GetLines()->GetNumberOfCells()) : 0;
   mesh.IgnoredVertices = input->GetVerts() ? static_cast<std::size_t>(input->GetVerts()->GetNumberOfCells()) : 0;
@@ -30,7 +59,12 @@ bool ConvertPolyData(vtkPolyData* input, MeshInput& mesh, std::string& error, co
   triangulate->PassVertsOff();
   triangulate->PassLinesOff();
   triangulate->Update();
-  vtkPolyData* triangles = triangulate->GetOutput();
+  vtkSmartPointer<vtkPolyData> triangles = triangulate->GetOutput();
+  std::size_t filled = 0;
+  if (fillHoles && triangles->GetNumberOfPolys() > 0)
+  {
+    triangles = FilledHoles(triangles, filled);
+  }
   if (triangles->GetNumberOfPolys() == 0)
   {
     error = "it has no polygons or triangle strips";
@@ -64,6 +98,7 @@ bool ConvertPolyData(vtkPolyData* input, MeshInput& mesh, std::string& error, co
     }
   }
   mesh.Repair = RepairMesh(points, faces, true, 100, parallelFor, progress);
+  mesh.Repair.FilledHoleTriangles = filled;
   mesh.Solid = MeshSolid(std::move(points), std::move(faces));
   return true;
 }

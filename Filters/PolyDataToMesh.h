@@ -26,7 +26,10 @@ struct MeshInput
 /// Converts and repairs (stopping early, with a partial result, when
 /// `progress` asks to abort). Returns false (with `error` set) when the data
 /// cannot describe a solid at all: no triangles, or non-finite coordinates.
-bool ConvertPolyData(vtkPolyData* input, MeshInput& mesh, std::string& error,
+/// With `fillHoles`, every hole (a loop of boundary edges, once exactly
+/// coincident points are merged) is first closed by a polygon
+/// (vtkFillHolesFilter), counted in the repair report.
+bool ConvertPolyData(vtkPolyData* input, MeshInput& mesh, std::string& error, bool fillHoles = false,
   const ParallelFor& parallelFor = SequentialFor, const ProgressCallback& progress = nullptr);
 
 } // namespace vtkadapter

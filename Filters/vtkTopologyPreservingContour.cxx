@@ -78,8 +78,8 @@ void AddReport(vtkDataObject* output, const tpc::ContourReport& r)
   fd->AddArray(t);
 }
 
-/// The piece the pipeline asks for (UpdatePiece asks on port 0, a surface
-/// consumer on port 1).
+/// The piece the pipeline asks for (on either port: UpdatePiece asks on
+/// port 0, a grid consumer on port 1).
 tpc::PieceOfRun RequestedPiece(vtkInformationVector* outInfo)
 {
   tpc::PieceOfRun piece;
@@ -146,11 +146,14 @@ vtkSmartPointer<ArrayT> TakeOver(tpc::ReleasableArray<T>& values, int components
   return array;
 }
 
-/// The surface with its normals and each triangle's grid cell. The core's
-/// points, normals and triangles become the output's arrays without a copy
-/// (ReleasableArray.h); the mesh is left empty.
-void MoveSurface(tpc::TriangleMesh& mesh, const std::vector<vtkIdType>& nodeToCell, vtkPolyData* out)
+/// The surface with its normals, each triangle's grid cell and solid. The
+/// core's points, normals, triangles and solids become the output's arrays
+/// without a copy (ReleasableArray.h); the result's mesh is left empty.
+void MoveSurface(tpc::ContourResult& result, const std::vector<vtkIdType>& nodeToCell, vtkPolyData* out)
 {
+  tpc::TriangleMesh& mesh = result.Extraction.Mesh;
+  auto solidId = TakeOver<vtkIntArray, 1>(result.TriangleSolid, 1);
+  solidId->SetName("SolidId");
   vtkNew<vtkIdTypeArray> gridCell;
   gridCell->SetName("GridCell");
   gridCell->SetNumberOfValues(static_cast<vtkIdType>(mesh.TriangleCell.size()));
@@ -182,6 +185,7 @@ void MoveSurface(tpc::TriangleMesh& mesh, const std::vector<vtkIdType>& nodeToCe
   out->SetPolys(triangles);
   out->GetPointData()->SetNormals(normals);
   out->GetCellData()->AddArray(gridCell);
+  out->GetCellData()->AddArray(solidId);
   mesh = tpc::TriangleMesh();
 }
 enum class InputConversion
@@ -197,8 +201,9 @@ InputConversion AddInputSolids(vtkTopologyPreservingContour* self, vtkInformatio
   tpc::ContourScene& scene, const std::function<tpc::ProgressCallback(double, double)>& stage, const bool& aborted)
 {
   const int connections = self->GetNumberOfInputConnections(0);
-  for (int i = 0; i < connections; ++i)
+  for (int k = 0; k < connections; ++k)
   {
+    const int i = self->GetReverseInputOrder() ? connections - 1 - k : k;
     vtkPolyData* mesh = vtkPolyData::GetData(inputs, i);
     if (!mesh || mesh->GetNumberOfCells() == 0)
     {
@@ -207,8 +212,8 @@ InputConversion AddInputSolids(vtkTopologyPreservingContour* self, vtkInformatio
     }
     tpc::vtkadapter::MeshInput in;
     std::string error;
-    const bool converted = tpc::vtkadapter::ConvertPolyData(
-      mesh, in, error, ParallelForSMP, stage(0.08 * i / connections, 0.08 * (i + 1) / connections));
+    const bool converted = tpc::vtkadapter::ConvertPolyData(mesh, in, error, self->GetFillHoles(), ParallelForSMP,
+      stage(0.08 * k / connections, 0.08 * (k + 1) / connections));
     if (aborted)
     {
       return InputConversion::Aborted;
@@ -226,6 +231,7 @@ InputConversion AddInputSolids(vtkTopologyPreservingContour* self, vtkInformatio
     scene.Primitives.Meshes.push_back(std::move(in.Solid));
     tpc::SceneInput solid;
     solid.Name = "Input " + std::to_string(i);
+    solid.Id = i;
     solid.Mesh = static_cast<int>(scene.Primitives.Meshes.size() - 1);
     solid.Solid = tpc::CsgTerm::Mesh(solid.Mesh);
     solid.Repair = in.Repair;
@@ -235,6 +241,7 @@ InputConversion AddInputSolids(vtkTopologyPreservingContour* self, vtkInformatio
   {
     tpc::SceneInput implicit;
     implicit.Name = "The ImplicitFunction";
+    implicit.Id = connections;
     std::string error;
     if (!tpc::vtkadapter::ConvertImplicitFunction(self->GetImplicitFunction(), scene.Primitives, implicit.Solid, error))
     {
@@ -295,18 +302,20 @@ int vtkTopologyPreservingContour::FillInputPortInformation(int, vtkInformation* 
 
 int vtkTopologyPreservingContour::FillOutputPortInformation(int port, vtkInformation* info)
 {
-  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 0 ? "vtkHyperTreeGrid" : "vtkPolyData");
+  // The surface, the main result, first (ParaView's simple API, Fetch and
+  // SaveData take port 0); the adaptive grid second.
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 0 ? "vtkPolyData" : "vtkHyperTreeGrid");
   return 1;
 }
 
 vtkHyperTreeGrid* vtkTopologyPreservingContour::GetGridOutput()
 {
-  return vtkHyperTreeGrid::SafeDownCast(this->GetOutputDataObject(0));
+  return vtkHyperTreeGrid::SafeDownCast(this->GetOutputDataObject(1));
 }
 
 vtkPolyData* vtkTopologyPreservingContour::GetSurfaceOutput()
 {
-  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
+  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(0));
 }
 
 vtkTypeBool vtkTopologyPreservingContour::ProcessRequest(
@@ -346,8 +355,8 @@ vtkTypeBool vtkTopologyPreservingContour::ProcessRequest(
 int vtkTopologyPreservingContour::RequestData(
   vtkInformation*, vtkInformationVector** inInfo, vtkInformationVector* outInfo)
 {
-  vtkHyperTreeGrid* gridOut = vtkHyperTreeGrid::GetData(outInfo, 0);
-  vtkPolyData* surfaceOut = vtkPolyData::GetData(outInfo, 1);
+  vtkPolyData* surfaceOut = vtkPolyData::GetData(outInfo, 0);
+  vtkHyperTreeGrid* gridOut = vtkHyperTreeGrid::GetData(outInfo, 1);
   if (!gridOut || !surfaceOut)
   {
     vtkErrorMacro("Output data objects are missing.");
@@ -403,6 +412,18 @@ int vtkTopologyPreservingContour::RequestData(
   auto aborted = [&]() {
     clearOutputs();
     vtkWarningMacro("Aborted: outputs are empty.");
+    // This filter's own abort leaves its outputs empty and up to date: it
+    // runs again when a property or an input changes (or after Modified()).
+    // Left set, AbortOutput makes VTK 9.2's executive mark the outputs
+    // ABORTED, and the next request - ParaView makes one per output port and
+    // view right after Apply - runs the whole contour again, so the abort
+    // button seemed to do nothing. (Changes made during RequestData do not
+    // make the filter out of date.) An abort of an upstream filter stays one.
+    if (this->GetAbortExecute())
+    {
+      this->SetAbortExecute(0);
+      this->SetAbortOutput(false);
+    }
     return 1;
   };
 
@@ -445,7 +466,7 @@ int vtkTopologyPreservingContour::RequestData(
   {
     return aborted();
   }
-  MoveSurface(result.Extraction.Mesh, nodeToCell, surfaceOut);
+  MoveSurface(result, nodeToCell, surfaceOut);
   surfaceOut->GetFieldData()->Initialize(); // (ConvertOctree initialized the grid)
   AddReport(gridOut, result.Report);
   AddReport(surfaceOut, result.Report);
@@ -459,6 +480,8 @@ void vtkTopologyPreservingContour::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ImplicitFunction: " << this->ImplicitFunction << "\n";
   os << indent << "Operation: " << this->Operation << "\n";
+  os << indent << "ReverseInputOrder: " << this->ReverseInputOrder << "\n";
+  os << indent << "FillHoles: " << this->FillHoles << "\n";
   os << indent << "Bounds: " << this->Bounds[0] << " " << this->Bounds[1] << " " << this->Bounds[2]
      << " " << this->Bounds[3] << " " << this->Bounds[4] << " " << this->Bounds[5] << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";

@@ -18,18 +18,25 @@
  * - Input port 0 (optional, repeatable): closed triangle meshes (vtkPolyData;
  *   polygons and strips are triangulated), one solid per connection. Each is
  *   checked and repaired (duplicate vertices, degenerate and duplicate
- *   triangles, orientation), with a warning saying what was done; an open
- *   mesh is an error; non-manifold or self-intersecting input is computed
- *   with TopologyGuaranteed = 0. Inside/outside is exact (ray parity with
- *   exact predicates).
+ *   triangles, orientation), with a warning saying what was done (points
+ *   at exactly the same coordinates are merged silently); an open mesh is
+ *   an error, or with FillHoles closed and reported; non-manifold or
+ *   self-intersecting input is computed with TopologyGuaranteed = 0.
+ *   Inside/outside is exact (ray parity with exact predicates).
  * - ImplicitFunction: vtkSphere, vtkQuadric, vtkBox, vtkCylinder, vtkPlane and
  *   vtkImplicitBoolean trees of them (Union, Intersection, Difference), each
  *   honouring its linear Transform. The solid is where the function is < 0.
- * - Operation folds the input solids in connection order, then the implicit
- *   function: ((S0 op S1) op ...) op F.
+ * - Operation folds the input solids in connection order (last to first
+ *   with ReverseInputOrder), then the implicit function: ((S0 op S1) op ...)
+ *   op F.
  *
  * Outputs
- * - Port 0, vtkHyperTreeGrid: the adaptive grid. Cell data: "Depth" (level),
+ * - Port 0, vtkPolyData: the surface, triangles with point "Normals" and
+ *   cell data "GridCell" (the hyper tree grid cell each triangle was
+ *   extracted from) and "SolidId" (the solid whose surface the triangle lies
+ *   on: its input connection index, the number of input connections for the
+ *   ImplicitFunction, -1 on a cap of Bounds).
+ * - Port 1, vtkHyperTreeGrid: the adaptive grid. Cell data: "Depth" (level),
  *   "SplitReason" (why the cell was split, see SplitReasons; NOT_SPLIT on
  *   leaves), "SizeReason" (the parent's SplitReason: why the cell is as small
  *   as it is; the active scalars, as renderers draw leaves), "CellState"
@@ -39,8 +46,6 @@
  *   is that mesh clipped to it) and "FailedTest" (for states 3 and 5, the
  *   test that failed, as a SplitReasons value). Field data "SplitReasonNames" and
  *   "CellStateNames" (string arrays indexed by value) name the values.
- * - Port 1, vtkPolyData: triangles with point "Normals" and cell data
- *   "GridCell" (the hyper tree grid cell each triangle was extracted from).
  * - Field data on both: "Components", "Genus", "EulerCharacteristic",
  *   "TopologyGuaranteed" (1 only if every cell on the surface passed every
  *   test, the inputs meet the method's assumptions, and the output is closed,
@@ -67,9 +72,12 @@
  * (CellState 3, SplitReason SURFACES_TOO_CLOSE).
  *
  * Progress and Abort: every stage reports progress in chunks (inputs
- * [0, 0.1], subdivision [0.1, 0.85], extraction and embedding check [0.85, 0.95], topology report
- * and grid output [0.95, 1]) and checks AbortExecute at each report; an
- * abort returns empty outputs with a warning.
+ * [0, 0.08], subdivision, extraction, embedding check and topology report
+ * [0.08, 0.97], grid output [0.97, 1]) and checks AbortExecute at each
+ * report. An abort (SetAbortExecute(1) during the run, ParaView's abort
+ * button) returns empty outputs with a warning, clears AbortExecute, and
+ * leaves the outputs up to date, as VTK filters did before 9.2: the filter
+ * runs again when a property or an input changes, or after Modified().
  *
  * Threads: the subdivision and extraction loops use vtkSMPTools; set
  * VTK_SMP_BACKEND_IN_USE=STDThread (the default backend is sequential).
@@ -149,6 +157,30 @@ public:
 
   ///@{
   /**
+   * Fold the input solids in the reverse of their connection order (the
+   * last connected first: the minuend of a Difference). ParaView connects
+   * inputs in the order they were selected; this reverses it without
+   * reconnecting. Default: off.
+   */
+  vtkSetMacro(ReverseInputOrder, bool);
+  vtkGetMacro(ReverseInputOrder, bool);
+  vtkBooleanMacro(ReverseInputOrder, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Close the holes of open input meshes (every loop of boundary edges, once
+   * exactly coincident points are merged, is filled by a polygon) instead of
+   * refusing them; the filled triangles are reported as a repair. Default:
+   * off - an open mesh is refused with an error saying so.
+   */
+  vtkSetMacro(FillHoles, bool);
+  vtkGetMacro(FillHoles, bool);
+  vtkBooleanMacro(FillHoles, bool);
+  ///@}
+
+  ///@{
+  /**
    * Domain (xmin, xmax, ymin, ymax, zmin, zmax). The solid is clipped to it
    * (and capped, so the surface stays closed). Default: invalid (xmin > xmax),
    * meaning "derive from the inputs"; an unbounded solid (a plane, a cylinder)
@@ -184,9 +216,9 @@ public:
   vtkGetMacro(MaximumNumberOfCells, vtkIdType);
   ///@}
 
-  /// Outputs.
-  vtkHyperTreeGrid* GetGridOutput();
+  /// Outputs: the surface (port 0) and the adaptive grid (port 1).
   vtkPolyData* GetSurfaceOutput();
+  vtkHyperTreeGrid* GetGridOutput();
 
   vtkMTimeType GetMTime() override;
 
@@ -203,6 +235,8 @@ protected:
 
   vtkImplicitFunction* ImplicitFunction = nullptr;
   int Operation = UNION;
+  bool ReverseInputOrder = false;
+  bool FillHoles = false;
   double Bounds[6] = { 0.0, -1.0, 0.0, -1.0, 0.0, -1.0 };
   double Tolerance = 0.01;
   bool ToleranceIsRelative = true;

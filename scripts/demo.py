@@ -76,7 +76,7 @@ def run(name, algorithm, expected_genus):
     start = time.time()
     algorithm.Update()
     seconds = time.time() - start
-    grid, surface = algorithm.GetOutputDataObject(0), algorithm.GetOutputDataObject(1)
+    grid, surface = algorithm.GetOutputDataObject(1), algorithm.GetOutputDataObject(0)
 
     def field(key):
         return surface.GetFieldData().GetArray(key).GetTuple1(0)

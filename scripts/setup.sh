@@ -13,7 +13,10 @@ cd "$(dirname "$0")/.."
 # is the tests' independent oracle for self-intersections, OpenVDB (with the
 # Boost part its CMake module asks for) is the benchmark's baseline; clang with its libFuzzer and
 # sanitizer runtimes, and valgrind, check the core (scripts/test.sh);
-# openscad-testing-data holds broken STL files for the bad-input tests.
+# openscad-testing-data holds broken STL files for the bad-input tests;
+# libqt5opengl5-dev is what ParaView's Qt asks for when the plugin's GUI
+# component builds, and the GUI test drives ParaView's own widgets with
+# python3-pyqt5 (in ParaView's Python) and xdotool (a real click).
 packages=(
   paraview paraview-dev python3-paraview xvfb xauth
   qtbase5-dev qttools5-dev libqt5svg5-dev qtxmlpatterns5-dev-tools libutfcpp-dev
@@ -25,6 +28,7 @@ packages=(
   cmake ninja-build g++ libgtest-dev
   libglpk-dev libcgal-demo libcgal-dev libgmp-dev libmpfr-dev libopenvdb-dev libboost-iostreams-dev
   clang libclang-rt-14-dev valgrind openscad-testing-data
+  libqt5opengl5-dev python3-pyqt5 xdotool
 )
 missing=()
 for p in "${packages[@]}"; do

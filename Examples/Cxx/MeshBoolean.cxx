@@ -48,7 +48,7 @@ int main(int argc, char* argv[])
   boolean->SetTolerance(std::atof(argv[4])); // relative to the diagonal
   boolean->Update();
 
-  auto* surface = vtkPolyData::SafeDownCast(boolean->GetOutputDataObject(1));
+  auto* surface = vtkPolyData::SafeDownCast(boolean->GetOutputDataObject(0));
   auto value = [&](const char* name) { return surface->GetFieldData()->GetArray(name)->GetTuple1(0); };
   std::cout << "components " << value("Components") << " genus " << value("Genus")
             << " guaranteed " << value("TopologyGuaranteed") << " triangles "

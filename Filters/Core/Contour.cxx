@@ -84,7 +84,9 @@ bool CheckRepairVerdicts(const ContourScene& scene, Run& run)
     if (!input.Repair->Closed())
     {
       return run.Refuse(input.Name + " is not a closed surface (" + problems +
-        "), so it has no inside. Close it first (for example with vtkFillHolesFilter) or pass only closed solids.");
+        "), so it has no inside. Turn on FillHoles (Fill Holes, an advanced property in ParaView) to close its "
+        "holes; if it is open only because its points do not quite meet (as in many STL files), merge them first "
+        "(ParaView's Clean filter with a small Tolerance).");
     }
     if (!input.Repair->MeetsAssumptions())
     {
@@ -92,8 +94,11 @@ bool CheckRepairVerdicts(const ContourScene& scene, Run& run)
       run.Warn(input.Name + " violates the method's assumptions (" + problems +
         "); the surface is computed but TopologyGuaranteed will be 0.");
     }
-    else if (!problems.empty())
+    else if (input.Repair->Repaired())
     {
+      // (Exactly coincident vertices are merged silently: a closed mesh with
+      // one copy of each corner per face, as ParaView's Box source makes it,
+      // needs no repair.)
       run.Warn(input.Name + " was repaired: " + problems + ".");
     }
   }
@@ -142,6 +147,67 @@ bool CheckCoincidentFaces(const ContourScene& scene, const ParallelFor& parallel
     }
   }
   return true;
+}
+
+/// The Id of the input each primitive belongs to (SceneInput::Id), by
+/// primitive kind and index; primitives added later (the planes of Bounds)
+/// belong to none.
+struct PrimitiveOwners
+{
+  std::vector<std::int32_t> Quadrics, Meshes;
+
+  explicit PrimitiveOwners(const ContourScene& scene)
+    : Quadrics(scene.Primitives.Quadrics.size(), -1)
+    , Meshes(scene.Primitives.Meshes.size(), -1)
+  {
+    for (std::size_t i = 0; i < scene.Inputs.size(); ++i)
+    {
+      const int id = scene.Inputs[i].Id >= 0 ? scene.Inputs[i].Id : static_cast<int>(i);
+      this->Claim(scene.Inputs[i].Solid, id);
+    }
+  }
+  std::int32_t Of(const CsgLeaf& leaf) const
+  {
+    const auto& owners = leaf.Kind == PrimitiveKind::Mesh ? this->Meshes : this->Quadrics;
+    return leaf.Primitive < owners.size() ? owners[leaf.Primitive] : -1;
+  }
+
+private:
+  void Claim(const CsgTerm& term, std::int32_t id)
+  {
+    if (term.Operation == CsgTerm::Op::Primitive)
+    {
+      auto& owners = term.Kind == PrimitiveKind::Mesh ? this->Meshes : this->Quadrics;
+      owners[static_cast<std::size_t>(term.PrimitiveIndex)] = id;
+    }
+    for (const CsgTerm& operand : term.Operands)
+    {
+      this->Claim(operand, id);
+    }
+  }
+};
+
+/// The input each triangle lies on: the leaf of its cell's expression that
+/// decides the field at the triangle's centroid (the only leaf in most cells).
+ReleasableArray<std::int32_t> TriangleSolids(const AdaptiveOctree& octree, const TriangleMesh& mesh,
+  const PrimitiveSet& primitives, const PrimitiveOwners& owners, const ParallelFor& parallelFor)
+{
+  ReleasableArray<std::int32_t> solids;
+  solids.resize(mesh.Triangles.size());
+  parallelFor(mesh.Triangles.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t)
+    {
+      const CsgExpression& e = *octree.Expressions[mesh.TriangleCell[t]];
+      int leaf = static_cast<int>(e.Root());
+      if (e.NodeAt(e.Root()).NodeKind != CsgExpression::Node::Kind::Leaf)
+      {
+        const Triangle& tri = mesh.Triangles[t];
+        e.Value((mesh.Points[tri[0]] + mesh.Points[tri[1]] + mesh.Points[tri[2]]) * (1.0 / 3.0), primitives, &leaf);
+      }
+      solids[t] = owners.Of(e.NodeAt(static_cast<std::size_t>(leaf)).LeafData);
+    }
+  });
+  return solids;
 }
 
 CsgTerm FoldInputs(const ContourScene& scene)
@@ -517,6 +583,7 @@ ContourResult Contour(ContourScene scene, const ContourParameters& parameters, c
   }
   // A margin of 5 % keeps the surface away from the grid's outer boundary;
   // clipped solids are capped inside the Bounds instead.
+  const PrimitiveOwners owners(scene);
   const Box3 rootDomain =
     parameters.Bounds ? ClipToBounds(solid, scene.Primitives, *domain) : domain->Grown(0.05);
   ImplicitScene implicitScene{ std::move(scene.Primitives), CsgExpression::FromTerm(solid) };
@@ -530,6 +597,8 @@ ContourResult Contour(ContourScene scene, const ContourParameters& parameters, c
   {
     return result;
   }
+  result.TriangleSolid = TriangleSolids(
+    result.Placed.Result.Octree, result.Extraction.Mesh, implicitScene.Primitives, owners, parallelFor);
   result.Topology =
     ComputeTopologyReport(result.Extraction.Mesh, parallelFor, run.Stage(EmbeddingEnd, 1.0));
   if (run.Aborted())

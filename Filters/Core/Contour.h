@@ -37,6 +37,9 @@ namespace tpc
 struct SceneInput
 {
   std::string Name; ///< how messages call it ("Input 2", "The ImplicitFunction")
+  /// What the output's triangles on this solid's surface carry as their
+  /// solid (ContourResult::TriangleSolid); -1: the input's index in Inputs.
+  int Id = -1;
   CsgTerm Solid;
   /// For an input mesh: its index in the scene's Primitives.Meshes.
   int Mesh = -1;
@@ -139,6 +142,10 @@ struct ContourResult
   EmbeddingReport Embedding;        ///< of this piece
   TopologyReport Topology;          ///< of the whole surface (all pieces)
   ContourReport Report;
+  /// Per triangle of the surface: the Id of the input solid whose surface it
+  /// lies on (where the field at its centroid is decided), -1 on a cap of
+  /// Bounds.
+  ReleasableArray<std::int32_t> TriangleSolid;
 
   /// The octree and the statistics of the subdivision that was kept.
   const SubdivisionResult& Subdivision() const { return this->Placed.Result; }

@@ -1,13 +1,15 @@
-"""Categorical colour maps for the adaptive grid (output port 0), in pvpython.
+"""Categorical colour maps for the adaptive grid (output port 1), in pvpython.
 
     from topologypreserving.colors import ColorByCategories
-    grid = Show(OutputPort(contour, 0)); grid.SetRepresentationType("Surface")
+    grid = Show(OutputPort(contour, 1)); grid.SetRepresentationType("Surface")
     ColorByCategories(grid, "SizeReason", view)  # or "CellState", "FailedTest"
 
 Each value gets its own colour and its name in the colour legend ("complex
 edge", "not star-shaped w.r.t. a face", ...). The colours and names are the
-presets of TopologyPreservingColorMaps.json, which a ParaView GUI user imports
-once (Choose Preset > Import) to pick "TPC Split Reason" / "TPC Cell State".
+presets of TopologyPreservingColorMaps.json, which the ParaView plugin
+registers when it loads in the GUI (there they are the default colour maps of
+these arrays); pvpython and pvbatch run no GUI component, so scripts apply
+them with this module.
 """
 import json
 import os

@@ -299,8 +299,8 @@ RunResult RunFilter(const tpcbench::Scene& scene, double epsilon, int maximumDep
     r.AbortLatency = std::chrono::duration<double>(end - watch.AbortRequested).count();
     return r;
   }
-  auto* surface = vtkPolyData::SafeDownCast(filter->GetOutputDataObject(1));
-  auto* grid = vtkHyperTreeGrid::SafeDownCast(filter->GetOutputDataObject(0));
+  auto* surface = vtkPolyData::SafeDownCast(filter->GetOutputDataObject(0));
+  auto* grid = vtkHyperTreeGrid::SafeDownCast(filter->GetOutputDataObject(1));
   r.Triangles = surface->GetNumberOfPolys();
   r.GridCells = grid->GetNumberOfCells();
   r.Topology = tpc::ComputeTopologyReport(Triangulated(surface));

@@ -75,8 +75,8 @@ inline FilterResult Run(vtkTopologyPreservingContour* filter)
 {
   filter->Update();
   FilterResult r;
-  r.Surface = vtkPolyData::SafeDownCast(filter->GetOutputDataObject(1));
-  r.Grid = vtkHyperTreeGrid::SafeDownCast(filter->GetOutputDataObject(0));
+  r.Surface = vtkPolyData::SafeDownCast(filter->GetOutputDataObject(0));
+  r.Grid = vtkHyperTreeGrid::SafeDownCast(filter->GetOutputDataObject(1));
   r.Components = static_cast<int>(FieldValue(r.Surface, "Components"));
   r.Genus = static_cast<int>(FieldValue(r.Surface, "Genus"));
   r.Euler = static_cast<int>(FieldValue(r.Surface, "EulerCharacteristic"));

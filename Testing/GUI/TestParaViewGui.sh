@@ -6,6 +6,11 @@ set -uo pipefail
 paraview=$1 plugin=$2 baseline=$3 work=$4
 mkdir -p "$work"
 rm -f "$work/result.txt"
+# (HOME: the presets the plugin registers are saved with ParaView's user
+# settings; the test keeps its own, fresh each run.)
+rm -rf "$work/home"
+mkdir -p "$work/home"
+export HOME="$work/home"
 export TPC_PLUGIN="$plugin" TPC_BASELINE="$baseline" TPC_RESULT="$work/result.txt" TPC_SHOT="$work/screenshot.png"
 timeout 300 bash "$(dirname "$0")/../xvfb-run-retry.sh" -a -n 150 -s "-screen 0 1280x1024x24" "$paraview" --dr \
   --script="$(dirname "$0")/TestParaViewGui.py" --exit > "$work/paraview.log" 2>&1

@@ -22,7 +22,7 @@ PV_PLUGIN_PATH="$prefix/lib/$plugins/TopologyPreservingContour" "$pvpython" -c "
 from paraview.simple import TopologyPreservingContour
 f = TopologyPreservingContour(ImplicitFunction='Sphere')
 f.UpdatePipeline()
-genus = f.GetDataInformation(1).DataInformation.GetFieldDataInformation().GetArrayInformation('Genus').GetComponentRange(0)[0]
+genus = f.GetDataInformation(0).DataInformation.GetFieldDataInformation().GetArrayInformation('Genus').GetComponentRange(0)[0]
 assert genus == 0, genus
 print('installed plugin: loaded from PV_PLUGIN_PATH, sphere of genus', int(genus))
 "

@@ -30,7 +30,7 @@ contour.ImplicitFunction.Radius = 0.2
 contour.Tolerance = 0.02
 contour.UpdatePipeline()
 
-surface = servermanager.Fetch(contour, idx=1)  # the ranks' pieces, appended
+surface = servermanager.Fetch(contour)  # the ranks' pieces, appended
 weld = vtkCleanPolyData()
 weld.SetInputData(surface)
 weld.SetTolerance(0.0)
@@ -65,8 +65,8 @@ check((single["components"], single["genus"], single["euler"]) == (m["components
 
 view = CreateRenderView()
 view.ViewSize = [400, 300]
-Show(OutputPort(contour, 0), view).SetRepresentationType("Outline")
-Show(OutputPort(contour, 1), view)
+Show(OutputPort(contour, 1), view).SetRepresentationType("Outline")
+Show(OutputPort(contour, 0), view)
 Render(view)
 picture = os.path.join(work, "two-ranks.png")
 SaveScreenshot(picture, view)

@@ -1,6 +1,8 @@
-"""tpcontour, the command-line program: every input format, a mesh Boolean,
-the outputs it writes, the JSON report, and the exit codes and messages on
-bad input.
+"""tpcontour, the command-line program: every input format (and OBJ files
+that crash VTK 9.2's reader), a mesh Boolean asked for explicitly, batches of
+files (one surface each, a table, the worst exit status), the outputs it
+writes, the JSON report, fractions as tolerances, and the exit codes and
+messages on bad input.
 
 Usage: pvpython TestCommandLine.py <tpcontour> <folder with data/meshes> <work folder>
 """
@@ -12,7 +14,7 @@ import sys
 from vtkmodules.vtkCommonTransforms import vtkTransform
 from vtkmodules.vtkFiltersCore import vtkAppendPolyData, vtkCleanPolyData
 from vtkmodules.vtkFiltersGeneral import vtkTransformPolyDataFilter
-from vtkmodules.vtkFiltersSources import vtkSphereSource
+from vtkmodules.vtkFiltersSources import vtkCubeSource, vtkSphereSource
 from vtkmodules.vtkIOGeometry import vtkOBJWriter, vtkSTLReader, vtkSTLWriter
 from vtkmodules.vtkIOPLY import vtkPLYWriter
 from vtkmodules.vtkIOXML import (vtkXMLHyperTreeGridReader, vtkXMLPolyDataReader,
@@ -70,9 +72,10 @@ def write(writer, mesh, name):
 
 # --help documents every option and the exit codes.
 code, out, _ = run("--help")
-check(code == 0 and all(o in out for o in ("--output", "--grid", "--operation", "--tolerance",
-                                           "--absolute-tolerance", "--max-depth", "--json",
-                                           "Exit status")), "--help documents the options")
+check(code == 0 and all(o in out for o in ("--output", "--grid", "--operation", "--batch", "--output-dir",
+                                           "--format", "--grids", "--tolerance", "--absolute-tolerance",
+                                           "--max-depth", "--json", "1/64", "Exit status", "worst")),
+      "--help documents the options")
 
 # Every input format gives knot1's topology (genus 1), guaranteed.
 knot = read_off("knot1.off")
@@ -117,6 +120,13 @@ htg.SetFileName("difference.htg")
 htg.Update()
 check(htg.GetOutput().GetNumberOfCells() == report.get("grid_cells") and report.get("grid_cells", 0) > 0,
       "grid written")
+
+# A tolerance as a fraction is the same run as its decimal value.
+code, out, _ = run(inputs["vtp"], "-t", "1/32", "--json", "-o", "fraction.vtp")
+fraction = json.loads(out) if code == 0 else {}
+decimal = json.loads(run(inputs["vtp"], "-t", "0.03125", "--json", "-o", "decimal.vtp")[1])
+check(code == 0 and fraction.get("absolute_tolerance") == decimal["absolute_tolerance"]
+      and fraction.get("triangles") == decimal["triangles"], "-t 1/32 is -t 0.03125")
 
 # Absolute tolerance and the text report.
 code, out, _ = run(inputs["vtp"], "--absolute-tolerance", "0.05", "-o", "abs.vtp")
@@ -191,6 +201,86 @@ for args, message in ((["missing.stl"], "no such file"),
                       ([], "no input file")):
     code, _, err = run(*args)
     check(code == 1 and message in err, f"{' '.join(args) or '(no arguments)'}: exit 1, says '{message}'")
+
+# --fill-holes (the filter's FillHoles) closes the open sphere and says so.
+code, out, err = run("open.stl", "--fill-holes", "-t", "1/32", "--json", "-o", "filled.vtp")
+report = json.loads(out) if code == 0 else {}
+check(code == 0 and report.get("components") == 1 and report.get("genus") == 0 and "holes filled" in err,
+      f"--fill-holes: the open sphere closed, genus 0, the repair reported ({code}, {err.strip()[:200]})")
+
+# Several inputs are combined only when asked: without --operation or --batch, exit 1.
+code, _, err = run("knot1.vtp", "knot1.stl")
+check(code == 1 and "--operation" in err and "--batch" in err,
+      f"two inputs without --operation or --batch: exit 1, names both ({err.strip()[:200]})")
+for args, message in ((["--batch", "knot1.vtp", "-o", "x.vtp"], "--batch writes one surface per input"),
+                      (["--batch", "knot1.vtp", "knot1.stl", "--operation", "union"], "--batch writes one"),
+                      (["knot1.vtp", "--grids"], "belong to --batch"),
+                      (["--batch", "knot1.vtp", "--format", "obj"], "--format must be vtp or stl"),
+                      (["knot1.vtp", "-t", "1/0"], "positive number or fraction"),
+                      (["knot1.vtp", "-t", "1/"], "positive number or fraction"),
+                      ([work], "is a folder: --batch")):
+    code, _, err = run(*args)
+    check(code == 1 and message in err, f"{' '.join(args)}: exit 1, says '{message}' ({err.strip()[:200]})")
+
+# VTK's own vtkOBJWriter writes a cube's texture coordinates with face
+# indices past the last "vt" line; VTK 9.2's OBJ reader then corrupts the
+# heap (exit 134). tpcontour reads the geometry: the cube, guaranteed.
+cube_source = vtkCubeSource()
+cube_source.Update()
+write(vtkOBJWriter(), cube_source.GetOutput(), "textured-cube.obj")
+with open("textured-cube.obj") as f:
+    lines = f.read().splitlines()
+texture_lines = sum(1 for line in lines if line.startswith("vt "))
+texture_refs = [int(corner.split("/")[1]) for line in lines if line.startswith("f ") for corner in line.split()[1:]]
+check(max(texture_refs) > texture_lines,
+      f"the cube's OBJ names texture coordinate {max(texture_refs)} of {texture_lines} (the case that crashed)")
+code, out, err = run("textured-cube.obj", "-t", "1/16", "--json", "-o", "textured-cube.vtp")
+report = json.loads(out) if code == 0 else {}
+check(code == 0 and report.get("components") == 1 and report.get("genus") == 0 and report.get("guaranteed"),
+      f"vtkOBJWriter's textured cube: read, one component, genus 0, guaranteed ({code}, {err.strip()[:200]})")
+with open("bad-reference.obj", "w") as f:
+    f.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\nf 1/1 3/1 9/1\nf 2 3 4\n")
+code, _, err = run("bad-reference.obj")
+check(code == 1 and "line 7" in err and "vertex 9" in err,
+      f"an OBJ face naming a missing vertex: exit 1, names the line ({err.strip()[:200]})")
+
+# --batch: one surface per input (a folder stands for its meshes), a table,
+# the worst exit status; a file that fails does not stop the batch.
+os.makedirs("batch", exist_ok=True)
+for name in ("knot1.off", "textured-cube.obj", "crossing.stl", "open.stl"):
+    src = inputs["off"] if name == "knot1.off" else name
+    with open(src, "rb") as f_in, open(os.path.join("batch", name), "wb") as f_out:
+        f_out.write(f_in.read())
+code, out, err = run("--batch", "batch", "-t", "1/32", "--output-dir", "batch-out", "--grids", "--format", "stl")
+rows = {line.split()[0]: line.split() for line in out.splitlines() if line.startswith("batch/")}
+check(code == 1 and sorted(rows) == sorted(f"batch/{n}" for n in ("knot1.off", "textured-cube.obj",
+                                                                  "crossing.stl", "open.stl")),
+      f"a batch of a folder: exit 1 (one input failed), one row per file ({code}, {out.strip()[-300:]})")
+check([rows.get(f"batch/{n}", [None, None])[1] for n in ("knot1.off", "textured-cube.obj", "crossing.stl",
+                                                          "open.stl")] == ["0", "0", "2", "1"],
+      "the table gives each input its own exit status")
+check(rows.get("batch/knot1.off", [""] * 6)[3:6] == ["1", "1", "yes"],
+      "the table gives knot1 one component, genus 1, guaranteed")
+check("4 inputs: 2 guaranteed, 1 without the guarantee, 1 failed; exit status 1" in out,
+      "the table's summary counts each outcome")
+check("not a closed surface" in err, "the failed input's message goes to standard error")
+check(all(os.path.exists(os.path.join("batch-out", f"{stem}-tpc.{ext}"))
+          for stem in ("knot1", "textured-cube", "crossing") for ext in ("stl", "htg"))
+      and not os.path.exists(os.path.join("batch-out", "open-tpc.stl")),
+      "each readable input's surface and grid written to --output-dir")
+code, out, _ = run("--batch", "--json", "-q", "batch/knot1.off", "batch/crossing.stl", "-t", "1/32",
+                   "--output-dir", "batch-json")
+reports = json.loads(out) if out.strip().startswith("[") else []
+check(code == 2 and [r.get("exit_status") for r in reports] == [0, 2] and reports[0].get("genus") == 1
+      and reports[0].get("surface") == os.path.join("batch-json", "knot1-tpc.vtp"),
+      f"a batch without failures but one unguaranteed: exit 2, JSON array of reports ({code})")
+code, out, _ = run("--batch", "-q", "batch/knot1.off", "-t", "1/32", "--output-dir", "batch-good")
+check(code == 0 and "1 input: 1 guaranteed" in out, "a batch of guaranteed inputs: exit 0")
+os.makedirs("other", exist_ok=True)
+write(vtkSTLWriter(), knot, os.path.join("other", "knot1.stl"))
+code, _, err = run("--batch", "batch/knot1.off", "other/knot1.stl")
+check(code == 1 and "both be written to knot1-tpc.vtp" in err,
+      f"a batch whose inputs share a name: exit 1 before any run ({err.strip()[:200]})")
 
 if failures:
     sys.exit(f"{len(failures)} check(s) failed")

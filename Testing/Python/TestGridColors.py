@@ -35,7 +35,7 @@ contour.ImplicitFunction.Axis = [0, 0, 1]
 contour.Operation = "Difference"
 contour.Tolerance = 0.03
 contour.UpdatePipeline()
-grid = servermanager.Fetch(contour, idx=0)
+grid = servermanager.Fetch(contour, idx=1)
 
 
 def names(array_name):
@@ -57,7 +57,7 @@ for array, preset in (("SplitReasonNames", "TPC Split Reason"), ("CellStateNames
           f"'{preset}' has one colour per annotation", failures)
 
 view = CreateRenderView()
-display = Show(OutputPort(contour, 0), view)
+display = Show(OutputPort(contour, 1), view)
 display.SetRepresentationType("Surface")
 for array in ("SplitReason", "SizeReason", "CellState", "FailedTest"):
     lut = ColorByCategories(display, array, view)
@@ -73,9 +73,9 @@ check(reasons[1] > reasons[0], f"the grid's cells are as small as they are for s
 
 # A picture for the README: the grid sliced through the axis of the hole,
 # coloured by SizeReason: why each cell is as small as it is.
-Hide(OutputPort(contour, 0), view)
+Hide(OutputPort(contour, 1), view)
 HideUnusedScalarBars(view)
-cut = Slice(Input=OutputPort(contour, 0))
+cut = Slice(Input=OutputPort(contour, 1))
 cut.HyperTreeGridSlicer.Normal = [0, 1, 0]  # (SliceType is for other data)
 cut.HyperTreeGridSlicer.Origin = [0, 0.001, 0]
 cut.UpdatePipeline()

@@ -1,4 +1,6 @@
-"""The ParaView plugin: load it in pvpython, run the proxy, compare with the wrapped class.
+"""The ParaView plugin: load it in pvpython, run the proxy, compare with the wrapped class;
+paraview.simple's functions that take a proxy's first port get the surface; the default
+implicit functions cut a round part generically; SolidId and the input order.
 
 Usage: pvpython TestPlugin.py <plugin .so> <build>/lib/python3/site-packages
 """
@@ -9,7 +11,7 @@ sys.path.insert(0, sys.argv[2])
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 from paraview import servermanager  # noqa: E402
-from paraview.simple import LoadPlugin  # noqa: E402
+from paraview.simple import Clean, Cylinder, LoadPlugin, SaveData, Sphere  # noqa: E402
 from TopologyChecks import check, field, measure  # noqa: E402
 
 failures = []
@@ -21,13 +23,13 @@ proxy.ImplicitFunction.Radius = 0.5
 proxy.Tolerance = 0.02
 proxy.UpdatePipeline()
 
-check(proxy.GetDataInformation(0).GetDataSetTypeAsString() == "vtkHyperTreeGrid",
-      "output port 0 is the adaptive grid", failures)
-check(proxy.GetDataInformation(1).GetDataSetTypeAsString() == "vtkPolyData",
-      "output port 1 is the surface", failures)
-check(proxy.GetDataInformation(1).GetNumberOfCells() > 0, "surface has triangles", failures)
+check(proxy.GetDataInformation(0).GetDataSetTypeAsString() == "vtkPolyData",
+      "output port 0 is the surface", failures)
+check(proxy.GetDataInformation(1).GetDataSetTypeAsString() == "vtkHyperTreeGrid",
+      "output port 1 is the adaptive grid", failures)
+check(proxy.GetDataInformation(0).GetNumberOfCells() > 0, "surface has triangles", failures)
 
-surface = servermanager.Fetch(proxy, idx=1)
+surface = servermanager.Fetch(proxy)
 m = measure(surface)
 check(field(surface, "TopologyGuaranteed") == 1, "guarantee holds", failures)
 check(field(surface, "Components") == 1 and m["components"] == 1, "one component", failures)
@@ -45,7 +47,7 @@ f = vtkTopologyPreservingContour()
 f.SetImplicitFunction(sphere)
 f.SetTolerance(0.02)
 f.Update()
-direct = f.GetOutputDataObject(1)
+direct = f.GetOutputDataObject(0)
 check(direct.GetNumberOfPolys() == surface.GetNumberOfPolys()
       and direct.GetNumberOfPoints() == surface.GetNumberOfPoints(),
       "plugin and wrapped class give the same surface", failures)
@@ -61,7 +63,7 @@ for name, setup, genus in (("Plane", lambda fn: setattr(fn, "Offset", 0.3), 0),
     widget.Bounds = [-1, 1, -1, 1, -1, 1]
     widget.Tolerance = 0.02
     widget.UpdatePipeline()
-    out = servermanager.Fetch(widget, idx=1)
+    out = servermanager.Fetch(widget)
     m = measure(out)
     check(field(out, "TopologyGuaranteed") == 1 and m["genus"] == genus and m["components"] == 1
           and m["boundary"] == 0, f"ParaView's {name} widget function", failures)
@@ -70,6 +72,64 @@ for name, setup, genus in (("Plane", lambda fn: setattr(fn, "Offset", 0.3), 0),
         expected = fn.Origin[0] + fn.Offset * fn.Normal[0]
         check(list(fn.Normal) == [1, 0, 0] and abs(out.GetBounds()[1] - expected) < 1e-6,
               f"the plane's Offset is honoured ({out.GetBounds()[1]} vs {expected})", failures)
+
+# Issue 18: the surface is port 0, so what paraview.simple does with a proxy's
+# first port - SaveData, Fetch, a filter's Input - takes the surface.
+work = os.environ.get("TPC_WORK", os.getcwd())
+stl = os.path.join(work, "plugin-surface.stl")
+SaveData(stl, proxy=proxy)
+from vtkmodules.vtkIOGeometry import vtkSTLReader  # noqa: E402
+reader = vtkSTLReader()
+reader.SetFileName(stl)
+reader.Update()
+check(reader.GetOutput().GetNumberOfPolys() == surface.GetNumberOfPolys(),
+      f"SaveData(stl, proxy=...) writes the surface ({reader.GetOutput().GetNumberOfPolys()} triangles)", failures)
+cleaned = Clean(Input=proxy)
+cleaned.UpdatePipeline()
+check(cleaned.GetDataInformation().GetDataSetTypeAsString() == "vtkPolyData"
+      and cleaned.GetDataInformation().GetNumberOfCells() == surface.GetNumberOfPolys(),
+      "Clean(Input=tpc) cleans the surface", failures)
+
+# The default implicit functions, subtracted from a round capped part whose
+# wall ParaView's own default cylinder touches: a generic cut, guaranteed.
+part = Cylinder(Radius=0.5, Height=1.0, Resolution=64, Capping=1)
+for name in ("Sphere", "Box", "Cylinder", "Plane"):
+    cut = TopologyPreservingContour(Input=part, ImplicitFunction=name, Operation="Difference")  # noqa: F821
+    cut.Tolerance = 0.02
+    cut.UpdatePipeline()
+    out = servermanager.Fetch(cut)
+    m = measure(out)
+    check(field(out, "TopologyGuaranteed") == 1 and field(out, "UnresolvedCells") == 0
+          and m["boundary"] == 0 and m["nonmanifold"] == 0,
+          f"the default {name} cuts a round part generically (guaranteed {field(out, 'TopologyGuaranteed')}, "
+          f"{field(out, 'UnresolvedCells')} unresolved)", failures)
+
+# SolidId: the part is connection 0, the ball connection 1; reversed, the
+# ball comes first: part - ball and ball - part have different volumes.
+ball = Sphere(Radius=0.3, Center=[0.35, 0, 0], ThetaResolution=32, PhiResolution=24)
+pair = TopologyPreservingContour(Input=[part, ball], Operation="Difference")  # noqa: F821
+pair.Tolerance = 0.02
+pair.UpdatePipeline()
+forward = servermanager.Fetch(pair)
+ids = forward.GetCellData().GetArray("SolidId")
+check(ids is not None and sorted(set(ids.GetValue(i) for i in range(ids.GetNumberOfTuples()))) == [0, 1],
+      "SolidId names the part (0) and the ball (1)", failures)
+pair.ReverseInputOrder = 1
+pair.UpdatePipeline()
+reverse = servermanager.Fetch(pair)
+
+
+def volume(mesh):
+    from vtkmodules.vtkFiltersCore import vtkMassProperties
+    mass = vtkMassProperties()
+    mass.SetInputData(mesh)
+    mass.Update()
+    return mass.GetVolume()
+
+
+check(volume(reverse) < 0.5 * volume(forward),
+      f"ReverseInputOrder: ball - part is the smaller solid ({volume(reverse):.3f} vs {volume(forward):.3f})",
+      failures)
 
 print("plugin:", "OK" if not failures else failures)
 sys.exit(1 if failures else 0)

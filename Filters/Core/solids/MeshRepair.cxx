@@ -342,6 +342,10 @@ MeshRepairReport RepairMesh(std::vector<Vec3>& points, std::vector<Triangle>& tr
 std::string MeshRepairReport::Describe() const
 {
   std::ostringstream s;
+  if (FilledHoleTriangles)
+  {
+    s << "holes filled with " << FilledHoleTriangles << " triangles; ";
+  }
   if (MergedVertices)
   {
     s << MergedVertices << " duplicate vertices merged; ";

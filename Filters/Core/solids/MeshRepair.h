@@ -39,6 +39,9 @@ struct MeshRepairReport
   bool SelfIntersectionsChecked = false;
   long long EulerCharacteristic = 0;
   long long Genus = -1;                 ///< of the closed manifold input, else -1
+  /// Triangles the caller added to close holes before the repair (the VTK
+  /// filter's FillHoles).
+  std::size_t FilledHoleTriangles = 0;
 
   /// Closed (no boundary), every edge manifold and orientable: a solid.
   bool Closed() const { return BoundaryEdges == 0 && Orientable; }
@@ -46,6 +49,13 @@ struct MeshRepairReport
   bool MeetsAssumptions() const
   {
     return Closed() && NonManifoldEdges == 0 && SelfIntersectionsChecked && SelfIntersections == 0;
+  }
+  /// Anything repaired beyond merging exactly coincident vertices (which is
+  /// how many formats store a closed mesh: one copy of a corner per face).
+  bool Repaired() const
+  {
+    return DegenerateTriangles > 0 || DuplicateTriangles > 0 || InconsistentEdges > 0 || FlippedComponents > 0 ||
+      FilledHoleTriangles > 0;
   }
   /// One line per problem found, empty if none.
   std::string Describe() const;
