@@ -1,5 +1,7 @@
 #include "PolyDataToMesh.h"
 
+#include "PolygonTriangulation.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCleanPolyData.h"
@@ -7,7 +9,6 @@
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkTriangleFilter.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,13 +20,93 @@ namespace vtkadapter
 
 namespace
 {
-/// `surface` with its holes closed: exactly coincident points merged (so
-/// that triangles of a soup share edges), every boundary loop filled by a
-/// polygon. The number of triangles this adds goes to `filled`.
-vtkSmartPointer<vtkPolyData> FilledHoles(vtkPolyData* surface, std::size_t& filled)
+/// The input's points, or false (with `error` set) at a non-finite one.
+bool ReadPoints(vtkPoints* input, std::vector<Vec3>& points, std::string& error)
 {
+  const vtkIdType n = input ? input->GetNumberOfPoints() : 0;
+  points.resize(static_cast<std::size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3];
+    input->GetPoint(i, p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      error = "point " + std::to_string(i) + " has a non-finite coordinate";
+      return false;
+    }
+    points[static_cast<std::size_t>(i)] = { p[0], p[1], p[2] };
+  }
+  return true;
+}
+
+/// Polygons as triangles, exactly (PolygonTriangulation.h: no polygon loses
+/// a triangle, as vtkTriangleFilter's tolerance-based triangulation did on
+/// nearly planar non-convex faces); the polygons that had to be fanned are
+/// counted in `fanned`.
+void AppendPolygons(vtkCellArray* polys, const std::vector<Vec3>& points, std::vector<Triangle>& faces,
+  std::size_t& fanned)
+{
+  std::vector<std::uint32_t> corners;
+  auto it = vtk::TakeSmartPointer(polys->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    if (n < 3)
+    {
+      continue;
+    }
+    corners.assign(ids, ids + n);
+    if (TriangulatePolygon(points, corners.data(), corners.size(), faces) == PolygonTriangulation::Fan)
+    {
+      ++fanned;
+    }
+  }
+}
+
+/// Triangle strips as triangles, each oriented as the strip's first
+/// (vtkTriangleStrip's convention: every other triangle is turned).
+void AppendStrips(vtkCellArray* strips, std::vector<Triangle>& faces)
+{
+  auto it = vtk::TakeSmartPointer(strips->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    for (vtkIdType i = 0; i + 2 < n; ++i)
+    {
+      const auto a = static_cast<std::uint32_t>(ids[i + (i % 2)]);
+      const auto b = static_cast<std::uint32_t>(ids[i + 1 - (i % 2)]);
+      faces.push_back({ a, b, static_cast<std::uint32_t>(ids[i + 2]) });
+    }
+  }
+}
+
+/// The mesh with its holes closed: exactly coincident points merged (so
+/// that triangles of a soup share edges), every boundary loop filled by a
+/// polygon (vtkFillHolesFilter), triangulated as the input's polygons are.
+/// The triangles this adds go to `filled`.
+void FillHoles(std::vector<Vec3>& points, std::vector<Triangle>& faces, std::size_t& filled, std::size_t& fanned)
+{
+  vtkNew<vtkPoints> inputPoints;
+  inputPoints->SetDataTypeToDouble();
+  for (const Vec3& p : points)
+  {
+    inputPoints->InsertNextPoint(p[0], p[1], p[2]);
+  }
+  vtkNew<vtkCellArray> triangles;
+  for (const Triangle& t : faces)
+  {
+    const vtkIdType ids[3] = { t[0], t[1], t[2] };
+    triangles->InsertNextCell(3, ids);
+  }
+  vtkNew<vtkPolyData> mesh;
+  mesh->SetPoints(inputPoints);
+  mesh->SetPolys(triangles);
   vtkNew<vtkCleanPolyData> merge;
-  merge->SetInputData(surface);
+  merge->SetInputData(mesh);
   merge->SetTolerance(0.0);
   merge->ConvertLinesToPointsOff();
   merge->ConvertPolysToLinesOff();
@@ -33,13 +114,13 @@ vtkSmartPointer<vtkPolyData> FilledHoles(vtkPolyData* surface, std::size_t& fill
   vtkNew<vtkFillHolesFilter> fill;
   fill->SetInputConnection(merge->GetOutputPort());
   fill->SetHoleSize(VTK_DOUBLE_MAX); // (every hole, however large)
-  vtkNew<vtkTriangleFilter> triangulate;
-  triangulate->SetInputConnection(fill->GetOutputPort());
-  triangulate->Update();
-  // (The merge keeps triangles triangles: its conversions are off.)
-  const vtkIdType added = triangulate->GetOutput()->GetNumberOfPolys() - merge->GetOutput()->GetNumberOfPolys();
-  filled = static_cast<std::size_t>(std::max<vtkIdType>(0, added));
-  return triangulate->GetOutput();
+  fill->Update();
+  std::string unused; // (the points were finite already)
+  ReadPoints(fill->GetOutput()->GetPoints(), points, unused);
+  const std::size_t before = faces.size();
+  faces.clear();
+  AppendPolygons(fill->GetOutput()->GetPolys(), points, faces, fanned);
+  filled = faces.size() > before ? faces.size() - before : 0;
 }
 } // namespace
 
@@ -48,57 +129,33 @@ bool ConvertPolyData(vtkPolyData* input, MeshInput& mesh, std::string& error, bo
 {
   mesh.IgnoredLines = input->GetLines() ? static_cast<std::size_t>(input->GetLines()->GetNumberOfCells()) : 0;
   mesh.IgnoredVertices = input->GetVerts() ? static_cast<std::size_t>(input->GetVerts()->GetNumberOfCells()) : 0;
-
-  // Polygons and triangle strips become triangles.
-  vtkNew<vtkPolyData> surface;
-  surface->SetPoints(input->GetPoints());
-  surface->SetPolys(input->GetPolys());
-  surface->SetStrips(input->GetStrips());
-  vtkNew<vtkTriangleFilter> triangulate;
-  triangulate->SetInputData(surface);
-  triangulate->PassVertsOff();
-  triangulate->PassLinesOff();
-  triangulate->Update();
-  vtkSmartPointer<vtkPolyData> triangles = triangulate->GetOutput();
-  std::size_t filled = 0;
-  if (fillHoles && triangles->GetNumberOfPolys() > 0)
+  std::vector<Vec3> points;
+  if (!ReadPoints(input->GetPoints(), points, error))
   {
-    triangles = FilledHoles(triangles, filled);
+    return false;
   }
-  if (triangles->GetNumberOfPolys() == 0)
+  std::vector<Triangle> faces;
+  std::size_t fanned = 0, filled = 0;
+  if (input->GetPolys())
+  {
+    AppendPolygons(input->GetPolys(), points, faces, fanned);
+  }
+  if (input->GetStrips())
+  {
+    AppendStrips(input->GetStrips(), faces);
+  }
+  if (fillHoles && !faces.empty())
+  {
+    FillHoles(points, faces, filled, fanned);
+  }
+  if (faces.empty())
   {
     error = "it has no polygons or triangle strips";
     return false;
   }
-
-  std::vector<Vec3> points(static_cast<std::size_t>(triangles->GetNumberOfPoints()));
-  for (vtkIdType i = 0; i < triangles->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    triangles->GetPoint(i, p);
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-    {
-      error = "point " + std::to_string(i) + " has a non-finite coordinate";
-      return false;
-    }
-    points[static_cast<std::size_t>(i)] = { p[0], p[1], p[2] };
-  }
-  std::vector<std::array<std::uint32_t, 3>> faces;
-  faces.reserve(static_cast<std::size_t>(triangles->GetNumberOfPolys()));
-  auto it = vtk::TakeSmartPointer(triangles->GetPolys()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-  {
-    vtkIdType n;
-    const vtkIdType* ids;
-    it->GetCurrentCell(n, ids);
-    if (n == 3)
-    {
-      faces.push_back({ static_cast<std::uint32_t>(ids[0]), static_cast<std::uint32_t>(ids[1]),
-        static_cast<std::uint32_t>(ids[2]) });
-    }
-  }
   mesh.Repair = RepairMesh(points, faces, true, 100, parallelFor, progress);
   mesh.Repair.FilledHoleTriangles = filled;
+  mesh.Repair.FannedPolygons = fanned;
   mesh.Solid = MeshSolid(std::move(points), std::move(faces));
   return true;
 }

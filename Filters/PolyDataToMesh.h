@@ -1,5 +1,6 @@
 // Adapter: a vtkPolyData input -> a repaired closed triangle mesh for the
-// core (polygons and strips triangulated; lines and vertices ignored).
+// core (polygons triangulated exactly, strips split; lines and vertices
+// ignored).
 #ifndef PolyDataToMesh_h
 #define PolyDataToMesh_h
 

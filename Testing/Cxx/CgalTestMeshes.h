@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <iterator>
 #include <string>
 
@@ -38,6 +39,11 @@ inline const KnownMesh CgalMeshes[] = {
   // one cell on every lattice placement; that cell keeps the mesh itself
   // (an exact cell).
   { "pinion", 1, 1 },
+  // Polygon meshes with nearly planar non-convex faces: VTK's triangulation
+  // dropped triangles of some and they were refused as open; the exact
+  // polygon triangulation (PolygonTriangulation.h) keeps them closed.
+  { "mpi", 1, 1 },
+  { "double-torus-example", 1, 2 },
 };
 
 /// Starts a test that reads CGAL's meshes: without them (the data was not
@@ -47,6 +53,15 @@ inline const KnownMesh CgalMeshes[] = {
   {                                                                                                                 \
     GTEST_SKIP() << TPC_CGAL_DATA_MISSING;                                                                          \
   }
+
+/// The mesh's name as a test name (an identifier: "double-torus-example"
+/// becomes "double_torus_example").
+inline std::string TestName(const KnownMesh& m)
+{
+  std::string name = m.Name;
+  std::replace(name.begin(), name.end(), '-', '_');
+  return name;
+}
 
 inline vtkSmartPointer<vtkPolyData> ReadCgalMesh(const std::string& name)
 {

@@ -10,6 +10,7 @@
 
 #include "MeshRepair.h"
 #include "MeshSolid.h"
+#include "PolygonTriangulation.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -56,17 +57,15 @@ TEST_P(CgalMeshSigns, InsideTestAgreesWithWindingNumberAwayFromTheSurface)
     points.emplace_back(x[0], x[1], x[2]);
   }
   std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::vector<std::uint32_t> corners;
   auto cells = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
   for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
   {
     vtkIdType n;
     const vtkIdType* ids;
     cells->GetCurrentCell(n, ids);
-    for (vtkIdType k = 1; k + 1 < n; ++k) // fans for polygons
-    {
-      triangles.push_back({ static_cast<std::uint32_t>(ids[0]), static_cast<std::uint32_t>(ids[k]),
-        static_cast<std::uint32_t>(ids[k + 1]) });
-    }
+    corners.assign(ids, ids + n); // (polygons as the filter triangulates them)
+    tpc::TriangulatePolygon(points, corners.data(), corners.size(), triangles);
   }
   const tpc::MeshRepairReport repair = tpc::RepairMesh(points, triangles);
   ASSERT_TRUE(repair.Closed());
@@ -118,4 +117,4 @@ TEST_P(CgalMeshSigns, InsideTestAgreesWithWindingNumberAwayFromTheSurface)
 
 INSTANTIATE_TEST_SUITE_P(AllMeshes, CgalMeshSigns,
   testing::Range(0, static_cast<int>(std::size(tpctest::CgalMeshes))),
-  [](const testing::TestParamInfo<int>& info) { return std::string(tpctest::CgalMeshes[info.param].Name); });
+  [](const testing::TestParamInfo<int>& info) { return tpctest::TestName(tpctest::CgalMeshes[info.param]); });

@@ -346,6 +346,10 @@ std::string MeshRepairReport::Describe() const
   {
     s << "holes filled with " << FilledHoleTriangles << " triangles; ";
   }
+  if (FannedPolygons)
+  {
+    s << FannedPolygons << " polygons folded over themselves fanned from a corner; ";
+  }
   if (MergedVertices)
   {
     s << MergedVertices << " duplicate vertices merged; ";

@@ -42,6 +42,10 @@ struct MeshRepairReport
   /// Triangles the caller added to close holes before the repair (the VTK
   /// filter's FillHoles).
   std::size_t FilledHoleTriangles = 0;
+  /// Input polygons not simple in their plane, fanned from a corner by the
+  /// caller (PolygonTriangulation.h): the mesh stays closed, and the
+  /// self-intersection test judges the fan.
+  std::size_t FannedPolygons = 0;
 
   /// Closed (no boundary), every edge manifold and orientable: a solid.
   bool Closed() const { return BoundaryEdges == 0 && Orientable; }
@@ -55,7 +59,7 @@ struct MeshRepairReport
   bool Repaired() const
   {
     return DegenerateTriangles > 0 || DuplicateTriangles > 0 || InconsistentEdges > 0 || FlippedComponents > 0 ||
-      FilledHoleTriangles > 0;
+      FilledHoleTriangles > 0 || FannedPolygons > 0;
   }
   /// One line per problem found, empty if none.
   std::string Describe() const;
