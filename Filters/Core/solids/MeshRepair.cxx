@@ -5,6 +5,7 @@
 #include "MeshSolid.h"
 #include "SelfIntersection.h"
 #include "UnionFind.h"
+#include "VertexLinks.h"
 
 #include <algorithm>
 #include <numeric>
@@ -334,6 +335,10 @@ MeshRepairReport RepairMesh(std::vector<Vec3>& points, std::vector<Triangle>& tr
   r.EulerCharacteristic = vertices - edges + static_cast<long long>(triangles.size());
   if (r.Closed() && r.NonManifoldEdges == 0)
   {
+    CountNonManifoldVertices(triangles.data(), triangles.size(), points.size(), r.PinchedVertices);
+  }
+  if (r.Closed() && r.NonManifoldEdges == 0 && r.PinchedVertices == 0)
+  {
     r.Genus = GenusFromEuler(static_cast<std::int64_t>(r.Components), r.EulerCharacteristic);
   }
   return r;
@@ -377,6 +382,10 @@ std::string MeshRepairReport::Describe() const
   if (NonManifoldEdges)
   {
     s << NonManifoldEdges << " non-manifold edges; ";
+  }
+  if (PinchedVertices)
+  {
+    s << PinchedVertices << " vertices where the surface touches itself; ";
   }
   if (!Orientable)
   {

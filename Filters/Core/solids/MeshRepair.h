@@ -31,6 +31,10 @@ struct MeshRepairReport
   std::size_t DuplicateTriangles = 0;   ///< dropped: same three vertices
   std::size_t BoundaryEdges = 0;        ///< edges with one triangle (open mesh)
   std::size_t NonManifoldEdges = 0;     ///< edges with more than two triangles
+  /// Vertices where the surface touches itself: two or more fans of
+  /// triangles meeting only there (VertexLinks.h; counted when every edge has
+  /// two triangles).
+  std::int64_t PinchedVertices = 0;
   std::size_t InconsistentEdges = 0;    ///< edges two triangles walk the same way (before repair)
   std::size_t Components = 0;
   std::size_t FlippedComponents = 0;    ///< reoriented to face outward
@@ -52,7 +56,8 @@ struct MeshRepairReport
   /// The paper's assumptions: closed, manifold, no self-intersections.
   bool MeetsAssumptions() const
   {
-    return Closed() && NonManifoldEdges == 0 && SelfIntersectionsChecked && SelfIntersections == 0;
+    return Closed() && NonManifoldEdges == 0 && PinchedVertices == 0 && SelfIntersectionsChecked &&
+      SelfIntersections == 0;
   }
   /// Anything repaired beyond merging exactly coincident vertices (which is
   /// how many formats store a closed mesh: one copy of a corner per face).

@@ -2,6 +2,7 @@
 
 #include "MeshEdges.h"
 #include "UnionFind.h"
+#include "VertexLinks.h"
 
 #include <algorithm>
 #include <numeric>
@@ -64,82 +65,6 @@ bool CountEdges(const std::vector<EdgeUse>& uses, TopologyReport& r)
   return oriented;
 }
 
-/// Whether the triangles around vertex `v` (listed in `fan`) form one closed
-/// cycle: their link edges (the opposite vertex pairs) join m distinct link
-/// vertices into one cycle for a fan of m triangles.
-bool HasOneCycleLink(const TriangleMesh& mesh, std::uint32_t v, const std::uint32_t* fan, std::size_t m)
-{
-  std::vector<std::uint32_t> link; // pairs of opposite vertices
-  for (std::size_t k = 0; k < m; ++k)
-  {
-    const Triangle& t = mesh.Triangles[fan[k]];
-    std::uint32_t o[2], n = 0;
-    for (int c = 0; c < 3; ++c)
-    {
-      if (t[c] != v)
-      {
-        o[n++] = t[c];
-      }
-    }
-    if (n == 2)
-    {
-      link.push_back(o[0]);
-      link.push_back(o[1]);
-    }
-  }
-  std::vector<std::uint32_t> distinct(link);
-  std::sort(distinct.begin(), distinct.end());
-  distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
-  auto index = [&](std::uint32_t x) {
-    return static_cast<std::uint32_t>(std::lower_bound(distinct.begin(), distinct.end(), x) - distinct.begin());
-  };
-  UnionFind joined(distinct.size());
-  std::size_t groups = distinct.size();
-  for (std::size_t k = 0; k + 1 < link.size(); k += 2)
-  {
-    groups -= joined.Join(index(link[k]), index(link[k + 1])) ? 1 : 0;
-  }
-  return groups == 1 && distinct.size() == m;
-}
-
-/// Pass 3 - vertices (on a mesh whose every edge has two triangles): the
-/// vertices whose triangles do not form one cycle around them (a bow tie:
-/// two fans meeting at a point). False when `progress` asked to stop.
-bool CountNonManifoldVertices(const TriangleMesh& mesh, TopologyReport& r, const ProgressCallback& progress)
-{
-  // The triangles around each vertex: counted, prefix-summed, written.
-  const std::size_t nv = mesh.Points.size();
-  std::vector<std::uint32_t> start(nv + 1, 0);
-  for (const Triangle& t : mesh.Triangles)
-  {
-    for (const std::uint32_t v : t)
-    {
-      ++start[v + 1];
-    }
-  }
-  std::partial_sum(start.begin(), start.end(), start.begin());
-  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1), incident(start.back());
-  for (std::uint32_t t = 0; t < mesh.Triangles.size(); ++t)
-  {
-    for (const std::uint32_t v : mesh.Triangles[t])
-    {
-      incident[fill[v]++] = t;
-    }
-  }
-  for (std::uint32_t v = 0; v < nv; ++v)
-  {
-    if ((v & 0x3FFFF) == 0 && progress && progress(static_cast<double>(v) / static_cast<double>(nv)))
-    {
-      return false;
-    }
-    const std::size_t m = start[v + 1] - start[v];
-    if (m > 0 && !HasOneCycleLink(mesh, v, incident.data() + start[v], m))
-    {
-      ++r.NonManifoldVertices;
-    }
-  }
-  return true;
-}
 } // namespace
 
 TopologyReport ComputeTopologyReport(
@@ -158,7 +83,8 @@ TopologyReport ComputeTopologyReport(
   std::vector<EdgeUse>().swap(uses);
   r.EulerCharacteristic = r.Vertices - r.Edges + r.Faces;
   if (r.BoundaryEdges == 0 && r.NonManifoldEdges == 0 &&
-    !CountNonManifoldVertices(mesh, r, ProgressRange(progress, 0.6, 1.0)))
+    !CountNonManifoldVertices(mesh.Triangles.data(), mesh.Triangles.size(), mesh.Points.size(),
+      r.NonManifoldVertices, ProgressRange(progress, 0.6, 1.0)))
   {
     return r;
   }

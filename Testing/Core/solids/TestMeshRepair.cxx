@@ -133,6 +133,47 @@ TEST(MeshRepair, OpenMeshAndSelfIntersectionsAreReported)
   EXPECT_NE(r.Describe().find("self-intersecting"), std::string::npos);
 }
 
+TEST(MeshRepair, SurfaceTouchingItselfAtAVertexIsReported)
+{
+  // Two cubes sharing one corner point, stored once: every edge has two
+  // triangles and no two triangles meet improperly (they share the vertex),
+  // yet the surface pinches there - not a 2-manifold, so not the paper's
+  // input. (Found by the fuzzer as a sphere whose two vertices an edit had
+  // made equal: the merge closed the pinch, and its contour was not manifold.)
+  const tpc::MeshSolid a = tpctest::CubeMesh({ 0, 0, 0 }, { 1, 1, 1 });
+  const tpc::MeshSolid b = tpctest::CubeMesh({ 1, 1, 1 }, { 2, 2, 2 });
+  std::vector<Vec3> p = a.Points();
+  Tris t = a.Triangles();
+  const auto offset = static_cast<std::uint32_t>(p.size());
+  p.insert(p.end(), b.Points().begin(), b.Points().end());
+  for (auto f : b.Triangles())
+  {
+    t.push_back({ f[0] + offset, f[1] + offset, f[2] + offset });
+  }
+  const tpc::MeshRepairReport r = tpc::RepairMesh(p, t);
+  EXPECT_EQ(r.MergedVertices, 1u);
+  EXPECT_EQ(r.NonManifoldEdges, 0u);
+  EXPECT_EQ(r.SelfIntersections, 0u);
+  EXPECT_EQ(r.PinchedVertices, 1);
+  EXPECT_FALSE(r.MeetsAssumptions());
+  EXPECT_EQ(r.Genus, -1);
+  EXPECT_NE(r.Describe().find("touches itself"), std::string::npos) << r.Describe();
+
+  // Apart, the same two cubes are a valid input of two components.
+  const tpc::MeshSolid c = tpctest::CubeMesh({ 1.5, 1.5, 1.5 }, { 2, 2, 2 });
+  p = a.Points();
+  t = a.Triangles();
+  p.insert(p.end(), c.Points().begin(), c.Points().end());
+  for (auto f : c.Triangles())
+  {
+    t.push_back({ f[0] + offset, f[1] + offset, f[2] + offset });
+  }
+  const tpc::MeshRepairReport apart = tpc::RepairMesh(p, t);
+  EXPECT_EQ(apart.PinchedVertices, 0);
+  EXPECT_TRUE(apart.MeetsAssumptions()) << apart.Describe();
+  EXPECT_EQ(apart.Components, 2u);
+}
+
 TEST(SelfIntersection, ExactTriangleTests)
 {
   // Crossing, touching at a point, coplanar overlapping, and apart.

@@ -1,0 +1,90 @@
+#include "VertexLinks.h"
+
+#include "UnionFind.h"
+
+#include <algorithm>
+#include <numeric>
+#include <vector>
+
+namespace tpc
+{
+namespace
+{
+/// Whether the triangles around vertex `v` (listed in `fan`) form one closed
+/// cycle: their link edges (the opposite vertex pairs) join m distinct link
+/// vertices into one cycle for a fan of m triangles.
+bool HasOneCycleLink(const Triangle* triangles, std::uint32_t v, const std::uint32_t* fan, std::size_t m)
+{
+  std::vector<std::uint32_t> link; // pairs of opposite vertices
+  for (std::size_t k = 0; k < m; ++k)
+  {
+    const Triangle& t = triangles[fan[k]];
+    std::uint32_t o[2], n = 0;
+    for (int c = 0; c < 3; ++c)
+    {
+      if (t[c] != v)
+      {
+        o[n++] = t[c];
+      }
+    }
+    if (n == 2)
+    {
+      link.push_back(o[0]);
+      link.push_back(o[1]);
+    }
+  }
+  std::vector<std::uint32_t> distinct(link);
+  std::sort(distinct.begin(), distinct.end());
+  distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+  auto index = [&](std::uint32_t x) {
+    return static_cast<std::uint32_t>(std::lower_bound(distinct.begin(), distinct.end(), x) - distinct.begin());
+  };
+  UnionFind joined(distinct.size());
+  std::size_t groups = distinct.size();
+  for (std::size_t k = 0; k + 1 < link.size(); k += 2)
+  {
+    groups -= joined.Join(index(link[k]), index(link[k + 1])) ? 1 : 0;
+  }
+  return groups == 1 && distinct.size() == m;
+}
+
+} // namespace
+
+bool CountNonManifoldVertices(const Triangle* triangles, std::size_t triangleCount, std::size_t vertexCount,
+  std::int64_t& count, const ProgressCallback& progress)
+{
+  // The triangles around each vertex: counted, prefix-summed, written.
+  const std::size_t nv = vertexCount;
+  std::vector<std::uint32_t> start(nv + 1, 0);
+  for (std::size_t t = 0; t < triangleCount; ++t)
+  {
+    for (const std::uint32_t v : triangles[t])
+    {
+      ++start[v + 1];
+    }
+  }
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1), incident(start.back());
+  for (std::uint32_t t = 0; t < triangleCount; ++t)
+  {
+    for (const std::uint32_t v : triangles[t])
+    {
+      incident[fill[v]++] = t;
+    }
+  }
+  for (std::uint32_t v = 0; v < nv; ++v)
+  {
+    if ((v & 0x3FFFF) == 0 && progress && progress(static_cast<double>(v) / static_cast<double>(nv)))
+    {
+      return false;
+    }
+    const std::size_t m = start[v + 1] - start[v];
+    if (m > 0 && !HasOneCycleLink(triangles, v, incident.data() + start[v], m))
+    {
+      ++count;
+    }
+  }
+  return true;
+}
+
+} // namespace tpc

@@ -1,0 +1,25 @@
+// The link of each vertex of an indexed triangle mesh: on a closed surface
+// whose every edge has two triangles, a vertex is a manifold point exactly
+// when its triangles form one cycle around it. A bow tie - two fans meeting
+// at one vertex, the surface touching itself there - has two. The topology
+// report counts such vertices on the output, mesh repair on the input (a
+// solid whose boundary pinches at a vertex is not a closed 2-manifold, and
+// the self-intersection test cannot see it: the two fans share the vertex).
+#pragma once
+
+#include "Parallel.h"
+#include "TriangleMesh.h"
+
+#include <cstddef>
+
+namespace tpc
+{
+
+/// Counts into `count` the vertices (of `vertexCount`) whose triangles among
+/// the `triangleCount` at `triangles` do not form one cycle around them
+/// (meant for meshes whose every edge has two triangles). False when
+/// `progress` asked to stop (`count` is then partial).
+bool CountNonManifoldVertices(const Triangle* triangles, std::size_t triangleCount, std::size_t vertexCount,
+  std::int64_t& count, const ProgressCallback& progress = nullptr);
+
+} // namespace tpc
