@@ -47,7 +47,8 @@ inline void ExpectEmbeddingCheckAgreesWithCgal(const tpc::EmbeddingReport& core,
   }
   EXPECT_EQ(core.Embedded(), cgal.Embedded())
     << "core: " << core.ImproperPairs << " improper pairs, " << core.CoincidentVertices
-    << " coincident vertices, " << core.DegenerateTriangles << " degenerate; CGAL: " << cgal.SelfIntersectingPairs
+    << " coincident vertices, " << core.DegenerateTriangles << " degenerate, " << core.TrianglesOutsideCells
+    << " outside their cells, aborted " << core.Aborted << "; CGAL: " << cgal.SelfIntersectingPairs
     << " self-intersecting pairs, " << cgal.CoincidentVertices << " coincident vertices";
 }
 #endif

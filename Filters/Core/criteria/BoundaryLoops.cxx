@@ -9,7 +9,7 @@ namespace
 {
 struct FacePoint
 {
-  std::uint32_t U, V;
+  LatticeIndex U, V;
   bool Inside;
 };
 
@@ -27,7 +27,7 @@ using Segment = std::pair<Crossing, Crossing>;
 
 /// One segment per run of inside points along the tile polygon, from the
 /// crossing entering the run to the crossing leaving it.
-void TileSegments(const std::vector<FacePoint>& poly, int axis, std::uint32_t plane,
+void TileSegments(const std::vector<FacePoint>& poly, int axis, LatticeIndex plane,
   const FaceTile& tile, std::vector<Segment>& segments)
 {
   const std::size_t m = poly.size();
@@ -39,12 +39,12 @@ void TileSegments(const std::vector<FacePoint>& poly, int axis, std::uint32_t pl
     const bool pLower = along == U ? p.U < q.U : p.V < q.V;
     const FacePoint& lower = pLower ? p : q;
     const FacePoint& upper = pLower ? q : p;
-    std::uint32_t x[3];
+    LatticeIndex x[3];
     x[axis] = plane;
     x[U] = lower.U;
     x[V] = lower.V;
     Crossing c;
-    c.Key = (MakePointKey(x[0], x[1], x[2]) << 2) | static_cast<std::uint64_t>(along);
+    c.Key = WithAxis(MakePointKey(x[0], x[1], x[2]), along);
     c.Upper = along == U ? upper.U : upper.V;
     c.LowerInside = lower.Inside;
     return c;
@@ -61,11 +61,11 @@ void TileSegments(const std::vector<FacePoint>& poly, int axis, std::uint32_t pl
       j = (j + 1) % m;
     }
     const Crossing in = crossing(k), out = crossing(j);
-    const int along = static_cast<int>(in.Key & 3);
-    std::uint32_t a[3], b[3];
-    SplitPointKey(in.Key >> 2, a);
-    SplitPointKey(out.Key >> 2, b);
-    const bool sameLine = (in.Key & 3) == (out.Key & 3) && a[(along + 1) % 3] == b[(along + 1) % 3] &&
+    const int along = AxisOf(in.Key);
+    LatticeIndex a[3], b[3];
+    SplitPointKey(PointOf(in.Key), a);
+    SplitPointKey(PointOf(out.Key), b);
+    const bool sameLine = AxisOf(in.Key) == AxisOf(out.Key) && a[(along + 1) % 3] == b[(along + 1) % 3] &&
       a[(along + 2) % 3] == b[(along + 2) % 3];
     if (!sameLine)
     {
@@ -77,7 +77,7 @@ void TileSegments(const std::vector<FacePoint>& poly, int axis, std::uint32_t pl
     Crossing bend;
     bend.Kind = CrossingKind::Bend;
     bend.Key = std::min(in.Key, out.Key);
-    bend.Tile = ((TileCorner(axis, plane, tile, 0) << 2) | static_cast<std::uint64_t>(axis)) + 1;
+    bend.Tile = WithAxis(TileCorner(axis, plane, tile, 0), axis) + 1;
     bend.Partner = std::max(in.Key, out.Key);
     segments.emplace_back(in, bend);
     segments.emplace_back(bend, out);
@@ -88,11 +88,11 @@ void FaceSegments(const CellBoundary& b, int f, std::vector<Segment>& segments)
 {
   const int axis = f / 2, side = f % 2;
   const int U = (axis + 1) % 3, V = (axis + 2) % 3;
-  const std::uint32_t plane = b.Base[axis] + (side ? b.Size : 0);
+  const LatticeIndex plane = b.Base[axis] + (side ? b.Size : 0);
   std::vector<FacePoint> byV;
   for (const auto& pk : b.Points)
   {
-    std::uint32_t p[3];
+    LatticeIndex p[3];
     SplitPointKey(pk.first, p);
     if (p[axis] == plane)
     {
@@ -102,12 +102,12 @@ void FaceSegments(const CellBoundary& b, int f, std::vector<Segment>& segments)
   std::vector<FacePoint> byU = byV;
   std::sort(byV.begin(), byV.end(), ByVU);
   std::sort(byU.begin(), byU.end(), ByUV);
-  auto row = [&](std::uint32_t v, std::uint32_t ua, std::uint32_t ub) { // u in [ua, ub)
+  auto row = [&](LatticeIndex v, LatticeIndex ua, LatticeIndex ub) { // u in [ua, ub)
     auto lo = std::lower_bound(byV.begin(), byV.end(), FacePoint{ ua, v, false }, ByVU);
     auto hi = std::lower_bound(lo, byV.end(), FacePoint{ ub, v, false }, ByVU);
     return std::make_pair(lo, hi);
   };
-  auto col = [&](std::uint32_t u, std::uint32_t va, std::uint32_t vb) { // v in [va, vb)
+  auto col = [&](LatticeIndex u, LatticeIndex va, LatticeIndex vb) { // v in [va, vb)
     auto lo = std::lower_bound(byU.begin(), byU.end(), FacePoint{ u, va, false }, ByUV);
     auto hi = std::lower_bound(lo, byU.end(), FacePoint{ u, vb, false }, ByUV);
     return std::make_pair(lo, hi);
@@ -121,7 +121,7 @@ void FaceSegments(const CellBoundary& b, int f, std::vector<Segment>& segments)
       continue; // drawn exactly: b.ExactSegments
     }
     const FaceTile& t = b.Tiles[f][k];
-    const std::uint32_t u0 = t.U0, v0 = t.V0, u1 = t.U1, v1 = t.V1;
+    const LatticeIndex u0 = t.U0, v0 = t.V0, u1 = t.U1, v1 = t.V1;
     polygon.clear();
     // Counter-clockwise in (u, v): bottom, right, top, left; each side's first
     // point included, its last excluded.

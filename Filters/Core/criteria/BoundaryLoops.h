@@ -49,19 +49,27 @@ enum class CrossingKind : std::uint8_t
 };
 
 /// A lattice plane as a key: axis in the top bits, lattice coordinate below.
-inline std::uint64_t PlaneKey(int axis, std::uint32_t coordinate)
+inline LatticeKey PlaneKey(int axis, LatticeIndex coordinate)
 {
-  return (static_cast<std::uint64_t>(axis) << 32) | coordinate;
+  return (static_cast<LatticeKey>(axis) << 64) | coordinate;
+}
+inline int PlaneAxis(LatticeKey plane)
+{
+  return static_cast<int>(plane >> 64);
+}
+inline LatticeIndex PlaneCoordinate(LatticeKey plane)
+{
+  return static_cast<LatticeIndex>(plane);
 }
 
 /// A vertex of the extracted surface: identified by (Kind, Key, Tile,
 /// Partner); Upper and LowerInside describe a sub-edge crossing.
 struct Crossing
 {
-  std::uint64_t Key = 0;
-  std::uint64_t Tile = 0;
-  std::uint64_t Partner = 0;
-  std::uint32_t Upper = 0;
+  LatticeKey Key = 0;
+  LatticeKey Tile = 0;
+  LatticeKey Partner = 0;
+  LatticeIndex Upper = 0;
   CrossingKind Kind = CrossingKind::SubEdge;
   bool LowerInside = false;
 
@@ -86,8 +94,8 @@ struct Crossing
 /// The samples on a cell's boundary.
 struct CellBoundary
 {
-  std::uint32_t Base[3] = { 0, 0, 0 }; ///< low corner, lattice units
-  std::uint32_t Size = 1;              ///< edge length, lattice units
+  LatticeIndex Base[3] = { 0, 0, 0 }; ///< low corner, lattice units
+  LatticeIndex Size = 1;              ///< edge length, lattice units
   std::vector<FaceTile> Tiles[6];      ///< tiles of face f (see CubeTopology.h)
   /// Per tile of face f: the leaf on its other side (an octree node index,
   /// -1 outside the grid).

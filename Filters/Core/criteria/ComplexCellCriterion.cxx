@@ -110,27 +110,28 @@ namespace
 {
 /// Lattice extent of each loop. A crossing is only known to lie on its
 /// sub-edge; bisection on exact signs narrows it to a sixteenth of the cell.
-std::vector<std::array<std::uint32_t, 6>> LoopExtents(const BoundaryLoopSet& loops,
+std::vector<std::array<LatticeIndex, 6>> LoopExtents(const BoundaryLoopSet& loops,
   const CsgExpression& expression, const PrimitiveSet& prims, const RootGrid& grid,
-  std::uint32_t cellSize)
+  LatticeIndex cellSize)
 {
-  std::vector<std::array<std::uint32_t, 6>> extents;
-  const std::uint32_t target = std::max<std::uint32_t>(1, cellSize / 16);
+  std::vector<std::array<LatticeIndex, 6>> extents;
+  const LatticeIndex target = std::max<LatticeIndex>(1, cellSize / 16);
   std::size_t offset = 0;
   for (const std::uint32_t size : loops.LoopSizes)
   {
-    std::array<std::uint32_t, 6> e = { UINT32_MAX, UINT32_MAX, UINT32_MAX, 0, 0, 0 };
+    constexpr LatticeIndex none = ~LatticeIndex(0);
+    std::array<LatticeIndex, 6> e = { none, none, none, 0, 0, 0 };
     for (std::uint32_t k = 0; k < size; ++k)
     {
       const Crossing& c = loops.Crossings[offset + k];
-      std::uint32_t p[3];
-      SplitPointKey(c.Key >> 2, p);
-      const int along = static_cast<int>(c.Key & 3);
+      LatticeIndex p[3];
+      SplitPointKey(PointOf(c.Key), p);
+      const int along = AxisOf(c.Key);
       const bool bend = c.Kind == CrossingKind::Bend;
-      std::uint32_t lo = p[along], hi = bend ? p[along] : c.Upper;
+      LatticeIndex lo = p[along], hi = bend ? p[along] : c.Upper;
       while (!bend && hi - lo > target)
       {
-        std::uint32_t m[3] = { p[0], p[1], p[2] };
+        LatticeIndex m[3] = { p[0], p[1], p[2] };
         m[along] = lo + (hi - lo) / 2;
         (expression.IsInside(grid.Point(m), prims) == c.LowerInside ? lo : hi) = m[along];
       }
@@ -150,11 +151,11 @@ std::vector<std::array<std::uint32_t, 6>> LoopExtents(const BoundaryLoopSet& loo
 bool LoopsSeparated(const BoundaryLoopSet& loops, const CsgExpressionPtr& expression,
   const PrimitiveSet& primitives, const RootGrid& grid, const Box3& cell)
 {
-  std::uint32_t size = 1;
+  LatticeIndex size = 1;
   for (int a = 0; a < 3; ++a)
   {
     // Lattice size of the cell from its world size (exact enough for a bound).
-    size = std::max(size, static_cast<std::uint32_t>(std::llround(cell.Width(a) / std::ldexp(grid.RootSize, -grid.MaxDepth))));
+    size = std::max(size, static_cast<LatticeIndex>(std::llround(cell.Width(a) / std::ldexp(grid.RootSize, -grid.MaxDepth))));
   }
   const auto extents = LoopExtents(loops, *expression, primitives, grid, size);
   for (std::size_t i = 0; i < extents.size(); ++i)

@@ -13,11 +13,11 @@ struct FaceRefiner
   const PrimitiveSet& Primitives;
   const RootGrid& Grid;
   int Axis;
-  std::uint32_t Plane;
+  LatticeIndex Plane;
   CellSignCache& Signs;
   FaceRefinementResult Result;
 
-  bool Inside(std::uint32_t u, std::uint32_t v)
+  bool Inside(LatticeIndex u, LatticeIndex v)
   {
     return this->Signs.Inside(TileCorner(this->Axis, this->Plane, { u, v, u, v }, 0));
   }
@@ -27,7 +27,7 @@ struct FaceRefiner
   /// splitting at a sample of the opposite sign puts a corner inside the
   /// wedge, which settles it at once.
   void SplitPoint(const FaceTile& t, SplitReason why, int edge, const bool inside[4],
-    std::uint32_t& us, std::uint32_t& vs)
+    LatticeIndex& us, LatticeIndex& vs)
   {
     us = t.U0 + (t.U1 - t.U0) / 2;
     vs = t.V0 + (t.V1 - t.V0) / 2;
@@ -39,8 +39,8 @@ struct FaceRefiner
       {
         for (int j = 1; j < Samples; ++j)
         {
-          const std::uint32_t u = t.U0 + static_cast<std::uint32_t>((std::uint64_t(t.U1 - t.U0) * i) / Samples);
-          const std::uint32_t v = t.V0 + static_cast<std::uint32_t>((std::uint64_t(t.V1 - t.V0) * j) / Samples);
+          const LatticeIndex u = t.U0 + static_cast<LatticeIndex>((std::uint64_t(t.U1 - t.U0) * i) / Samples);
+          const LatticeIndex v = t.V0 + static_cast<LatticeIndex>((std::uint64_t(t.V1 - t.V0) * j) / Samples);
           if (u > t.U0 && u < t.U1 && v > t.V0 && v < t.V1 && this->Inside(u, v) != inside[0])
           {
             us = u;
@@ -54,11 +54,11 @@ struct FaceRefiner
     {
       // An edge crossed twice with equal end signs: split it between the crossings.
       const bool alongU = edge == 0 || edge == 2;
-      const std::uint32_t fixed = edge == 0 ? t.V0 : edge == 1 ? t.U1 : edge == 2 ? t.V1 : t.U0;
-      const std::uint32_t a = alongU ? t.U0 : t.V0, b = alongU ? t.U1 : t.V1;
+      const LatticeIndex fixed = edge == 0 ? t.V0 : edge == 1 ? t.U1 : edge == 2 ? t.V1 : t.U0;
+      const LatticeIndex a = alongU ? t.U0 : t.V0, b = alongU ? t.U1 : t.V1;
       for (int i = 1; i < 4 * Samples; ++i)
       {
-        const std::uint32_t x = a + static_cast<std::uint32_t>((std::uint64_t(b - a) * i) / (4 * Samples));
+        const LatticeIndex x = a + static_cast<LatticeIndex>((std::uint64_t(b - a) * i) / (4 * Samples));
         if (x <= a || x >= b)
         {
           continue;
@@ -96,7 +96,7 @@ struct FaceRefiner
       this->Result.Failure = r;
       return false;
     }
-    std::uint32_t us, vs;
+    LatticeIndex us, vs;
     this->SplitPoint(t, r, edge, inside, us, vs);
     return this->Refine({ t.U0, t.V0, us, vs }, levels - 1) &&
       this->Refine({ us, t.V0, t.U1, vs }, levels - 1) &&
@@ -107,7 +107,7 @@ struct FaceRefiner
 } // namespace
 
 FaceRefinementResult RefineFace(const CsgExpressionPtr& expression,
-  const PrimitiveSet& primitives, const RootGrid& grid, int axis, std::uint32_t plane,
+  const PrimitiveSet& primitives, const RootGrid& grid, int axis, LatticeIndex plane,
   const FaceTile& face, int maxLevels, CellSignCache& signs)
 {
   FaceRefiner r{ expression, primitives, grid, axis, plane, signs, {} };

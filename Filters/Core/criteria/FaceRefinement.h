@@ -38,7 +38,7 @@ struct FaceRefinementResult
 /// Refines the face `face` of a cell, lying in the plane `axis` = `plane`,
 /// into at most `maxLevels` levels of tiles.
 FaceRefinementResult RefineFace(const CsgExpressionPtr& expression,
-  const PrimitiveSet& primitives, const RootGrid& grid, int axis, std::uint32_t plane,
+  const PrimitiveSet& primitives, const RootGrid& grid, int axis, LatticeIndex plane,
   const FaceTile& face, int maxLevels, CellSignCache& signs);
 
 } // namespace tpc

@@ -24,7 +24,7 @@ bool TileFaces(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& 
   const RootGrid& grid = tree.Grid;
   const OctreeNode& node = tree.Nodes[n];
   const int shift = grid.MaxDepth - node.Level;
-  const std::uint32_t size = 1u << shift;
+  const LatticeIndex size = LatticeIndex(1) << shift;
   boundary.Size = size;
   for (int a = 0; a < 3; ++a)
   {
@@ -33,8 +33,8 @@ bool TileFaces(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& 
   for (int f = 0; f < 6; ++f)
   {
     const int axis = f / 2, side = f % 2;
-    const std::uint32_t plane = boundary.Base[axis] + (side ? size : 0);
-    const std::uint32_t u0 = boundary.Base[(axis + 1) % 3], v0 = boundary.Base[(axis + 2) % 3];
+    const LatticeIndex plane = boundary.Base[axis] + (side ? size : 0);
+    const LatticeIndex u0 = boundary.Base[(axis + 1) % 3], v0 = boundary.Base[(axis + 2) % 3];
     const FaceRefinementResult r = RefineFace(tree.Expressions[n], prims, grid, axis, plane,
       { u0, v0, u0 + size, v0 + size }, std::min(levels, shift), signs);
     if (r.Tiles.empty())

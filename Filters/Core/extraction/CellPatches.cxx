@@ -14,7 +14,7 @@ constexpr std::size_t Chunk = 8192;
 
 /// Faces of the cell (bit f, CubeTopology.h numbering) that a loop's crossing
 /// lies on; all six for a bend (never a fan point).
-unsigned FacesOf(const Crossing& c, const std::uint32_t base[3], std::uint32_t size)
+unsigned FacesOf(const Crossing& c, const LatticeIndex base[3], LatticeIndex size)
 {
   if (c.Kind == CrossingKind::Bend)
   {
@@ -22,17 +22,17 @@ unsigned FacesOf(const Crossing& c, const std::uint32_t base[3], std::uint32_t s
   }
   if (c.Kind == CrossingKind::MeshEdge)
   {
-    const int axis = static_cast<int>(c.Key >> 32);
-    const std::uint32_t plane = static_cast<std::uint32_t>(c.Key & 0xFFFFFFFFu);
+    const int axis = PlaneAxis(c.Key);
+    const LatticeIndex plane = PlaneCoordinate(c.Key);
     return (plane == base[axis] ? 1u : 0u) << (2 * axis) | (plane == base[axis] + size ? 1u : 0u) << (2 * axis + 1);
   }
   if (c.Kind == CrossingKind::MeshVertex)
   {
     return 0; // inside an exact cell
   }
-  std::uint32_t p[3];
-  SplitPointKey(c.Key >> 2, p);
-  const int along = static_cast<int>(c.Key & 3);
+  LatticeIndex p[3];
+  SplitPointKey(PointOf(c.Key), p);
+  const int along = AxisOf(c.Key);
   unsigned mask = 0;
   for (int a = 0; a < 3; ++a)
   {
@@ -83,9 +83,9 @@ void TriangulateCell(const BoundaryLoopSet& loops, const OctreeNode& node, const
   CellPatches& out)
 {
   const Box3 box = grid.CellBox(node.Level, node.Ijk);
-  std::uint32_t base[3];
+  LatticeIndex base[3];
   CornerLattice(grid, node, 0, base);
-  const std::uint32_t size = 1u << (grid.MaxDepth - node.Level);
+  const LatticeIndex size = LatticeIndex(1) << (grid.MaxDepth - node.Level);
   std::vector<std::vector<std::uint32_t>> ids;
   std::vector<std::vector<LoopPoint>> points;
   std::vector<Box3> boxes;

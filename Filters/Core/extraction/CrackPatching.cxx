@@ -22,7 +22,7 @@ public:
     CellBoundary b;
     const int depth = this->Tree.Grid.MaxDepth;
     const int shift = depth - this->Node.Level;
-    b.Size = 1u << shift;
+    b.Size = LatticeIndex(1) << shift;
     for (int a = 0; a < 3; ++a)
     {
       b.Base[a] = this->Node.Ijk[a] << shift;
@@ -43,15 +43,15 @@ public:
     {
       const int axis = f / 2;
       const int U = (axis + 1) % 3, V = (axis + 2) % 3;
-      const std::uint32_t plane = b.Base[axis] + (f % 2 ? b.Size : 0);
+      const LatticeIndex plane = b.Base[axis] + (f % 2 ? b.Size : 0);
       for (const FaceTile& t : b.Tiles[f])
       {
         // Bottom and top edges run along U, left and right along V.
-        const std::uint32_t starts[4][2] = { { t.U0, t.V0 }, { t.U0, t.V1 }, { t.U0, t.V0 },
+        const LatticeIndex starts[4][2] = { { t.U0, t.V0 }, { t.U0, t.V1 }, { t.U0, t.V0 },
           { t.U1, t.V0 } };
         for (int k = 0; k < 4; ++k)
         {
-          std::uint32_t p[3];
+          LatticeIndex p[3];
           p[axis] = plane;
           p[U] = starts[k][0];
           p[V] = starts[k][1];
@@ -70,13 +70,13 @@ public:
 private:
   void AddLeafCorner(CellBoundary& b, std::size_t leaf, int corner) const
   {
-    std::uint32_t p[3];
+    LatticeIndex p[3];
     CornerLattice(this->Tree.Grid, this->Tree.Nodes[leaf], corner, p);
     const PointKey key = MakePointKey(p[0], p[1], p[2]);
     b.Points.emplace_back(key, this->Tree.PointInside(leaf, key));
   }
 
-  void AddTileCorners(CellBoundary& b, int axis, std::uint32_t plane, const FaceTile& t) const
+  void AddTileCorners(CellBoundary& b, int axis, LatticeIndex plane, const FaceTile& t) const
   {
     for (int c = 0; c < 4; ++c)
     {
@@ -133,7 +133,7 @@ private:
   void AddFaceOfLeaf(CellBoundary& b, int f, std::size_t leaf, int leafFace, std::int64_t across) const
   {
     const int axis = f / 2;
-    const std::uint32_t plane = b.Base[axis] + (f % 2 ? b.Size : 0);
+    const LatticeIndex plane = b.Base[axis] + (f % 2 ? b.Size : 0);
     const OctreeNode& q = this->Tree.Nodes[leaf];
     const auto it = this->Tree.FaceRefinements.find(FaceOf(this->Tree.Grid, q, leafFace));
     if (it != this->Tree.FaceRefinements.end())
@@ -147,8 +147,8 @@ private:
       return;
     }
     const int shift = this->Tree.Grid.MaxDepth - q.Level;
-    const std::uint32_t u0 = q.Ijk[(axis + 1) % 3] << shift, v0 = q.Ijk[(axis + 2) % 3] << shift;
-    const FaceTile t{ u0, v0, u0 + (1u << shift), v0 + (1u << shift) };
+    const LatticeIndex u0 = q.Ijk[(axis + 1) % 3] << shift, v0 = q.Ijk[(axis + 2) % 3] << shift;
+    const FaceTile t{ u0, v0, u0 + (LatticeIndex(1) << shift), v0 + (LatticeIndex(1) << shift) };
     b.Tiles[f].push_back(t);
     b.Across[f].push_back(across);
     for (int c = 0; c < 8; ++c)

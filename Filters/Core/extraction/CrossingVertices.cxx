@@ -17,7 +17,7 @@ constexpr std::size_t Blocks = 64, Buckets = 256;
 
 std::size_t BucketOf(const CrossingVertices::Record& r)
 {
-  return static_cast<std::size_t>((r.Vertex.Key * 0x9E3779B97F4A7C15ULL) >> 56);
+  return HashKey(r.Vertex.Key) >> 56;
 }
 
 /// A surface crossing on its lattice sub-edge, found on the exact field, then
@@ -27,9 +27,9 @@ std::size_t BucketOf(const CrossingVertices::Record& r)
 Vec3 PlaceCrossing(const Crossing& c, const RootGrid& grid, const CsgExpression& expression,
   const PrimitiveSet& prims)
 {
-  const int axis = static_cast<int>(c.Key & 3);
-  std::uint32_t lo[3], hi[3];
-  SplitPointKey(c.Key >> 2, lo);
+  const int axis = AxisOf(c.Key);
+  LatticeIndex lo[3], hi[3];
+  SplitPointKey(PointOf(c.Key), lo);
   std::copy(lo, lo + 3, hi);
   hi[axis] = c.Upper;
   const Vec3 a = grid.Point(lo), b = grid.Point(hi);
@@ -55,10 +55,10 @@ void PlaceBendVertices(const CrossingVertices& vertices, TriangleMesh& mesh)
     first.Key = c.Key;
     last.Key = c.Partner;
     const Vec3 a = mesh.Points[vertices.IdOf(first)], b = mesh.Points[vertices.IdOf(last)];
-    std::uint32_t corner[3], on[3];
-    SplitPointKey((c.Tile - 1) >> 2, corner);
-    SplitPointKey(c.Key >> 2, on);
-    const int plane = static_cast<int>((c.Tile - 1) & 3), along = static_cast<int>(c.Key & 3);
+    LatticeIndex corner[3], on[3];
+    SplitPointKey(PointOf(c.Tile - 1), corner);
+    SplitPointKey(PointOf(c.Key), on);
+    const int plane = AxisOf(c.Tile - 1), along = AxisOf(c.Key);
     const int across = 3 - plane - along;
     Vec3 p = (a + b) * 0.5;
     p[across] += (on[across] == corner[across] ? 1e-3 : -1e-3) * Norm(b - a);

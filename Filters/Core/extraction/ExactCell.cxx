@@ -10,28 +10,23 @@ namespace tpc
 {
 namespace
 {
-std::uint64_t LineOf(const std::uint32_t p[3], int axis)
-{
-  return (static_cast<std::uint64_t>(axis) << 62) | (static_cast<std::uint64_t>(p[(axis + 1) % 3]) << LatticeBits) |
-    p[(axis + 2) % 3];
-}
 
 /// The sample points of a cell's boundary on each lattice line, sorted
 /// along it, with their signs.
 class BoundaryLines
 {
 public:
-  using Samples = std::vector<std::pair<std::uint32_t, bool>>;
+  using Samples = std::vector<std::pair<LatticeIndex, bool>>;
 
   explicit BoundaryLines(const CellBoundary& b)
   {
     for (const auto& point : b.Points)
     {
-      std::uint32_t p[3];
+      LatticeIndex p[3];
       SplitPointKey(point.first, p);
       for (int a = 0; a < 3; ++a)
       {
-        this->Lines[LineOf(p, a)].emplace_back(p[a], point.second);
+        this->Lines[LineKey(p, a)].emplace_back(p[a], point.second);
       }
     }
     for (auto& line : this->Lines)
@@ -42,14 +37,14 @@ public:
         line.second.end());
     }
   }
-  const Samples* Line(const std::uint32_t lattice[3], int axis) const
+  const Samples* Line(const LatticeIndex lattice[3], int axis) const
   {
-    const auto it = this->Lines.find(LineOf(lattice, axis));
+    const auto it = this->Lines.find(LineKey(lattice, axis));
     return it == this->Lines.end() ? nullptr : &it->second;
   }
 
 private:
-  std::unordered_map<std::uint64_t, Samples> Lines;
+  std::unordered_map<LatticeKey, Samples, LatticeKeyHash> Lines;
 };
 
 /// Names arrangement points as the extraction's crossings.
@@ -92,7 +87,7 @@ struct Namer
     if (samples)
     {
       const auto it = std::partition_point(samples->begin(), samples->end(),
-        [&](const std::pair<std::uint32_t, bool>& s) { return this->Arrangement.Side(y, axis, s.first) > 0; });
+        [&](const std::pair<LatticeIndex, bool>& s) { return this->Arrangement.Side(y, axis, s.first) > 0; });
       upper = static_cast<std::size_t>(it - samples->begin());
     }
     Crossing c;
@@ -102,15 +97,15 @@ struct Namer
       // the loops of the cells around will not find - counted as
       // inconsistent there.
       c.Kind = CrossingKind::SubEdgeTriangle;
-      c.Key = (MakePointKey(y.Lattice[0], y.Lattice[1], y.Lattice[2]) << 2) | static_cast<std::uint64_t>(axis);
+      c.Key = WithAxis(MakePointKey(y.Lattice[0], y.Lattice[1], y.Lattice[2]), axis);
       c.Tile = this->Primitive;
       c.Partner = y.A;
       return c;
     }
-    std::uint32_t lo[3] = { y.Lattice[0], y.Lattice[1], y.Lattice[2] }, hi[3] = { lo[0], lo[1], lo[2] };
+    LatticeIndex lo[3] = { y.Lattice[0], y.Lattice[1], y.Lattice[2] }, hi[3] = { lo[0], lo[1], lo[2] };
     lo[axis] = (*samples)[upper - 1].first;
     hi[axis] = (*samples)[upper].first;
-    c.Key = (MakePointKey(lo[0], lo[1], lo[2]) << 2) | static_cast<std::uint64_t>(axis);
+    c.Key = WithAxis(MakePointKey(lo[0], lo[1], lo[2]), axis);
     c.Upper = hi[axis];
     c.LowerInside = (*samples)[upper - 1].second;
     const int crossings =
@@ -131,17 +126,17 @@ struct Namer
 struct FaceTileSides
 {
   int Axes[2] = { 0, 0 };
-  std::map<std::uint32_t, std::vector<std::pair<std::uint32_t, std::uint32_t>>> Lines[2];
+  std::map<LatticeIndex, std::vector<std::pair<LatticeIndex, LatticeIndex>>> Lines[2];
 
   FaceTileSides(const CellBoundary& b, int f)
   {
     const int axis = f / 2;
     this->Axes[0] = (axis + 1) % 3;
     this->Axes[1] = (axis + 2) % 3;
-    const std::uint32_t lo[2] = { b.Base[this->Axes[0]], b.Base[this->Axes[1]] };
+    const LatticeIndex lo[2] = { b.Base[this->Axes[0]], b.Base[this->Axes[1]] };
     for (const FaceTile& t : b.Tiles[f])
     {
-      const std::uint32_t u[2] = { t.U0, t.U1 }, v[2] = { t.V0, t.V1 };
+      const LatticeIndex u[2] = { t.U0, t.U1 }, v[2] = { t.V0, t.V1 };
       for (int s = 0; s < 2; ++s)
       {
         if (u[s] > lo[0] && u[s] < lo[0] + b.Size)
@@ -160,13 +155,13 @@ struct FaceTileSides
 /// The points where the polygon edge x -> y on face f crosses tile sides,
 /// in order from x.
 std::vector<ArrangementPoint> TileSideCrossings(const MeshArrangement& arrangement, std::uint32_t t,
-  const ArrangementPoint& x, const ArrangementPoint& y, int f, std::uint32_t plane, const FaceTileSides& sides)
+  const ArrangementPoint& x, const ArrangementPoint& y, int f, LatticeIndex plane, const FaceTileSides& sides)
 {
   struct Hit
   {
     ArrangementPoint Point;
     int Axis;
-    std::uint32_t Coordinate;
+    LatticeIndex Coordinate;
   };
   std::vector<Hit> hits;
   for (int j = 0; j < 2; ++j)
@@ -178,7 +173,7 @@ std::vector<ArrangementPoint> TileSideCrossings(const MeshArrangement& arrangeme
       {
         continue;
       }
-      std::uint32_t lattice[3] = { 0, 0, 0 };
+      LatticeIndex lattice[3] = { 0, 0, 0 };
       lattice[f / 2] = plane;
       lattice[u] = line.first;
       const ArrangementPoint z = ArrangementPoint::TriangleOnLine(t, v, lattice);
@@ -211,7 +206,7 @@ ExactPolygons ClipToExactCell(const CellBoundary& boundary, const CsgLeaf& leaf,
   const MeshArrangement arrangement(mesh, grid);
   const BoundaryLines lines(boundary);
   const Namer namer{ arrangement, lines, *leaf.Triangles, leaf.Primitive, grid };
-  std::uint32_t lo[3], hi[3];
+  LatticeIndex lo[3], hi[3];
   for (int a = 0; a < 3; ++a)
   {
     lo[a] = boundary.Base[a];
@@ -234,7 +229,7 @@ ExactPolygons ClipToExactCell(const CellBoundary& boundary, const CsgLeaf& leaf,
       if (support >= ClippedVertex::FaceSupport)
       {
         const int f = support - ClippedVertex::FaceSupport;
-        const std::uint32_t plane = f % 2 ? hi[f / 2] : lo[f / 2];
+        const LatticeIndex plane = f % 2 ? hi[f / 2] : lo[f / 2];
         for (const ArrangementPoint& z : TileSideCrossings(
                arrangement, t, polygon[i].Point, polygon[(i + 1) % polygon.size()].Point, f, plane, sides[f]))
         {
@@ -268,9 +263,9 @@ void AddExactTileSegments(CellBoundary& boundary, const std::vector<ExactTile>& 
     const MeshArrangement arrangement(primitives.Meshes[leaf.Primitive], grid);
     const Namer namer{ arrangement, lines, *leaf.Triangles, leaf.Primitive, grid };
     const int f = exact.Face, axis = f / 2;
-    const std::uint32_t plane = boundary.Base[axis] + (f % 2 ? boundary.Size : 0);
+    const LatticeIndex plane = boundary.Base[axis] + (f % 2 ? boundary.Size : 0);
     const FaceTile& tile = boundary.Tiles[f][exact.Tile];
-    const std::uint32_t lo[2] = { tile.U0, tile.V0 }, hi[2] = { tile.U1, tile.V1 };
+    const LatticeIndex lo[2] = { tile.U0, tile.V0 }, hi[2] = { tile.U1, tile.V1 };
     for (const std::uint32_t t : *leaf.Triangles)
     {
       ArrangementPoint from, to;
@@ -286,7 +281,7 @@ void AddExactTileSegments(CellBoundary& boundary, const std::vector<ExactTile>& 
 
 Vec3 ExactCrossingPosition(const Crossing& c, const PrimitiveSet& primitives, const RootGrid& grid)
 {
-  const MeshArrangement arrangement(primitives.Meshes[c.Tile], grid);
+  const MeshArrangement arrangement(primitives.Meshes[static_cast<std::size_t>(c.Tile)], grid);
   if (c.Kind == CrossingKind::MeshVertex)
   {
     return arrangement.Position(ArrangementPoint::Vertex(static_cast<std::uint32_t>(c.Key)));
@@ -294,14 +289,13 @@ Vec3 ExactCrossingPosition(const Crossing& c, const PrimitiveSet& primitives, co
   if (c.Kind == CrossingKind::MeshEdge)
   {
     return arrangement.Position(ArrangementPoint::EdgeOnPlane(static_cast<std::uint32_t>(c.Partner >> 32),
-      static_cast<std::uint32_t>(c.Partner & 0xFFFFFFFFu), static_cast<int>(c.Key >> 32),
-      static_cast<std::uint32_t>(c.Key & 0xFFFFFFFFu)));
+      static_cast<std::uint32_t>(c.Partner & 0xFFFFFFFFu), PlaneAxis(c.Key), PlaneCoordinate(c.Key)));
   }
   // A triangle on a sub-edge crossed several times: on the line, strictly
   // inside the sub-edge (distinct crossings keep distinct positions).
-  std::uint32_t lo[3];
-  SplitPointKey(c.Key >> 2, lo);
-  const int axis = static_cast<int>(c.Key & 3);
+  LatticeIndex lo[3];
+  SplitPointKey(PointOf(c.Key), lo);
+  const int axis = AxisOf(c.Key);
   Vec3 p = arrangement.Position(ArrangementPoint::TriangleOnLine(static_cast<std::uint32_t>(c.Partner), axis, lo));
   const double a = grid.Coordinate(axis, lo[axis]), b = grid.Coordinate(axis, c.Upper);
   p[axis] = std::clamp(p[axis], std::nextafter(a, b), std::nextafter(b, a));

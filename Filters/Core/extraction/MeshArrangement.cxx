@@ -15,7 +15,7 @@ ArrangementPoint ArrangementPoint::Vertex(std::uint32_t v)
   return p;
 }
 
-ArrangementPoint ArrangementPoint::EdgeOnPlane(std::uint32_t a, std::uint32_t b, int axis, std::uint32_t coordinate)
+ArrangementPoint ArrangementPoint::EdgeOnPlane(std::uint32_t a, std::uint32_t b, int axis, LatticeIndex coordinate)
 {
   ArrangementPoint p;
   p.PointKind = Kind::EdgeOnPlane;
@@ -26,7 +26,7 @@ ArrangementPoint ArrangementPoint::EdgeOnPlane(std::uint32_t a, std::uint32_t b,
   return p;
 }
 
-ArrangementPoint ArrangementPoint::TriangleOnLine(std::uint32_t t, int freeAxis, const std::uint32_t lattice[3])
+ArrangementPoint ArrangementPoint::TriangleOnLine(std::uint32_t t, int freeAxis, const LatticeIndex lattice[3])
 {
   ArrangementPoint p;
   p.PointKind = Kind::TriangleOnLine;
@@ -107,7 +107,7 @@ int MeshArrangement::TriangleSide(const ArrangementPoint& p, int a, double c) co
   return o * along;
 }
 
-int MeshArrangement::Side(const ArrangementPoint& p, int axis, std::uint32_t coordinate) const
+int MeshArrangement::Side(const ArrangementPoint& p, int axis, LatticeIndex coordinate) const
 {
   const std::int64_t fixed = p.FixedCoordinate(axis);
   if (fixed >= 0)
@@ -162,7 +162,7 @@ Vec3 MeshArrangement::Position(const ArrangementPoint& p) const
 }
 
 std::vector<ClippedVertex> MeshArrangement::ClipTriangle(
-  std::uint32_t t, const std::uint32_t lo[3], const std::uint32_t hi[3]) const
+  std::uint32_t t, const LatticeIndex lo[3], const LatticeIndex hi[3]) const
 {
   const auto& tri = this->Solid.Triangles()[t];
   std::vector<ClippedVertex> polygon = { { ArrangementPoint::Vertex(tri[0]), 0 },
@@ -172,7 +172,7 @@ std::vector<ClippedVertex> MeshArrangement::ClipTriangle(
   {
     const int axis = f / 2;
     const bool high = f % 2 != 0;
-    const std::uint32_t plane = high ? hi[axis] : lo[axis];
+    const LatticeIndex plane = high ? hi[axis] : lo[axis];
     auto inside = [&](const ArrangementPoint& p) { return this->Side(p, axis, plane) == (high ? -1 : 1); };
     // Where the polygon edge with `support` crosses this plane: on an edge of
     // the triangle, or on the lattice line where the face it lies on meets
@@ -183,7 +183,7 @@ std::vector<ClippedVertex> MeshArrangement::ClipTriangle(
         return ArrangementPoint::EdgeOnPlane(tri[static_cast<std::size_t>(support)], tri[(support + 1) % 3], axis, plane);
       }
       const int face = support - ClippedVertex::FaceSupport, faceAxis = face / 2;
-      std::uint32_t line[3] = { 0, 0, 0 };
+      LatticeIndex line[3] = { 0, 0, 0 };
       line[faceAxis] = face % 2 ? hi[faceAxis] : lo[faceAxis];
       line[axis] = plane;
       return ArrangementPoint::TriangleOnLine(t, 3 - faceAxis - axis, line);
@@ -211,8 +211,8 @@ std::vector<ClippedVertex> MeshArrangement::ClipTriangle(
   return polygon;
 }
 
-bool MeshArrangement::TraceOnRectangle(std::uint32_t t, int axis, std::uint32_t plane, const std::uint32_t lo[2],
-  const std::uint32_t hi[2], int outward, int sigma, ArrangementPoint& from, ArrangementPoint& to) const
+bool MeshArrangement::TraceOnRectangle(std::uint32_t t, int axis, LatticeIndex plane, const LatticeIndex lo[2],
+  const LatticeIndex hi[2], int outward, int sigma, ArrangementPoint& from, ArrangementPoint& to) const
 {
   const auto& tri = this->Solid.Triangles()[t];
   const double c = this->Grid.Coordinate(axis, plane);
@@ -239,7 +239,7 @@ bool MeshArrangement::TraceOnRectangle(std::uint32_t t, int axis, std::uint32_t 
   {
     const int u = (axis + 1 + k / 2) % 3, w = 3 - axis - u; // bound along u; the clipped point moves along w
     const bool high = k % 2 != 0;
-    const std::uint32_t bound = high ? hi[k / 2] : lo[k / 2];
+    const LatticeIndex bound = high ? hi[k / 2] : lo[k / 2];
     const int keep = high ? -1 : 1;
     const bool inFrom = this->Side(from, u, bound) == keep, inTo = this->Side(to, u, bound) == keep;
     if (!inFrom && !inTo)
@@ -248,7 +248,7 @@ bool MeshArrangement::TraceOnRectangle(std::uint32_t t, int axis, std::uint32_t 
     }
     if (inFrom != inTo)
     {
-      std::uint32_t line[3] = { 0, 0, 0 };
+      LatticeIndex line[3] = { 0, 0, 0 };
       line[axis] = plane;
       line[u] = bound;
       (inFrom ? to : from) = ArrangementPoint::TriangleOnLine(t, w, line);
@@ -258,7 +258,7 @@ bool MeshArrangement::TraceOnRectangle(std::uint32_t t, int axis, std::uint32_t 
 }
 
 bool MeshArrangement::Before(
-  const ArrangementPoint& from, const ArrangementPoint& a, int axisB, std::uint32_t coordinateB) const
+  const ArrangementPoint& from, const ArrangementPoint& a, int axisB, LatticeIndex coordinateB) const
 {
   return this->Side(a, axisB, coordinateB) == this->Side(from, axisB, coordinateB);
 }

@@ -52,11 +52,11 @@ struct ArrangementPoint
   Kind PointKind = Kind::MeshVertex;
   std::uint32_t A = 0, B = 0;
   int Axis = 0;
-  std::uint32_t Lattice[3] = { 0, 0, 0 };
+  LatticeIndex Lattice[3] = { 0, 0, 0 };
 
   static ArrangementPoint Vertex(std::uint32_t v);
-  static ArrangementPoint EdgeOnPlane(std::uint32_t a, std::uint32_t b, int axis, std::uint32_t coordinate);
-  static ArrangementPoint TriangleOnLine(std::uint32_t t, int freeAxis, const std::uint32_t lattice[3]);
+  static ArrangementPoint EdgeOnPlane(std::uint32_t a, std::uint32_t b, int axis, LatticeIndex coordinate);
+  static ArrangementPoint TriangleOnLine(std::uint32_t t, int freeAxis, const LatticeIndex lattice[3]);
   /// The point's coordinate on `axis` is a lattice coordinate (it lies on
   /// that lattice plane): the coordinate, else -1.
   std::int64_t FixedCoordinate(int axis) const;
@@ -79,13 +79,13 @@ public:
 
   /// -1 or +1: `p` is below or above the lattice plane x_axis = coordinate
   /// (never on it; not asked of a point lying on that very plane).
-  int Side(const ArrangementPoint& p, int axis, std::uint32_t coordinate) const;
+  int Side(const ArrangementPoint& p, int axis, LatticeIndex coordinate) const;
   Vec3 Position(const ArrangementPoint& p) const;
 
   /// Triangle t clipped to the closed lattice box [lo, hi] (Sutherland and
   /// Hodgman, with the exact side tests), in t's orientation; empty when
   /// they do not meet.
-  std::vector<ClippedVertex> ClipTriangle(std::uint32_t t, const std::uint32_t lo[3], const std::uint32_t hi[3]) const;
+  std::vector<ClippedVertex> ClipTriangle(std::uint32_t t, const LatticeIndex lo[3], const LatticeIndex hi[3]) const;
 
   /// The segment triangle t draws on the lattice plane x_axis = plane inside
   /// the rectangle [lo[0], hi[0]] x [lo[1], hi[1]] of the plane's (u, v) axes
@@ -93,13 +93,13 @@ public:
   /// the solid on its right seen from the side `outward` (+1: from above).
   /// `sigma` -1 means the solid is the mesh's complement. False when t does
   /// not meet the rectangle.
-  bool TraceOnRectangle(std::uint32_t t, int axis, std::uint32_t plane, const std::uint32_t lo[2],
-    const std::uint32_t hi[2], int outward, int sigma, ArrangementPoint& from, ArrangementPoint& to) const;
+  bool TraceOnRectangle(std::uint32_t t, int axis, LatticeIndex plane, const LatticeIndex lo[2],
+    const LatticeIndex hi[2], int outward, int sigma, ArrangementPoint& from, ArrangementPoint& to) const;
 
   /// For two points of a straight segment starting at `from`: true when `a`
   /// comes before the point where the segment crosses the lattice plane
   /// x_axisB = coordinateB (`a` and `from` not on that plane).
-  bool Before(const ArrangementPoint& from, const ArrangementPoint& a, int axisB, std::uint32_t coordinateB) const;
+  bool Before(const ArrangementPoint& from, const ArrangementPoint& a, int axisB, LatticeIndex coordinateB) const;
 
   const MeshSolid& Mesh() const { return this->Solid; }
 

@@ -61,37 +61,27 @@ FaceKey FaceOf(const RootGrid& grid, const OctreeNode& n, int f)
 {
   const int axis = f / 2, side = f % 2;
   const int shift = grid.MaxDepth - n.Level;
-  std::uint32_t p[3];
+  LatticeIndex p[3];
   for (int a = 0; a < 3; ++a)
   {
-    p[a] = (n.Ijk[a] + (a == axis ? static_cast<std::uint32_t>(side) : 0u)) << shift;
+    p[a] = (n.Ijk[a] + (a == axis ? static_cast<LatticeIndex>(side) : LatticeIndex(0))) << shift;
   }
   return { MakePointKey(p[0], p[1], p[2]), static_cast<std::uint8_t>(axis), n.Level };
 }
-
-namespace
-{
-/// The lattice line along `axis` through p.
-std::uint64_t LineKey(const std::uint32_t p[3], int axis)
-{
-  const std::uint32_t u = p[(axis + 1) % 3], v = p[(axis + 2) % 3];
-  return (static_cast<std::uint64_t>(axis) << 62) | (static_cast<std::uint64_t>(u) << LatticeBits) | v;
-}
-} // namespace
 
 void AdaptiveOctree::IndexRefinementPoints()
 {
   this->RefinementLines.clear();
   for (const auto& entry : this->FaceRefinements)
   {
-    std::uint32_t low[3];
+    LatticeIndex low[3];
     SplitPointKey(entry.first.Low, low);
     const int axis = entry.first.Axis;
     for (const FaceTile& t : entry.second)
     {
       for (int c = 0; c < 4; ++c)
       {
-        std::uint32_t p[3];
+        LatticeIndex p[3];
         SplitPointKey(TileCorner(axis, low[axis], t, c), p);
         for (int a = 0; a < 3; ++a)
         {
@@ -108,18 +98,18 @@ void AdaptiveOctree::IndexRefinementPoints()
 }
 
 void AdaptiveOctree::RefinementPointsOn(
-  const std::uint32_t p[3], int axis, std::uint32_t end, std::vector<PointKey>& out) const
+  const LatticeIndex p[3], int axis, LatticeIndex end, std::vector<PointKey>& out) const
 {
   const auto it = this->RefinementLines.find(LineKey(p, axis));
   if (it == this->RefinementLines.end())
   {
     return;
   }
-  const std::uint32_t lo = std::min(p[axis], end), hi = std::max(p[axis], end);
+  const LatticeIndex lo = std::min(p[axis], end), hi = std::max(p[axis], end);
   auto first = std::upper_bound(it->second.begin(), it->second.end(), lo);
   for (; first != it->second.end() && *first < hi; ++first)
   {
-    std::uint32_t q[3] = { p[0], p[1], p[2] };
+    LatticeIndex q[3] = { p[0], p[1], p[2] };
     q[axis] = *first;
     out.push_back(MakePointKey(q[0], q[1], q[2]));
   }
@@ -163,7 +153,7 @@ bool AdaptiveOctree::CornerInside(std::size_t n, int corner) const
   {
     return node.State == CellState::Inside;
   }
-  std::uint32_t p[3];
+  LatticeIndex p[3];
   CornerLattice(this->Grid, node, corner, p);
   return this->Signs.Find(MakePointKey(p[0], p[1], p[2])) == 1;
 }

@@ -20,7 +20,7 @@ namespace tpc
 
 struct OctreeNode
 {
-  std::uint32_t Ijk[3] = { 0, 0, 0 }; ///< integer position at this node's level
+  LatticeIndex Ijk[3] = { 0, 0, 0 }; ///< integer position at this node's level
   std::uint8_t Level = 0;
   SplitReason Reason = SplitReason::None;
   CellState State = CellState::Outside;
@@ -37,7 +37,7 @@ struct OctreeNode
 };
 
 /// Corner c of a cell is at offset (c&1, (c>>1)&1, (c>>2)&1).
-inline void CornerLattice(const RootGrid& grid, const OctreeNode& n, int c, std::uint32_t p[3])
+inline void CornerLattice(const RootGrid& grid, const OctreeNode& n, int c, LatticeIndex p[3])
 {
   const int shift = grid.MaxDepth - n.Level;
   for (int a = 0; a < 3; ++a)
@@ -59,7 +59,7 @@ struct FaceKeyHash
 {
   std::size_t operator()(const FaceKey& k) const
   {
-    return std::hash<std::uint64_t>()(k.Low * 0x9E3779B97F4A7C15ULL ^ (k.Axis * 64u + k.Level));
+    return HashKey(k.Low ^ (static_cast<LatticeKey>(k.Axis * 64u + k.Level) << 126));
   }
 };
 
@@ -90,13 +90,13 @@ public:
   std::unordered_map<FaceKey, std::vector<FaceTile>, FaceKeyHash> FaceRefinements;
   /// Positions of face-refinement sample points on each lattice line (see
   /// LineKey), sorted: the points every cell touching the line must use.
-  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> RefinementLines;
+  std::unordered_map<LatticeKey, std::vector<LatticeIndex>, LatticeKeyHash> RefinementLines;
 
   /// Fills RefinementLines from FaceRefinements.
   void IndexRefinementPoints();
   /// Refinement points strictly inside the lattice segment from `p` along
   /// `axis` to coordinate `end`.
-  void RefinementPointsOn(const std::uint32_t p[3], int axis, std::uint32_t end,
+  void RefinementPointsOn(const LatticeIndex p[3], int axis, LatticeIndex end,
     std::vector<PointKey>& out) const;
 
   /// Index of the node at (level, ijk) if it exists, otherwise of the deepest

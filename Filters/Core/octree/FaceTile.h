@@ -13,13 +13,13 @@ namespace tpc
 /// face's (u, v) axes, u = axis + 1, v = axis + 2 (mod 3).
 struct FaceTile
 {
-  std::uint32_t U0 = 0, V0 = 0, U1 = 1, V1 = 1;
+  LatticeIndex U0 = 0, V0 = 0, U1 = 1, V1 = 1;
 };
 
 /// Corner c (bit 0: U1, bit 1: V1) of a tile lying in the plane axis = plane.
-inline PointKey TileCorner(int axis, std::uint32_t plane, const FaceTile& t, int c)
+inline PointKey TileCorner(int axis, LatticeIndex plane, const FaceTile& t, int c)
 {
-  std::uint32_t p[3];
+  LatticeIndex p[3];
   p[axis] = plane;
   p[(axis + 1) % 3] = (c & 1) ? t.U1 : t.U0;
   p[(axis + 2) % 3] = (c & 2) ? t.V1 : t.V0;

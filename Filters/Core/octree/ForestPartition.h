@@ -49,7 +49,7 @@ std::vector<int> PartitionTrees(const RootGrid& grid, int pieces);
 std::vector<TreeRole> TreeRoles(const RootGrid& grid, const std::vector<int>& pieceOfTree, int piece);
 
 /// Index of the tree containing a cell at `level` with integer coordinates `ijk`.
-inline int TreeOf(const RootGrid& grid, int level, const std::uint32_t ijk[3])
+inline int TreeOf(const RootGrid& grid, int level, const LatticeIndex ijk[3])
 {
   return grid.TreeIndex(
     static_cast<int>(ijk[0] >> level), static_cast<int>(ijk[1] >> level), static_cast<int>(ijk[2] >> level));

@@ -168,7 +168,7 @@ std::vector<Vec3> RankLatticeShifts(const PrimitiveSet& primitives, const RootGr
   }
   spacings.Surface = std::ldexp(base.RootSize, -std::min(level + 1, base.MaxDepth));
   spacings.Deepest = std::ldexp(base.RootSize, -std::min(maximumDepth, base.MaxDepth));
-  spacings.Finest = std::ldexp(base.RootSize, -base.MaxDepth);
+  spacings.Finest = std::ldexp(base.RootSize, -SampleDepth(base, maximumDepth));
 
   // Candidates: no shift, then a low-discrepancy (R3) sequence of fractions
   // of the surface cells (MakeRootGrid leaves a margin of a cell).

@@ -56,7 +56,7 @@ struct LatticeSpacings
 {
   double Surface = 1.0; ///< cells one level below the tolerance's (all along the surface)
   double Deepest = 1.0; ///< the deepest allowed cells
-  double Finest = 1.0;  ///< the lattice (face refinement samples down to it)
+  double Finest = 1.0;  ///< the finest face-refinement samples (SampleDepth, RootGrid.h)
 };
 
 /// Length of crease (in deepest cells) a lattice with this origin grazes,

@@ -25,7 +25,7 @@ public:
     const std::size_t mask = this->Keys.size() - 1;
     for (std::size_t i = Hash(key) & mask;; i = (i + 1) & mask)
     {
-      const std::uint64_t k = this->Keys[i];
+      const LatticeKey k = this->Keys[i];
       if (k == 0)
       {
         return -1;
@@ -61,22 +61,14 @@ public:
   }
 
   std::size_t Size() const { return this->Count; }
-  std::size_t MemoryBytes() const { return this->Keys.size() * 9; }
+  std::size_t MemoryBytes() const { return this->Keys.size() * (sizeof(LatticeKey) + 1); }
 
 private:
-  static std::size_t Hash(std::uint64_t k)
-  {
-    k ^= k >> 33;
-    k *= 0xff51afd7ed558ccdULL;
-    k ^= k >> 33;
-    k *= 0xc4ceb9fe1a85ec53ULL;
-    k ^= k >> 33;
-    return static_cast<std::size_t>(k);
-  }
+  static std::size_t Hash(PointKey k) { return HashKey(k); }
 
   void Grow()
   {
-    std::vector<std::uint64_t> oldKeys;
+    std::vector<LatticeKey> oldKeys;
     std::vector<std::uint8_t> oldInside;
     oldKeys.swap(this->Keys);
     oldInside.swap(this->Inside);
@@ -93,7 +85,7 @@ private:
     }
   }
 
-  std::vector<std::uint64_t> Keys; // key + 1; 0 marks an empty slot
+  std::vector<LatticeKey> Keys; // key + 1; 0 marks an empty slot
   std::vector<std::uint8_t> Inside;
   std::size_t Count = 0;
 };

@@ -17,6 +17,26 @@ int MaximumSupportedDepth(const int dims[3])
   return depth;
 }
 
+int DoublePrecisionDepth(const Box3& box, double rootSize)
+{
+  double largest = 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    largest = std::max({ largest, std::abs(box.lo[a]), std::abs(box.hi[a]) });
+  }
+  // largest = m 2^e with m in [0.5, 1): every coordinate's ulp is at most
+  // 2^(e - 53); the spacing rootSize * 2^-depth must be at least 2^4 of it.
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  const double ulp = std::ldexp(1.0, exponent - 53);
+  int depth = 0;
+  while (std::ldexp(rootSize, -(depth + 1)) >= 16.0 * ulp && depth < 1000)
+  {
+    ++depth;
+  }
+  return depth;
+}
+
 namespace
 {
 double LargestWidth(const Box3& domain, double tolerance)
@@ -88,7 +108,13 @@ RootGrid MakeRootGrid(const Box3& domain, double tolerance, int maximumDepth, in
   }
   // The lattice is always as fine as supported: face refinement samples
   // below the deepest cells.
-  grid.MaxDepth = MaximumSupportedDepth(grid.Dims);
+  Box3 covered;
+  for (int a = 0; a < 3; ++a)
+  {
+    covered.lo[a] = grid.Origin[a];
+    covered.hi[a] = grid.Origin[a] + grid.Dims[a] * size;
+  }
+  grid.MaxDepth = std::min(MaximumSupportedDepth(grid.Dims), DoublePrecisionDepth(covered, size));
   return grid;
 }
 

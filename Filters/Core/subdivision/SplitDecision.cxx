@@ -23,8 +23,11 @@ CellTests TestCell(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveS
   // A cell that keeps its mesh if it fails need not refine its faces far to
   // find out (ExactCellCriterion.h).
   const bool keepsOnFailure = parameters.ExactCells && limits.ToleranceSize && KeepsTheMesh(expression, true, false);
+  // Faces are sampled no deeper than SampleDepth (RootGrid.h).
+  const int levels =
+    std::max(0, std::min(FaceRefinementLevels, SampleDepth(tree.Grid, parameters.MaximumDepth) - limits.Level));
   tests.Verdict = TestMcCompatibility(tree, n, primitives, parameters.HausdorffTolerance,
-    keepsOnFailure ? ExactCellFaceRefinementLevels : FaceRefinementLevels);
+    keepsOnFailure ? std::min(levels, ExactCellFaceRefinementLevels) : levels);
   if (limits.ToleranceSize && tests.Verdict.Kind == McVerdict::Split)
   {
     tests.Facing = HasFacingSurfaces(

@@ -126,7 +126,7 @@ void LevelByLevel::MakeRoots()
     this->Grid.TreeCoordinates(t, ijk);
     for (int a = 0; a < 3; ++a)
     {
-      n.Ijk[a] = static_cast<std::uint32_t>(ijk[a]);
+      n.Ijk[a] = static_cast<LatticeIndex>(ijk[a]);
     }
     n.State = CellState::Outside;
   }
@@ -174,8 +174,8 @@ void LevelByLevel::PruneRoots(const int lo[3], const int hi[3], const CsgExpress
   Box3 box;
   for (int a = 0; a < 3; ++a)
   {
-    box.lo[a] = this->Grid.Coordinate(a, static_cast<std::uint32_t>(lo[a]) << this->Grid.MaxDepth);
-    box.hi[a] = this->Grid.Coordinate(a, static_cast<std::uint32_t>(hi[a]) << this->Grid.MaxDepth);
+    box.lo[a] = this->Grid.Coordinate(a, static_cast<LatticeIndex>(lo[a]) << this->Grid.MaxDepth);
+    box.hi[a] = this->Grid.Coordinate(a, static_cast<LatticeIndex>(hi[a]) << this->Grid.MaxDepth);
   }
   const auto pruned = CsgExpression::Prune(expression, box, this->Scene.Primitives);
   const bool single = hi[0] - lo[0] == 1 && hi[1] - lo[1] == 1 && hi[2] - lo[2] == 1;
@@ -218,7 +218,7 @@ bool LevelByLevel::EvaluateUnseenCorners()
       {
         for (int c = 0; c < 8; ++c)
         {
-          std::uint32_t p[3];
+          LatticeIndex p[3];
           CornerLattice(this->Grid, tree.Nodes[this->Active[i]], c, p);
           const PointKey key = MakePointKey(p[0], p[1], p[2]);
           if (tree.Signs.Find(key) < 0)
@@ -228,7 +228,7 @@ bool LevelByLevel::EvaluateUnseenCorners()
         }
       }
     },
-    [](const Corner& c) { return static_cast<std::size_t>((c.first * 0x9E3779B97F4A7C15ULL) >> 58); },
+    [](const Corner& c) { return HashKey(c.first) >> 58; },
     std::less<>(), [](const Corner& x, const Corner& y) { return x.first == y.first; }, this->For,
     this->Within(0.0, 0.1), unseen);
   if (!gathered || this->StopAt(0.1, 0xFFFF))

@@ -32,7 +32,7 @@ tpc::AdaptiveOctree UnitCellTree(const tpc::ImplicitScene& scene)
   tree.Expressions.push_back(scene.Expression);
   for (int c = 0; c < 8; ++c)
   {
-    std::uint32_t p[3];
+    tpc::LatticeIndex p[3];
     tpc::CornerLattice(tree.Grid, tree.Nodes[0], c, p);
     tree.Signs.Insert(tpc::MakePointKey(p[0], p[1], p[2]),
       scene.Expression->IsInside(tree.Grid.Point(p), scene.Primitives));

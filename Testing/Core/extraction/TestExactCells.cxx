@@ -64,7 +64,7 @@ TEST(MeshArrangement, TriangleOnALineAgreesWithMeshSolidCrossings)
   const tpc::RootGrid grid = QuarterLattice();
   const tpc::MeshSolid mesh = RandomTriangles(rng, 300);
   const tpc::MeshArrangement arrangement(mesh, grid);
-  std::uniform_int_distribution<std::uint32_t> lattice(0, 16);
+  std::uniform_int_distribution<tpc::LatticeIndex> lattice(0, 16);
   int crossings = 0, ties = 0;
   for (std::uint32_t t = 0; t < mesh.TriangleCount(); ++t)
   {
@@ -73,14 +73,14 @@ TEST(MeshArrangement, TriangleOnALineAgreesWithMeshSolidCrossings)
       const int axis = trial % 3, u = (axis + 1) % 3, v = (axis + 2) % 3;
       // Lines through the triangle's box, a third of them through a vertex
       // or an edge's midpoint where those lie on lattice lines.
-      std::uint32_t lo[3], hi[3];
+      tpc::LatticeIndex lo[3], hi[3];
       const Vec3& corner = mesh.Vertex(t, trial % 3);
       const Vec3 middle = (mesh.Vertex(t, trial % 3) + mesh.Vertex(t, (trial + 1) % 3)) * 0.5;
       const Vec3& aim = trial % 6 < 3 ? corner : middle;
       for (const int k : { u, v })
       {
         const double l = aim[k] * 4.0;
-        lo[k] = trial % 9 < 3 && l == std::floor(l) ? static_cast<std::uint32_t>(l) : lattice(rng);
+        lo[k] = trial % 9 < 3 && l == std::floor(l) ? static_cast<tpc::LatticeIndex>(l) : lattice(rng);
         hi[k] = lo[k];
       }
       lo[axis] = lattice(rng) % 12;
@@ -96,8 +96,8 @@ TEST(MeshArrangement, TriangleOnALineAgreesWithMeshSolidCrossings)
       // Only where the line meets the (perturbed) triangle: once below lo,
       // inside [lo, hi] or above hi - MeshSolid counts the middle case.
       const tpc::TriangleList none;
-      const std::uint32_t far[2] = { 0u, 16u };
-      std::uint32_t a[3] = { lo[0], lo[1], lo[2] }, b[3] = { lo[0], lo[1], lo[2] };
+      const tpc::LatticeIndex far[2] = { 0u, 16u };
+      tpc::LatticeIndex a[3] = { lo[0], lo[1], lo[2] }, b[3] = { lo[0], lo[1], lo[2] };
       a[axis] = far[0];
       b[axis] = far[1];
       if (mesh.CountCrossings(grid.Point(a), grid.Point(b), axis, only) == 0)
@@ -130,8 +130,8 @@ TEST(MeshArrangement, ClippedPiecesTileTheTriangle)
     double pieces = 0.0;
     for (std::uint32_t cell = 0; cell < 64; ++cell)
     {
-      const std::uint32_t lo[3] = { 4 * (cell % 4), 4 * ((cell / 4) % 4), 4 * (cell / 16) };
-      const std::uint32_t hi[3] = { lo[0] + 4, lo[1] + 4, lo[2] + 4 };
+      const tpc::LatticeIndex lo[3] = { 4 * (cell % 4), 4 * ((cell / 4) % 4), 4 * (cell / 16) };
+      const tpc::LatticeIndex hi[3] = { lo[0] + 4, lo[1] + 4, lo[2] + 4 };
       const std::vector<tpc::ClippedVertex> polygon = arrangement.ClipTriangle(t, lo, hi);
       tpc::Box3 box{ grid.Point(lo), grid.Point(hi) };
       Vec3 area;

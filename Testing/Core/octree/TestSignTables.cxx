@@ -16,7 +16,7 @@ using tpc::PointKey;
 TEST(LatticeSignTable, AgreesWithAMapThroughGrowth)
 {
   tpc::LatticeSignTable table;
-  std::unordered_map<PointKey, bool> reference;
+  std::unordered_map<PointKey, bool, tpc::LatticeKeyHash> reference;
   std::mt19937_64 random(7);
   EXPECT_EQ(table.Find(0), -1); // empty
   for (int i = 0; i < 20000; ++i)
@@ -30,7 +30,7 @@ TEST(LatticeSignTable, AgreesWithAMapThroughGrowth)
   EXPECT_EQ(table.Size(), reference.size());
   for (const auto& entry : reference)
   {
-    ASSERT_EQ(table.Find(entry.first), entry.second ? 1 : 0) << entry.first;
+    ASSERT_EQ(table.Find(entry.first), entry.second ? 1 : 0) << static_cast<std::uint64_t>(entry.first);
   }
   EXPECT_EQ(table.Find(tpc::MakePointKey(100, 100, 100)), -1);
   // Inserting a known key again changes nothing.
@@ -91,19 +91,19 @@ TEST(CellSignCache, ManyFreshSignsStayExactAndDistinct)
   }
   tpc::CellSignCache cache = s.Cache();
   std::mt19937 random(3);
-  std::unordered_map<PointKey, bool> asked;
+  std::unordered_map<PointKey, bool, tpc::LatticeKeyHash> asked;
   for (int k = 0; k < 5000; ++k)
   {
     const PointKey key = tpc::MakePointKey(random() % 1025, 512, random() % 1025);
     const bool inside = cache.Inside(key);
-    ASSERT_EQ(inside, s.Exact(key)) << key;
+    ASSERT_EQ(inside, s.Exact(key)) << static_cast<std::uint64_t>(key);
     asked.emplace(key, inside);
   }
-  std::unordered_map<PointKey, bool> fresh;
+  std::unordered_map<PointKey, bool, tpc::LatticeKeyHash> fresh;
   for (const auto& sign : cache.NewSigns())
   {
-    EXPECT_TRUE(fresh.emplace(sign.first, sign.second).second) << "evaluated twice: " << sign.first;
-    EXPECT_EQ(s.Global.Find(sign.first), -1) << "known to the table: " << sign.first;
+    EXPECT_TRUE(fresh.emplace(sign.first, sign.second).second) << "evaluated twice: " << static_cast<std::uint64_t>(sign.first);
+    EXPECT_EQ(s.Global.Find(sign.first), -1) << "known to the table: " << static_cast<std::uint64_t>(sign.first);
     EXPECT_EQ(sign.second, asked.at(sign.first));
   }
   std::size_t known = 0;

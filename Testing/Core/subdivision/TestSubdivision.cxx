@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -127,6 +128,35 @@ TEST(Subdivision, TangentialContactEndsAtTheLimitWithoutAGuarantee)
   EXPECT_GT(r.Subdivision.UnresolvedCells, 0u);
   EXPECT_TRUE(r.Report.Closed);
   EXPECT_TRUE(r.Report.Manifold);
+}
+
+TEST(Subdivision, NearContactSeparatesBelowTheOldLatticesEnd)
+{
+  // Two spheres of radius 0.5 whose gap is 1e-5 of a domain 2 wide. At
+  // MaximumDepth 16 the finest cell (about 3e-5) is wider than the gap: the
+  // cells there are stopped as surfaces too close, the guarantee withdrawn.
+  // At 24 the lattice (42 bits, RootGrid.h) lets refinement go below level
+  // 19, where the old 20-bit lattice ended, and the two surfaces separate:
+  // two components, guaranteed.
+  SceneBuilder b;
+  const double gap = 1e-5;
+  b.Finish(SceneBuilder::Union({ b.Sphere({ -0.5013, 0.0021, 0.0007 }, 0.5),
+    b.Sphere({ 0.4987 + gap, 0.0021, 0.0007 }, 0.5) }));
+  const Box3 bounds{ { -1.01, -0.51, -0.51 }, { 1.01, 0.51, 0.51 } };
+  const ContourRun stopped = Contour(b.Scene, bounds, 1.0 / 64, 16, 1);
+  EXPECT_GT(stopped.Subdivision.FacingSurfaceCells, 0u);
+  EXPECT_FALSE(stopped.Guaranteed);
+  const ContourRun separated = Contour(b.Scene, bounds, 1.0 / 64, 24, 1);
+  EXPECT_EQ(separated.Subdivision.UnresolvedCells, 0u);
+  EXPECT_TRUE(separated.Guaranteed);
+  EXPECT_EQ(separated.Report.Components, 2);
+  EXPECT_EQ(separated.Report.Genus, 0);
+  int deepest = 0;
+  for (const tpc::OctreeNode& n : separated.Subdivision.Octree.Nodes)
+  {
+    deepest = std::max(deepest, static_cast<int>(n.Level));
+  }
+  EXPECT_GT(deepest, 16);
 }
 
 TEST(Subdivision, LatticePlacementsDifferAndAllCoverTheDomain)
