@@ -210,7 +210,7 @@ public:
    * MaximumDepth is clamped to 40: the lattice reaches 2^-41 of the domain
    * (less far from the origin, where the coordinates' doubles run out first).
    * Raising it resolves thinner gaps between surfaces that face each other.
-   * Defaults: 16 and 10 000 000. Memory: at most about 100 MiB + 600 bytes x
+   * Defaults: 16 and 10 000 000. Memory: at most about 100 MiB + 800 bytes x
    * MaximumNumberOfCells beyond the inputs.
    */
   vtkSetClampMacro(MaximumDepth, int, 0, 40);
