@@ -336,10 +336,10 @@ MeshRepairReport RepairMesh(std::vector<Vec3>& points, std::vector<Triangle>& tr
   if (r.Closed() && r.NonManifoldEdges == 0)
   {
     CountNonManifoldVertices(triangles.data(), triangles.size(), points.size(), r.PinchedVertices);
-  }
-  if (r.Closed() && r.NonManifoldEdges == 0 && r.PinchedVertices == 0)
-  {
-    r.Genus = GenusFromEuler(static_cast<std::int64_t>(r.Components), r.EulerCharacteristic);
+    if (r.PinchedVertices == 0)
+    {
+      r.Genus = GenusFromEuler(static_cast<std::int64_t>(r.Components), r.EulerCharacteristic);
+    }
   }
   return r;
 }

@@ -25,6 +25,16 @@ double Volume(const std::vector<Vec3>& p, const Tris& t)
   }
   return v;
 }
+/// Appends `other` to the mesh (points, triangles) as one more shell.
+void AppendMesh(std::vector<Vec3>& points, Tris& triangles, const tpc::MeshSolid& other)
+{
+  const auto offset = static_cast<std::uint32_t>(points.size());
+  points.insert(points.end(), other.Points().begin(), other.Points().end());
+  for (auto f : other.Triangles())
+  {
+    triangles.push_back({ f[0] + offset, f[1] + offset, f[2] + offset });
+  }
+}
 } // namespace
 
 TEST(MeshRepair, CleanMeshIsUntouched)
@@ -65,12 +75,7 @@ TEST(MeshRepair, NestedShellFacesItsCavity)
   const tpc::MeshSolid inner = tpctest::SphereMesh({ 0.1, 0, 0 }, 0.5, 2);
   std::vector<Vec3> p = outer.Points();
   Tris t = outer.Triangles();
-  const auto offset = static_cast<std::uint32_t>(p.size());
-  p.insert(p.end(), inner.Points().begin(), inner.Points().end());
-  for (auto f : inner.Triangles())
-  {
-    t.push_back({ f[0] + offset, f[1] + offset, f[2] + offset });
-  }
+  AppendMesh(p, t, inner);
   const double before = Volume(p, t);
   const tpc::MeshRepairReport r = tpc::RepairMesh(p, t);
   EXPECT_EQ(r.Components, 2u);
@@ -121,12 +126,7 @@ TEST(MeshRepair, OpenMeshAndSelfIntersectionsAreReported)
   const tpc::MeshSolid other = tpctest::CubeMesh({ 0.5, 0.5, 0.5 }, { 1.5, 1.5, 1.5 });
   p = cube.Points();
   t = cube.Triangles();
-  const auto offset = static_cast<std::uint32_t>(p.size());
-  p.insert(p.end(), other.Points().begin(), other.Points().end());
-  for (auto f : other.Triangles())
-  {
-    t.push_back({ f[0] + offset, f[1] + offset, f[2] + offset });
-  }
+  AppendMesh(p, t, other);
   r = tpc::RepairMesh(p, t);
   EXPECT_GT(r.SelfIntersections, 0u);
   EXPECT_FALSE(r.MeetsAssumptions());
@@ -144,12 +144,7 @@ TEST(MeshRepair, SurfaceTouchingItselfAtAVertexIsReported)
   const tpc::MeshSolid b = tpctest::CubeMesh({ 1, 1, 1 }, { 2, 2, 2 });
   std::vector<Vec3> p = a.Points();
   Tris t = a.Triangles();
-  const auto offset = static_cast<std::uint32_t>(p.size());
-  p.insert(p.end(), b.Points().begin(), b.Points().end());
-  for (auto f : b.Triangles())
-  {
-    t.push_back({ f[0] + offset, f[1] + offset, f[2] + offset });
-  }
+  AppendMesh(p, t, b);
   const tpc::MeshRepairReport r = tpc::RepairMesh(p, t);
   EXPECT_EQ(r.MergedVertices, 1u);
   EXPECT_EQ(r.NonManifoldEdges, 0u);
@@ -163,11 +158,7 @@ TEST(MeshRepair, SurfaceTouchingItselfAtAVertexIsReported)
   const tpc::MeshSolid c = tpctest::CubeMesh({ 1.5, 1.5, 1.5 }, { 2, 2, 2 });
   p = a.Points();
   t = a.Triangles();
-  p.insert(p.end(), c.Points().begin(), c.Points().end());
-  for (auto f : c.Triangles())
-  {
-    t.push_back({ f[0] + offset, f[1] + offset, f[2] + offset });
-  }
+  AppendMesh(p, t, c);
   const tpc::MeshRepairReport apart = tpc::RepairMesh(p, t);
   EXPECT_EQ(apart.PinchedVertices, 0);
   EXPECT_TRUE(apart.MeetsAssumptions()) << apart.Describe();
