@@ -472,8 +472,10 @@ void DescribeUnresolvedCells(std::ostringstream& why, const SubdivisionResult& a
   {
     why << " " << all.FacingSurfaceCells
         << " of them because two surfaces face each other there closer than the finest cell (" << r.Placed.FinestCell
-        << "): solids touching along a face, or a gap or slab thinner than that, which no refinement separates "
-           "(SplitReason 10, SURFACES_TOO_CLOSE);";
+        << ") and no plane between them was found: solids touching along a face or at a point, a gap narrower "
+           "than a few lattice spacings ("
+        << std::ldexp(r.Placed.Grid.RootSize, -r.Placed.Grid.MaxDepth)
+        << "), or the edge of a very thin wedge, which no refinement separates (SplitReason 10, SURFACES_TOO_CLOSE);";
   }
   if (r.Placed.PlacementsTried > 1)
   {
@@ -486,8 +488,8 @@ void DescribeUnresolvedCells(std::ostringstream& why, const SubdivisionResult& a
   }
   if (all.FacingSurfaceCells > 0)
   {
-    why << " Overlap touching solids (or move them apart) by more than the finest cell; for a real thin gap or "
-           "slab, raise MaximumDepth.";
+    why << " Overlap touching solids, or move them apart, by more than a few lattice spacings; for a thin wedge, "
+           "raise MaximumDepth.";
   }
 }
 

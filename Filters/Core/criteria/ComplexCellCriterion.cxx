@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace tpc
@@ -61,7 +62,7 @@ RegionSign ProveConstantSign(const CsgExpressionPtr& expression,
 
 SplitReason FaceCompatibilityTest(const CsgExpressionPtr& expression,
   const PrimitiveSet& primitives, const Box3& face, int axis, const bool inside[4],
-  int* failingEdge)
+  int* failingEdge, double* opposite)
 {
   const bool change = inside[0] != inside[1] || inside[1] != inside[2] || inside[2] != inside[3];
   if (!change)
@@ -75,22 +76,9 @@ SplitReason FaceCompatibilityTest(const CsgExpressionPtr& expression,
   {
     return SplitReason::FaceAmbiguity;
   }
-  const int U = (axis + 1) % 3, V = (axis + 2) % 3;
-  const double u[4] = { face.lo[U], face.hi[U], face.hi[U], face.lo[U] };
-  const double v[4] = { face.lo[V], face.lo[V], face.hi[V], face.hi[V] };
   for (int k = 0; k < 4; ++k)
   {
-    const int l = (k + 1) % 4;
-    Vec3 a = face.lo, b = face.lo;
-    a[U] = u[k];
-    a[V] = v[k];
-    b[U] = u[l];
-    b[V] = v[l];
-    const int along = u[k] != u[l] ? U : V;
-    const bool lowerIsA = a[along] < b[along];
-    const EdgeCrossingCount n = CountEdgeCrossings(expression, primitives, lowerIsA ? a : b,
-      lowerIsA ? b : a, along, lowerIsA ? inside[k] : inside[l], lowerIsA ? inside[l] : inside[k]);
-    if (!n.Proven || n.Count >= 2)
+    if (!EdgeCrossedOnce(expression, primitives, face, axis, inside, k, opposite))
     {
       if (failingEdge)
       {
@@ -106,16 +94,40 @@ SplitReason FaceCompatibilityTest(const CsgExpressionPtr& expression,
   return SplitReason::None;
 }
 
+bool EdgeCrossedOnce(const CsgExpressionPtr& expression, const PrimitiveSet& primitives, const Box3& face,
+  int axis, const bool inside[4], int k, double* opposite)
+{
+  const int U = (axis + 1) % 3, V = (axis + 2) % 3;
+  const double u[4] = { face.lo[U], face.hi[U], face.hi[U], face.lo[U] };
+  const double v[4] = { face.lo[V], face.lo[V], face.hi[V], face.hi[V] };
+  const int l = (k + 1) % 4;
+  Vec3 a = face.lo, b = face.lo;
+  a[U] = u[k];
+  a[V] = v[k];
+  b[U] = u[l];
+  b[V] = v[l];
+  const int along = u[k] != u[l] ? U : V;
+  const bool lowerIsA = a[along] < b[along];
+  double between = std::numeric_limits<double>::quiet_NaN();
+  const bool ask = opposite && inside[k] == inside[l];
+  const EdgeCrossingCount n = CountEdgeCrossings(expression, primitives, lowerIsA ? a : b, lowerIsA ? b : a,
+    along, lowerIsA ? inside[k] : inside[l], lowerIsA ? inside[l] : inside[k], 24, ask ? &between : nullptr);
+  if (ask && (between - face.lo[along]) * (face.hi[along] - between) > 0.0) // (false for NaN)
+  {
+    *opposite = between;
+  }
+  return n.Proven && n.Count <= 1;
+}
+
 namespace
 {
 /// Lattice extent of each loop. A crossing is only known to lie on its
-/// sub-edge; bisection on exact signs narrows it to a sixteenth of the cell.
+/// sub-edge; bisection on exact signs narrows it to `target` lattice units.
 std::vector<std::array<LatticeIndex, 6>> LoopExtents(const BoundaryLoopSet& loops,
   const CsgExpression& expression, const PrimitiveSet& prims, const RootGrid& grid,
-  LatticeIndex cellSize)
+  LatticeIndex target)
 {
   std::vector<std::array<LatticeIndex, 6>> extents;
-  const LatticeIndex target = std::max<LatticeIndex>(1, cellSize / 16);
   std::size_t offset = 0;
   for (const std::uint32_t size : loops.LoopSizes)
   {
@@ -148,16 +160,14 @@ std::vector<std::array<LatticeIndex, 6>> LoopExtents(const BoundaryLoopSet& loop
 }
 } // namespace
 
-bool LoopsSeparated(const BoundaryLoopSet& loops, const CsgExpressionPtr& expression,
-  const PrimitiveSet& primitives, const RootGrid& grid, const Box3& cell)
+namespace
 {
-  LatticeIndex size = 1;
-  for (int a = 0; a < 3; ++a)
-  {
-    // Lattice size of the cell from its world size (exact enough for a bound).
-    size = std::max(size, static_cast<LatticeIndex>(std::llround(cell.Width(a) / std::ldexp(grid.RootSize, -grid.MaxDepth))));
-  }
-  const auto extents = LoopExtents(loops, *expression, primitives, grid, size);
+bool SeparatedWithin(const BoundaryLoopSet& loops, const CsgExpressionPtr& expression,
+  const PrimitiveSet& primitives, const RootGrid& grid, const Box3& cell, LatticeIndex target,
+  std::vector<Box3>& regions)
+{
+  const auto extents = LoopExtents(loops, *expression, primitives, grid, target);
+  regions.assign(extents.size(), cell);
   for (std::size_t i = 0; i < extents.size(); ++i)
   {
     for (std::size_t j = i + 1; j < extents.size(); ++j)
@@ -180,6 +190,14 @@ bool LoopsSeparated(const BoundaryLoopSet& loops, const CsgExpressionPtr& expres
             0.5 * (grid.Coordinate(a, low[3 + a]) + grid.Coordinate(a, high[a]));
           separated = ProveConstantSign(expression, primitives, section, ConstantProofDepth,
                         ConstantProofBudget) != RegionSign::Mixed;
+          if (separated)
+          {
+            const double at = section.lo[a];
+            Box3& below = regions[order == 0 ? i : j];
+            Box3& above = regions[order == 0 ? j : i];
+            below.hi[a] = std::min(below.hi[a], at);
+            above.lo[a] = std::max(above.lo[a], at);
+          }
         }
       }
       if (!separated)
@@ -190,15 +208,44 @@ bool LoopsSeparated(const BoundaryLoopSet& loops, const CsgExpressionPtr& expres
   }
   return true;
 }
+} // namespace
+
+bool LoopsSeparated(const BoundaryLoopSet& loops, const CsgExpressionPtr& expression,
+  const PrimitiveSet& primitives, const RootGrid& grid, const Box3& cell, std::vector<Box3>* regions)
+{
+  LatticeIndex size = 1;
+  for (int a = 0; a < 3; ++a)
+  {
+    // Lattice size of the cell from its world size (exact enough for a bound).
+    size = std::max(size, static_cast<LatticeIndex>(std::llround(cell.Width(a) / std::ldexp(grid.RootSize, -grid.MaxDepth))));
+  }
+  // A sixteenth of the cell separates loops of surfaces that are apart by
+  // more than that (most cells, cheaply); surfaces passing closer - a near
+  // contact - are located down to the lattice, so that a gap of a few
+  // lattice spacings is found without refining the cell down to the gap.
+  std::vector<Box3> found;
+  const bool separated =
+    SeparatedWithin(loops, expression, primitives, grid, cell, std::max<LatticeIndex>(1, size / 16), found) ||
+    (size > 16 && SeparatedWithin(loops, expression, primitives, grid, cell, 1, found));
+  if (separated && regions)
+  {
+    *regions = std::move(found);
+  }
+  return separated;
+}
 
 SplitReason VoxelCompatibilityTest(const BoundaryLoopSet& loops, const CsgExpressionPtr& expression,
-  const PrimitiveSet& primitives, const RootGrid& grid, const Box3& cell)
+  const PrimitiveSet& primitives, const RootGrid& grid, const Box3& cell, std::vector<Box3>* loopRegions)
 {
+  if (loopRegions)
+  {
+    loopRegions->assign(1, cell);
+  }
   if (loops.LoopSizes.empty() || !loops.Consistent)
   {
     return SplitReason::ComplexVoxel;
   }
-  if (loops.LoopSizes.size() > 1 && !LoopsSeparated(loops, expression, primitives, grid, cell))
+  if (loops.LoopSizes.size() > 1 && !LoopsSeparated(loops, expression, primitives, grid, cell, loopRegions))
   {
     return SplitReason::VoxelAmbiguity;
   }

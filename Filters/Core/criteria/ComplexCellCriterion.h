@@ -44,10 +44,18 @@ Box3 FaceBox(const Box3& cell, int face);
 /// corner signs in the cyclic order (u0,v0), (u1,v0), (u1,v1), (u0,v1) with
 /// u = axis + 1, v = axis + 2 (mod 3). The expression must be valid on the face.
 /// For ComplexEdge, `failingEdge` (if given) receives k: the edge from corner
-/// k to corner k + 1 in that order.
+/// k to corner k + 1 in that order, and `opposite` (if given) the coordinate
+/// along it of a point strictly inside it whose sign differs from its ends',
+/// when the crossing count met one (else it is left unchanged): a point in
+/// the gap or wedge between two crossings.
 SplitReason FaceCompatibilityTest(const CsgExpressionPtr& expression,
   const PrimitiveSet& primitives, const Box3& face, int axis, const bool inside[4],
-  int* failingEdge = nullptr);
+  int* failingEdge = nullptr, double* opposite = nullptr);
+
+/// Edge k of a face (corners as for FaceCompatibilityTest) is crossed at
+/// most once, proven. `opposite` as above, asked only when its ends agree.
+bool EdgeCrossedOnce(const CsgExpressionPtr& expression, const PrimitiveSet& primitives, const Box3& face,
+  int axis, const bool inside[4], int k, double* opposite);
 
 /// Several loops on a cell boundary bound either several disks or pieces
 /// joined inside the cell (a tube: the voxel ambiguity). They bound different
@@ -55,16 +63,25 @@ SplitReason FaceCompatibilityTest(const CsgExpressionPtr& expression,
 /// of the cell the surface provably misses: no piece can cross it. Near a
 /// shallow crease, where a cell often holds a bit of each wall but not the
 /// crease itself, this avoids refining what is already two simple disks.
+/// The planes are placed between the loops' extents, located first to a
+/// sixteenth of the cell, then (if that does not separate them) to the
+/// lattice: surfaces passing closer than the cell - a near contact - are
+/// separated at any gap wider than a few lattice spacings, without refining
+/// down to the gap. `regions`, when separated: per loop, the cell cut by
+/// the planes separating it from the others, on its side - a box that holds
+/// that loop and no other, and whose cut sides the surface misses.
 bool LoopsSeparated(const BoundaryLoopSet& loops, const CsgExpressionPtr& expression,
-  const PrimitiveSet& primitives, const RootGrid& grid, const Box3& cell);
+  const PrimitiveSet& primitives, const RootGrid& grid, const Box3& cell, std::vector<Box3>* regions = nullptr);
 
 /// The voxel part of the complex-cell test, from the loops the surface draws
 /// on the boundary of a cell (not proven free of the surface): ComplexVoxel
 /// when there is none (the surface may meet the voxel but shows no sign
 /// change on its boundary) or they do not close, VoxelAmbiguity when
 /// several are not proven to bound different pieces (Fig. 2(d): two corners
-/// joined by a tube, or not), else None.
+/// joined by a tube, or not), else None. `loopRegions` receives the boxes in
+/// which the star-shaped test must hold, one per loop (LoopsSeparated), or
+/// the cell alone.
 SplitReason VoxelCompatibilityTest(const BoundaryLoopSet& loops, const CsgExpressionPtr& expression,
-  const PrimitiveSet& primitives, const RootGrid& grid, const Box3& cell);
+  const PrimitiveSet& primitives, const RootGrid& grid, const Box3& cell, std::vector<Box3>* loopRegions = nullptr);
 
 } // namespace tpc

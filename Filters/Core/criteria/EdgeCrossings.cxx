@@ -13,9 +13,20 @@ namespace
 /// surface grazing the edge) would visit 2^depth pieces.
 constexpr int MaximumPieces = 4096;
 
-EdgeCrossingCount Count(const CsgExpressionPtr& expression, const PrimitiveSet& prims,
-  const Vec3& a, const Vec3& b, int axis, bool inA, bool inB, int budget, int& pieces)
+/// What one count gathers besides the count: the pieces examined, and the
+/// first bisection point whose sign differs from the sign at the edge's
+/// lower end (a point inside a gap or wedge between two crossings).
+struct CountState
 {
+  int Pieces = 0;
+  bool LowerInside = false;
+  double* Opposite = nullptr;
+};
+
+EdgeCrossingCount Count(const CsgExpressionPtr& expression, const PrimitiveSet& prims,
+  const Vec3& a, const Vec3& b, int axis, bool inA, bool inB, int budget, CountState& state)
+{
+  int& pieces = state.Pieces;
   if (++pieces > MaximumPieces)
   {
     return { 0, false };
@@ -85,12 +96,17 @@ EdgeCrossingCount Count(const CsgExpressionPtr& expression, const PrimitiveSet& 
     return { 0, false }; // no representable midpoint left
   }
   const bool inM = pruned.Expression->IsInside(m, prims);
-  const EdgeCrossingCount left = Count(pruned.Expression, prims, a, m, axis, inA, inM, budget - 1, pieces);
+  if (state.Opposite && inM != state.LowerInside)
+  {
+    *state.Opposite = m[axis];
+    state.Opposite = nullptr;
+  }
+  const EdgeCrossingCount left = Count(pruned.Expression, prims, a, m, axis, inA, inM, budget - 1, state);
   if (!left.Proven || left.Count >= 2)
   {
     return left;
   }
-  const EdgeCrossingCount right = Count(pruned.Expression, prims, m, b, axis, inM, inB, budget - 1, pieces);
+  const EdgeCrossingCount right = Count(pruned.Expression, prims, m, b, axis, inM, inB, budget - 1, state);
   return { left.Count + right.Count, right.Proven };
 }
 /// Illinois (modified regula falsi) on the floating-point field between `a`
@@ -213,7 +229,7 @@ Vec3 BisectOnExactSigns(
 
 EdgeCrossingCount CountEdgeCrossings(const CsgExpressionPtr& expression,
   const PrimitiveSet& primitives, const Vec3& a, const Vec3& b, int axis, bool insideA,
-  bool insideB, int maxBisections)
+  bool insideB, int maxBisections, double* opposite)
 {
   // A lone mesh leaf (remeshing): its crossings with the cell's triangles are
   // counted exactly, with the perturbation that decides the signs. The
@@ -225,8 +241,10 @@ EdgeCrossingCount CountEdgeCrossings(const CsgExpressionPtr& expression,
   {
     return { primitives.Meshes[root.LeafData.Primitive].CountCrossings(a, b, axis, *root.Triangles), true };
   }
-  int pieces = 0;
-  return Count(expression, primitives, a, b, axis, insideA, insideB, maxBisections, pieces);
+  CountState state;
+  state.LowerInside = insideA;
+  state.Opposite = opposite;
+  return Count(expression, primitives, a, b, axis, insideA, insideB, maxBisections, state);
 }
 
 Vec3 FindEdgeCrossing(const CsgExpression& expression, const PrimitiveSet& primitives,

@@ -25,10 +25,14 @@ struct EdgeCrossingCount
 
 /// Counts crossings on the segment from `a` to `b` (which differ only along
 /// `axis`); `insideA`/`insideB` are the exact signs at the endpoints. Stops
-/// early once two crossings are found.
+/// early once two crossings are found. `opposite` (if given) receives the
+/// coordinate along `axis` of a bisection point whose sign differs from
+/// `insideA`, when one was met: with equal end signs, a point between two
+/// crossings - inside a gap or a wedge however thin, which samples at fixed
+/// spacings miss (left unchanged otherwise; a lone mesh leaf never sets it).
 EdgeCrossingCount CountEdgeCrossings(const CsgExpressionPtr& expression,
   const PrimitiveSet& primitives, const Vec3& a, const Vec3& b, int axis, bool insideA,
-  bool insideB, int maxBisections = 24);
+  bool insideB, int maxBisections = 24, double* opposite = nullptr);
 
 /// A point of the surface on a segment whose endpoint signs differ (root
 /// finding on the exact field, paper 4.3), with `insideA` the sign at a.

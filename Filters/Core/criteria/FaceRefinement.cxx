@@ -2,6 +2,9 @@
 
 #include "ComplexCellCriterion.h"
 
+#include <cmath>
+#include <limits>
+
 namespace tpc
 {
 
@@ -26,11 +29,16 @@ struct FaceRefiner
   /// at every level with the same odds (it slips between the corners again);
   /// splitting at a sample of the opposite sign puts a corner inside the
   /// wedge, which settles it at once.
-  void SplitPoint(const FaceTile& t, SplitReason why, int edge, const bool inside[4],
-    LatticeIndex& us, LatticeIndex& vs)
+  void SplitPoint(const FaceTile& t, const Box3& face, SplitReason why, int edge, double opposite,
+    const bool inside[4], LatticeIndex& us, LatticeIndex& vs)
   {
     us = t.U0 + (t.U1 - t.U0) / 2;
     vs = t.V0 + (t.V1 - t.V0) / 2;
+    if (why == SplitReason::ComplexEdge && edge >= 0 && inside[edge] == inside[(edge + 1) % 4] &&
+      this->LatticePointOfOppositeSign(t, edge, opposite, inside[edge], us, vs))
+    {
+      return;
+    }
     constexpr int Samples = 8;
     if (why == SplitReason::ComplexFace)
     {
@@ -47,6 +55,20 @@ struct FaceRefiner
             vs = v;
             return;
           }
+        }
+      }
+      // None: a gap or wedge too thin for the samples may still cross an
+      // edge twice, where the crossing count finds a point inside it. (Not
+      // with mesh leaves: measured on CGAL's joint - knot1 at 1/64, splitting
+      // there left one cell with two loops no plane separates, where the
+      // midpoint split resolves.)
+      for (int k = 0; k < 4 && !this->Expression->HasMeshLeaves(); ++k)
+      {
+        double point = std::numeric_limits<double>::quiet_NaN();
+        EdgeCrossedOnce(this->Expression, this->Primitives, face, this->Axis, inside, k, &point);
+        if (this->LatticePointOfOppositeSign(t, k, point, inside[k], us, vs))
+        {
+          return;
         }
       }
     }
@@ -72,6 +94,42 @@ struct FaceRefiner
     }
   }
 
+  /// The crossing count of a twice-crossed edge met a point of the other
+  /// sign (`opposite`, a world coordinate along the edge; NaN if none):
+  /// a lattice point beside it has that sign too unless the gap or wedge is
+  /// thinner than the lattice there. Splitting there puts a tile corner in
+  /// it whatever its width; then in the child holding a wedge's apex both
+  /// sides leave through different edges with odds 1/2 per level, so the
+  /// face ends in a few levels where fixed samples would need ~1/angle.
+  bool LatticePointOfOppositeSign(const FaceTile& t, int edge, double opposite, bool endsInside,
+    LatticeIndex& us, LatticeIndex& vs)
+  {
+    if (std::isnan(opposite))
+    {
+      return false;
+    }
+    const bool alongU = edge == 0 || edge == 2;
+    const int axis = (this->Axis + (alongU ? 1 : 2)) % 3;
+    const LatticeIndex fixed = edge == 0 ? t.V0 : edge == 1 ? t.U1 : edge == 2 ? t.V1 : t.U0;
+    const LatticeIndex a = alongU ? t.U0 : t.V0, b = alongU ? t.U1 : t.V1;
+    const double spacing = std::ldexp(this->Grid.RootSize, -this->Grid.MaxDepth);
+    const double index = std::floor((opposite - this->Grid.Origin[axis]) / spacing);
+    for (const double candidate : { index, index + 1.0, index - 1.0, index + 2.0 })
+    {
+      if (!(candidate > static_cast<double>(a) && candidate < static_cast<double>(b)))
+      {
+        continue;
+      }
+      const LatticeIndex x = static_cast<LatticeIndex>(candidate);
+      if ((alongU ? this->Inside(x, fixed) : this->Inside(fixed, x)) != endsInside)
+      {
+        (alongU ? us : vs) = x;
+        return true;
+      }
+    }
+    return false;
+  }
+
   bool Refine(const FaceTile& t, int levels)
   {
     const bool inside[4] = { this->Inside(t.U0, t.V0), this->Inside(t.U1, t.V0),
@@ -84,8 +142,9 @@ struct FaceRefiner
     face.lo[V] = this->Grid.Coordinate(V, t.V0);
     face.hi[V] = this->Grid.Coordinate(V, t.V1);
     int edge = -1;
+    double opposite = std::numeric_limits<double>::quiet_NaN();
     const SplitReason r =
-      FaceCompatibilityTest(this->Expression, this->Primitives, face, this->Axis, inside, &edge);
+      FaceCompatibilityTest(this->Expression, this->Primitives, face, this->Axis, inside, &edge, &opposite);
     if (r == SplitReason::None)
     {
       this->Result.Tiles.push_back(t);
@@ -97,7 +156,7 @@ struct FaceRefiner
       return false;
     }
     LatticeIndex us, vs;
-    this->SplitPoint(t, r, edge, inside, us, vs);
+    this->SplitPoint(t, face, r, edge, opposite, inside, us, vs);
     return this->Refine({ t.U0, t.V0, us, vs }, levels - 1) &&
       this->Refine({ us, t.V0, t.U1, vs }, levels - 1) &&
       this->Refine({ t.U0, vs, us, t.V1 }, levels - 1) &&

@@ -103,15 +103,27 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   {
     return v;
   }
-  v.Reason = VoxelCompatibilityTest(TraceBoundaryLoops(boundary), expression, prims, grid, box);
+  std::vector<Box3> loopRegions;
+  v.Reason = VoxelCompatibilityTest(TraceBoundaryLoops(boundary), expression, prims, grid, box, &loopRegions);
   if (v.Reason != SplitReason::None)
   {
     return v;
   }
-  if (!IsStarShapedWithRespectToVoxel(expression, prims, box))
+  // Several loops: each is tested in its own region, bounded by the cell and
+  // by planes the surface misses (LoopsSeparated). There the surface's only
+  // boundary is that loop, so a verified witness (StarShapedCriterion.h)
+  // makes it one disc - while two sheets facing each other across a near
+  // contact have no common witness in the whole cell.
+  for (const Box3& region : loopRegions)
   {
-    v.Reason = SplitReason::NotStarShapedVoxel;
-    return v;
+    // (Pruned to the region: the other loops' leaves are absent from it.)
+    const auto pruned = loopRegions.size() > 1 ? CsgExpression::Prune(expression, region, prims)
+                                               : CsgExpression::Pruned{ RegionSign::Mixed, expression };
+    if (pruned.Sign == RegionSign::Mixed && !IsStarShapedWithRespectToVoxel(pruned.Expression, prims, region))
+    {
+      v.Reason = SplitReason::NotStarShapedVoxel;
+      return v;
+    }
   }
   v.Kind = McVerdict::Pass;
   v.Reason = SplitReason::None;

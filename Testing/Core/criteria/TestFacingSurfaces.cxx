@@ -116,6 +116,51 @@ TEST(FacingSurfaces, BoxesSharingAFaceStopAtTheToleranceSizeWithoutAGuarantee)
   const tpc::TopologyReport t = tpc::ComputeTopologyReport(e.Mesh);
   EXPECT_TRUE(t.Closed);
   EXPECT_TRUE(t.Manifold);
+  // Flagged, yet the union's topology - one box - with no piece invented in
+  // the stopped cells.
+  EXPECT_EQ(t.Components, 1);
+  EXPECT_EQ(t.Genus, 0);
+}
+
+TEST(FacingSurfaces, SpheresTouchingAtAPointAreFlaggedWithoutExtraPieces)
+{
+  // Tangential contact at one point: flagged (never passes, paper 5.3.3),
+  // said why, and still two spheres' worth of surface - the contact is
+  // either kept apart or joined, never a bubble or a sliver.
+  SceneBuilder b;
+  b.Finish(SceneBuilder::Union(
+    { b.Sphere({ -0.5013, 0.0021, 0.0007 }, 0.5), b.Sphere({ 0.4987, 0.0021, 0.0007 }, 0.5) }));
+  const tpctest::ContourRun r = tpctest::Contour(b.Scene, { { -1.01, -0.51, -0.51 }, { 1.01, 0.51, 0.51 } }, 1.0 / 64);
+  EXPECT_FALSE(r.Guaranteed);
+  EXPECT_GT(r.Subdivision.FacingSurfaceCells, 0u);
+  ASSERT_FALSE(r.Messages.empty());
+  EXPECT_NE(r.Messages.front().Text.find("SURFACES_TOO_CLOSE"), std::string::npos) << r.Messages.front().Text;
+  EXPECT_TRUE(r.Report.Closed);
+  EXPECT_TRUE(r.Report.Manifold);
+  EXPECT_GE(r.Report.Components, 1);
+  EXPECT_LE(r.Report.Components, 2);
+  EXPECT_EQ(r.Report.Genus, 0);
+}
+
+TEST(FacingSurfaces, AGapFarBelowTheFinestCellIsSeparatedAtTheTolerancesSize)
+{
+  // Two boxes 1e-7 apart, far below the finest cell of MaximumDepth 16:
+  // the two faces' loops are located down to the lattice and a plane in the
+  // gap separates them (LoopsSeparated), so the cells pass at the
+  // tolerance's size - neither stopped as too close nor refined to the gap.
+  SceneBuilder b;
+  b.Finish(SceneBuilder::Union({ b.Box({ 0, 0, 0 }, { 1, 1, 1 }), b.Box({ 1 + 1e-7, 0, 0 }, { 2, 1, 1 }) }));
+  const Box3 bounds{ { 0, 0, 0 }, { 2, 1, 1 } };
+  const tpctest::ContourRun r = tpctest::Contour(b.Scene, bounds, 0.02);
+  EXPECT_TRUE(r.Guaranteed);
+  EXPECT_EQ(r.Subdivision.FacingSurfaceCells, 0u);
+  EXPECT_EQ(r.Report.Components, 2);
+  EXPECT_EQ(r.Report.Genus, 0);
+  const int toleranceLevel = tpc::ToleranceLevel(tpctest::GrownDomain(bounds), r.Tolerance);
+  for (const tpc::OctreeNode& n : r.Subdivision.Octree.Nodes)
+  {
+    EXPECT_LE(n.Level, toleranceLevel + 1);
+  }
 }
 
 TEST(FacingSurfaces, AGapOfAFewFinestCellsIsStillResolved)

@@ -124,6 +124,30 @@ TEST(Quadric, CentredFormIsTightOnSmallBoxes)
   }
 }
 
+TEST(Quadric, EnclosureProvesANearContactGap)
+{
+  // A box a gap away from a sphere, wide next to the gap (a cell beside a
+  // near contact): the centred forms lose ~ width^2, the form centred at the
+  // sphere's own centre is exact up to rounding, so gaps down to ~1e-12 of
+  // the radius are proven - and a box reaching into the sphere never is.
+  const Vec3 centre{ 0.4987, 0.0021, 0.0007 };
+  const Quadric q = Quadric::Sphere(centre, 0.5);
+  const Quadric moved = Quadric::Ellipsoid(centre, { 0.5, 0.25, 1.0 });
+  for (const double gap : { 1e-3, 1e-6, 1e-9, 1e-11 })
+  {
+    const double face = centre[0] - 0.5 - gap;
+    const Box3 box{ { face - 0.03, -0.02, -0.015 }, { face, 0.025, 0.02 } };
+    EXPECT_GT(q.Enclose(box).lo, 0.0) << gap;
+    const double ellipsoidFace = centre[0] - 0.5 - gap;
+    const Box3 beside{ { ellipsoidFace - 0.03, -0.02, -0.015 }, { ellipsoidFace, 0.025, 0.02 } };
+    EXPECT_GT(moved.Enclose(beside).lo, 0.0) << gap;
+    Box3 into = box;
+    into.hi[0] = face + 2 * gap;
+    EXPECT_LE(q.Enclose(into).lo, 0.0) << gap;
+    EXPECT_GE(q.Enclose(into).hi, 0.0) << gap;
+  }
+}
+
 TEST(Quadric, ExactSignMatchesQuadPrecision)
 {
   std::mt19937_64 rng(5);

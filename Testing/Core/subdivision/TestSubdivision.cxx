@@ -130,33 +130,67 @@ TEST(Subdivision, TangentialContactEndsAtTheLimitWithoutAGuarantee)
   EXPECT_TRUE(r.Report.Manifold);
 }
 
-TEST(Subdivision, NearContactSeparatesBelowTheOldLatticesEnd)
+TEST(Subdivision, NearContactsSeparateWithoutRefiningToTheGap)
 {
-  // Two spheres of radius 0.5 whose gap is 1e-5 of a domain 2 wide. At
-  // MaximumDepth 16 the finest cell (about 3e-5) is wider than the gap: the
-  // cells there are stopped as surfaces too close, the guarantee withdrawn.
-  // At 24 the lattice (42 bits, RootGrid.h) lets refinement go below level
-  // 19, where the old 20-bit lattice ended, and the two surfaces separate:
-  // two components, guaranteed.
+  // Two spheres of radius 0.5 whose gap is 1e-3, 1e-6, 1e-9 of a domain 2
+  // wide, at the default MaximumDepth (16: finest cell about 3e-5, wider
+  // than the two smaller gaps). The loops on either side of the gap are
+  // located down to the lattice and separated by a plane in the gap that
+  // the surface provably misses (LoopsSeparated); each cap passes the
+  // star-shaped test on its own side. So the cells at the contact pass at
+  // the tolerance's size: two components, guaranteed, no cell stopped as
+  // "surfaces too close", nothing refined towards the gap.
+  for (const double gap : { 1e-3, 1e-6, 1e-9 })
+  {
+    SceneBuilder b;
+    b.Finish(SceneBuilder::Union({ b.Sphere({ -0.5013, 0.0021, 0.0007 }, 0.5),
+      b.Sphere({ 0.4987 + 2 * gap, 0.0021, 0.0007 }, 0.5) }));
+    const Box3 bounds{ { -1.01, -0.51, -0.51 }, { 1.01, 0.51, 0.51 } };
+    for (const double tolerance : { 1.0 / 32, 1.0 / 64 })
+    {
+      const ContourRun r = Contour(b.Scene, bounds, tolerance);
+      EXPECT_TRUE(r.Guaranteed) << gap << " " << tolerance;
+      EXPECT_EQ(r.Subdivision.FacingSurfaceCells, 0u) << gap;
+      EXPECT_EQ(r.Subdivision.UnresolvedCells, 0u) << gap;
+      EXPECT_EQ(r.Report.Components, 2) << gap;
+      EXPECT_EQ(r.Report.Genus, 0) << gap;
+      EXPECT_TRUE(r.Report.Closed && r.Report.Manifold) << gap;
+      int deepest = 0;
+      for (const tpc::OctreeNode& n : r.Subdivision.Octree.Nodes)
+      {
+        deepest = std::max(deepest, static_cast<int>(n.Level));
+      }
+      EXPECT_LE(deepest, 12) << gap << ": refined towards the gap";
+    }
+  }
+}
+
+TEST(Subdivision, SmallComponentResolvesBelowTheOldLatticesEnd)
+{
+  // A bubble of radius 1e-7 beside a sphere, in a domain 2 wide: its cells
+  // must reach level 22 or so before a corner falls inside it. At
+  // MaximumDepth 16 the cells around it are stopped at the limit, the
+  // guarantee withdrawn. At 24 the lattice (42 bits, RootGrid.h) lets
+  // refinement go below level 19, where the old 20-bit lattice ended: two
+  // components, guaranteed.
   SceneBuilder b;
-  const double gap = 1e-5;
-  b.Finish(SceneBuilder::Union({ b.Sphere({ -0.5013, 0.0021, 0.0007 }, 0.5),
-    b.Sphere({ 0.4987 + gap, 0.0021, 0.0007 }, 0.5) }));
+  b.Finish(SceneBuilder::Union(
+    { b.Sphere({ -0.5013, 0.0021, 0.0007 }, 0.5), b.Sphere({ 0.7071, 0.0123, -0.0031 }, 1e-7) }));
   const Box3 bounds{ { -1.01, -0.51, -0.51 }, { 1.01, 0.51, 0.51 } };
-  const ContourRun stopped = Contour(b.Scene, bounds, 1.0 / 64, 16, 1);
-  EXPECT_GT(stopped.Subdivision.FacingSurfaceCells, 0u);
+  const ContourRun stopped = Contour(b.Scene, bounds, 1.0 / 32, 16, 1);
+  EXPECT_TRUE(stopped.Subdivision.DepthLimitReached);
   EXPECT_FALSE(stopped.Guaranteed);
-  const ContourRun separated = Contour(b.Scene, bounds, 1.0 / 64, 24, 1);
-  EXPECT_EQ(separated.Subdivision.UnresolvedCells, 0u);
-  EXPECT_TRUE(separated.Guaranteed);
-  EXPECT_EQ(separated.Report.Components, 2);
-  EXPECT_EQ(separated.Report.Genus, 0);
+  const ContourRun resolved = Contour(b.Scene, bounds, 1.0 / 32, 24, 1);
+  EXPECT_EQ(resolved.Subdivision.UnresolvedCells, 0u);
+  EXPECT_TRUE(resolved.Guaranteed);
+  EXPECT_EQ(resolved.Report.Components, 2);
+  EXPECT_EQ(resolved.Report.Genus, 0);
   int deepest = 0;
-  for (const tpc::OctreeNode& n : separated.Subdivision.Octree.Nodes)
+  for (const tpc::OctreeNode& n : resolved.Subdivision.Octree.Nodes)
   {
     deepest = std::max(deepest, static_cast<int>(n.Level));
   }
-  EXPECT_GT(deepest, 16);
+  EXPECT_GT(deepest, 19);
 }
 
 TEST(Subdivision, LatticePlacementsDifferAndAllCoverTheDomain)
