@@ -2,6 +2,7 @@
 
 #include "CubeTopology.h"
 #include "EdgeCrossings.h"
+#include "SeparatingPlane.h"
 #include "StarShapedCriterion.h"
 
 #include <algorithm>
@@ -95,7 +96,7 @@ SplitReason FaceCompatibilityTest(const CsgExpressionPtr& expression,
 }
 
 bool EdgeCrossedOnce(const CsgExpressionPtr& expression, const PrimitiveSet& primitives, const Box3& face,
-  int axis, const bool inside[4], int k, double* opposite)
+  int axis, const bool inside[4], int k, double* opposite, int maxPieces)
 {
   const int U = (axis + 1) % 3, V = (axis + 2) % 3;
   const double u[4] = { face.lo[U], face.hi[U], face.hi[U], face.lo[U] };
@@ -111,7 +112,8 @@ bool EdgeCrossedOnce(const CsgExpressionPtr& expression, const PrimitiveSet& pri
   double between = std::numeric_limits<double>::quiet_NaN();
   const bool ask = opposite && inside[k] == inside[l];
   const EdgeCrossingCount n = CountEdgeCrossings(expression, primitives, lowerIsA ? a : b, lowerIsA ? b : a,
-    along, lowerIsA ? inside[k] : inside[l], lowerIsA ? inside[l] : inside[k], 24, ask ? &between : nullptr);
+    along, lowerIsA ? inside[k] : inside[l], lowerIsA ? inside[l] : inside[k], 24, ask ? &between : nullptr,
+    maxPieces);
   if (ask && (between - face.lo[along]) * (face.hi[along] - between) > 0.0) // (false for NaN)
   {
     *opposite = between;
@@ -123,11 +125,13 @@ namespace
 {
 /// Lattice extent of each loop. A crossing is only known to lie on its
 /// sub-edge; bisection on exact signs narrows it to `target` lattice units.
+/// `ends` receives, per loop, the ends of its crossings' narrowed segments.
 std::vector<std::array<LatticeIndex, 6>> LoopExtents(const BoundaryLoopSet& loops,
   const CsgExpression& expression, const PrimitiveSet& prims, const RootGrid& grid,
-  LatticeIndex target)
+  LatticeIndex target, std::vector<std::vector<Vec3>>& ends)
 {
   std::vector<std::array<LatticeIndex, 6>> extents;
+  ends.assign(loops.LoopSizes.size(), {});
   std::size_t offset = 0;
   for (const std::uint32_t size : loops.LoopSizes)
   {
@@ -147,6 +151,11 @@ std::vector<std::array<LatticeIndex, 6>> LoopExtents(const BoundaryLoopSet& loop
         m[along] = lo + (hi - lo) / 2;
         (expression.IsInside(grid.Point(m), prims) == c.LowerInside ? lo : hi) = m[along];
       }
+      LatticeIndex q[3] = { p[0], p[1], p[2] };
+      q[along] = lo;
+      ends[extents.size()].push_back(grid.Point(q));
+      q[along] = hi;
+      ends[extents.size()].push_back(grid.Point(q));
       for (int a = 0; a < 3; ++a)
       {
         e[a] = std::min(e[a], a == along ? lo : p[a]);
@@ -162,12 +171,211 @@ std::vector<std::array<LatticeIndex, 6>> LoopExtents(const BoundaryLoopSet& loop
 
 namespace
 {
+/// Rounding slack of n . x - c over `box` (generous: 64 ulps of its terms).
+double Slack(const Box3& box, const SeparatingPlane& plane)
+{
+  double m = std::fabs(plane.Offset);
+  for (int a = 0; a < 3; ++a)
+  {
+    m += std::fabs(plane.Normal[a]) * std::max(std::fabs(box.lo[a]), std::fabs(box.hi[a]));
+  }
+  return 64.0 * std::numeric_limits<double>::epsilon() * m;
+}
+
+/// The plane's crossings of the box's twelve edges: the section's vertices.
+std::vector<Vec3> SectionVertices(const Box3& box, const SeparatingPlane& plane)
+{
+  std::vector<Vec3> vertices;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (int corner = 0; corner < 4; ++corner)
+    {
+      Vec3 a = box.lo, b;
+      a[(axis + 1) % 3] = (corner & 1) ? box.hi[(axis + 1) % 3] : box.lo[(axis + 1) % 3];
+      a[(axis + 2) % 3] = (corner & 2) ? box.hi[(axis + 2) % 3] : box.lo[(axis + 2) % 3];
+      b = a;
+      b[axis] = box.hi[axis];
+      const double sa = Dot(plane.Normal, a) - plane.Offset, sb = Dot(plane.Normal, b) - plane.Offset;
+      if ((sa <= 0.0) != (sb <= 0.0))
+      {
+        vertices.push_back(a + (b - a) * (sa / (sa - sb)));
+      }
+    }
+  }
+  return vertices;
+}
+
+/// The segment from p to q meets `box` (slabs; box already grown by any slack).
+bool SegmentMeetsBox(const Vec3& p, const Vec3& q, const Box3& box)
+{
+  double t0 = 0.0, t1 = 1.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    const double d = q[a] - p[a];
+    if (d == 0.0)
+    {
+      if (p[a] < box.lo[a] || p[a] > box.hi[a])
+      {
+        return false;
+      }
+      continue;
+    }
+    double lo = (box.lo[a] - p[a]) / d, hi = (box.hi[a] - p[a]) / d;
+    if (lo > hi)
+    {
+      std::swap(lo, hi);
+    }
+    t0 = std::max(t0, lo);
+    t1 = std::min(t1, hi);
+  }
+  return t0 <= t1;
+}
+
+/// A mesh leaf's triangles miss the section: each lies on one side of the
+/// plane, or meets it in a segment that misses the box (grown by the slack).
+bool MeshMissesSection(const MeshSolid& mesh, const TriangleList* triangles, const Box3& box,
+  const SeparatingPlane& plane, double slack)
+{
+  const Box3 grown{ box.lo - Vec3{ slack, slack, slack }, box.hi + Vec3{ slack, slack, slack } };
+  const std::size_t count = triangles ? triangles->size() : mesh.Triangles().size();
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const std::uint32_t t = triangles ? (*triangles)[i] : static_cast<std::uint32_t>(i);
+    double side[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      side[k] = Dot(plane.Normal, mesh.Vertex(t, k)) - plane.Offset;
+    }
+    if ((side[0] > slack && side[1] > slack && side[2] > slack) ||
+      (side[0] < -slack && side[1] < -slack && side[2] < -slack))
+    {
+      continue;
+    }
+    std::vector<Vec3> ends;
+    for (int k = 0; k < 3; ++k)
+    {
+      const int l = (k + 1) % 3;
+      if (std::fabs(side[k]) <= slack)
+      {
+        ends.push_back(mesh.Vertex(t, k));
+      }
+      else if ((side[k] < 0.0) != (side[l] < 0.0) && std::fabs(side[l]) > slack)
+      {
+        ends.push_back(mesh.Vertex(t, k) + (mesh.Vertex(t, l) - mesh.Vertex(t, k)) * (side[k] / (side[k] - side[l])));
+      }
+    }
+    for (std::size_t a = 0; a < ends.size(); ++a)
+    {
+      for (std::size_t b = a; b < ends.size(); ++b)
+      {
+        if (SegmentMeetsBox(ends[a], ends[b], grown))
+        {
+          return false;
+        }
+      }
+    }
+  }
+  return true;
+}
+
+/// The surface provably misses the plane's section of `box`: by pieces of
+/// the box, each missing the plane or of one sign, down to `depth` levels.
+bool SectionMissedByPieces(const CsgExpressionPtr& expression, const PrimitiveSet& primitives, const Box3& box,
+  const SeparatingPlane& plane, int depth, int& budget)
+{
+  const double slack = Slack(box, plane);
+  double low = HUGE_VAL, high = -HUGE_VAL;
+  for (int c = 0; c < 8; ++c)
+  {
+    const Vec3 corner{ (c & 1) ? box.hi[0] : box.lo[0], (c & 2) ? box.hi[1] : box.lo[1],
+      (c & 4) ? box.hi[2] : box.lo[2] };
+    const double s = Dot(plane.Normal, corner) - plane.Offset;
+    low = std::min(low, s);
+    high = std::max(high, s);
+  }
+  if (low > slack || high < -slack)
+  {
+    return true;
+  }
+  const auto pruned = CsgExpression::Prune(expression, box, primitives);
+  if (pruned.Sign != RegionSign::Mixed)
+  {
+    return true;
+  }
+  if (depth == 0 || --budget < 0)
+  {
+    return false;
+  }
+  Box3 pieces[8];
+  const int count = SplitBox(box, pieces);
+  for (int k = 0; k < count; ++k)
+  {
+    if (!SectionMissedByPieces(pruned.Expression, primitives, pieces[k], plane, depth - 1, budget))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// The surface provably misses the section of `cell` by `plane`. Planes and
+/// meshes are decided leaf by leaf (no leaf's zero set meets the section:
+/// then neither does the surface, which lies in their union) - exact up to
+/// the slack, whatever the plane's distance to the sheets; curved quadrics
+/// by pieces of the cell.
+bool SectionMissed(const CsgExpressionPtr& expression, const PrimitiveSet& primitives, const Box3& cell,
+  const SeparatingPlane& plane)
+{
+  const double slack = Slack(cell, plane);
+  const std::vector<Vec3> section = SectionVertices(cell, plane);
+  bool byLeaves = true;
+  for (const CsgLeaf& leaf : expression->Leaves())
+  {
+    if (leaf.Kind == PrimitiveKind::Mesh)
+    {
+      byLeaves = MeshMissesSection(primitives.Meshes[leaf.Primitive], leaf.Triangles, cell, plane, slack);
+    }
+    else if (primitives.Quadrics[leaf.Primitive].IsLinear())
+    {
+      // A plane leaf: one sign at every vertex of the (convex) section, by
+      // more than the rounding of the vertices and of the values.
+      const auto& q = primitives.Quadrics[leaf.Primitive].Coefficients();
+      const Vec3 gradient{ q[6], q[7], q[8] };
+      const double margin = 1e-12 * (std::fabs(q[9]) + Norm(gradient) * (Norm(cell.lo) + Norm(cell.hi)));
+      int above = 0, below = 0;
+      for (const Vec3& v : section)
+      {
+        const double f = Dot(gradient, v) + q[9];
+        above += f > margin;
+        below += f < -margin;
+      }
+      byLeaves = above == static_cast<int>(section.size()) || below == static_cast<int>(section.size());
+    }
+    else
+    {
+      byLeaves = false;
+    }
+    if (!byLeaves)
+    {
+      break;
+    }
+  }
+  if (byLeaves)
+  {
+    return true;
+  }
+  int budget = 4096;
+  return SectionMissedByPieces(expression, primitives, cell, plane, 8, budget);
+}
+
 bool SeparatedWithin(const BoundaryLoopSet& loops, const CsgExpressionPtr& expression,
   const PrimitiveSet& primitives, const RootGrid& grid, const Box3& cell, LatticeIndex target,
   std::vector<Box3>& regions)
 {
-  const auto extents = LoopExtents(loops, *expression, primitives, grid, target);
+  std::vector<std::vector<Vec3>> ends;
+  const auto extents = LoopExtents(loops, *expression, primitives, grid, target, ends);
   regions.assign(extents.size(), cell);
+  bool oblique = false;
   for (std::size_t i = 0; i < extents.size(); ++i)
   {
     for (std::size_t j = i + 1; j < extents.size(); ++j)
@@ -202,9 +410,22 @@ bool SeparatedWithin(const BoundaryLoopSet& loops, const CsgExpressionPtr& expre
       }
       if (!separated)
       {
+        // No axis: a plane parallel to neither, between the two loops' points.
+        SeparatingPlane plane;
+        separated = FindSeparatingPlane(ends[i], ends[j], plane) && SectionMissed(expression, primitives, cell, plane);
+        oblique = oblique || separated;
+      }
+      if (!separated)
+      {
         return false;
       }
     }
+  }
+  if (oblique)
+  {
+    // The loops' regions are no longer boxes: the star-shaped test is asked
+    // of the whole cell (which implies it on either side of every plane).
+    regions.assign(1, cell);
   }
   return true;
 }

@@ -53,9 +53,10 @@ SplitReason FaceCompatibilityTest(const CsgExpressionPtr& expression,
   int* failingEdge = nullptr, double* opposite = nullptr);
 
 /// Edge k of a face (corners as for FaceCompatibilityTest) is crossed at
-/// most once, proven. `opposite` as above, asked only when its ends agree.
+/// most once, proven. `opposite` as above, asked only when its ends agree;
+/// `maxPieces` as for CountEdgeCrossings.
 bool EdgeCrossedOnce(const CsgExpressionPtr& expression, const PrimitiveSet& primitives, const Box3& face,
-  int axis, const bool inside[4], int k, double* opposite);
+  int axis, const bool inside[4], int k, double* opposite, int maxPieces = 4096);
 
 /// Several loops on a cell boundary bound either several disks or pieces
 /// joined inside the cell (a tube: the voxel ambiguity). They bound different
@@ -67,9 +68,16 @@ bool EdgeCrossedOnce(const CsgExpressionPtr& expression, const PrimitiveSet& pri
 /// sixteenth of the cell, then (if that does not separate them) to the
 /// lattice: surfaces passing closer than the cell - a near contact - are
 /// separated at any gap wider than a few lattice spacings, without refining
-/// down to the gap. `regions`, when separated: per loop, the cell cut by
-/// the planes separating it from the others, on its side - a box that holds
-/// that loop and no other, and whose cut sides the surface misses.
+/// down to the gap. Where no axis-aligned plane lies between two loops - the
+/// two sheets beside a thin wedge's edge, in a generic orientation - an
+/// oblique one between their crossings (SeparatingPlane.h) is tried, proven
+/// missed leaf by leaf (planes and mesh triangles exactly, up to rounding
+/// slack; curved quadrics by pieces of the cell). `regions`, when separated:
+/// per loop, the cell cut by the axis-aligned planes separating it from the
+/// others, on its side - a box that holds that loop and no other, and whose
+/// cut sides the surface misses; the cell alone when an oblique plane was
+/// needed (its sides are no box: the star-shaped test is then asked of the
+/// whole cell, which implies it on either side).
 bool LoopsSeparated(const BoundaryLoopSet& loops, const CsgExpressionPtr& expression,
   const PrimitiveSet& primitives, const RootGrid& grid, const Box3& cell, std::vector<Box3>* regions = nullptr);
 

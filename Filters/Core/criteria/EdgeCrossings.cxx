@@ -8,17 +8,13 @@ namespace tpc
 {
 namespace
 {
-/// Pieces examined per edge at most. Depth alone does not bound the work: a
-/// leaf that is undecided on every piece yet proven on the finest ones (a
-/// surface grazing the edge) would visit 2^depth pieces.
-constexpr int MaximumPieces = 4096;
-
 /// What one count gathers besides the count: the pieces examined, and the
 /// first bisection point whose sign differs from the sign at the edge's
 /// lower end (a point inside a gap or wedge between two crossings).
 struct CountState
 {
   int Pieces = 0;
+  int MaximumPieces = 0;
   bool LowerInside = false;
   double* Opposite = nullptr;
 };
@@ -27,7 +23,7 @@ EdgeCrossingCount Count(const CsgExpressionPtr& expression, const PrimitiveSet& 
   const Vec3& a, const Vec3& b, int axis, bool inA, bool inB, int budget, CountState& state)
 {
   int& pieces = state.Pieces;
-  if (++pieces > MaximumPieces)
+  if (++pieces > state.MaximumPieces)
   {
     return { 0, false };
   }
@@ -229,7 +225,7 @@ Vec3 BisectOnExactSigns(
 
 EdgeCrossingCount CountEdgeCrossings(const CsgExpressionPtr& expression,
   const PrimitiveSet& primitives, const Vec3& a, const Vec3& b, int axis, bool insideA,
-  bool insideB, int maxBisections, double* opposite)
+  bool insideB, int maxBisections, double* opposite, int maxPieces)
 {
   // A lone mesh leaf (remeshing): its crossings with the cell's triangles are
   // counted exactly, with the perturbation that decides the signs. The
@@ -244,6 +240,10 @@ EdgeCrossingCount CountEdgeCrossings(const CsgExpressionPtr& expression,
   CountState state;
   state.LowerInside = insideA;
   state.Opposite = opposite;
+  // Depth alone does not bound the work: a leaf that is undecided on every
+  // piece yet proven on the finest ones (a surface grazing the edge) would
+  // visit 2^depth pieces.
+  state.MaximumPieces = maxPieces;
   return Count(expression, primitives, a, b, axis, insideA, insideB, maxBisections, state);
 }
 

@@ -30,9 +30,11 @@ struct EdgeCrossingCount
 /// `insideA`, when one was met: with equal end signs, a point between two
 /// crossings - inside a gap or a wedge however thin, which samples at fixed
 /// spacings miss (left unchanged otherwise; a lone mesh leaf never sets it).
+/// `maxPieces` caps the pieces examined (a surface grazing the edge would
+/// visit 2^depth of them).
 EdgeCrossingCount CountEdgeCrossings(const CsgExpressionPtr& expression,
   const PrimitiveSet& primitives, const Vec3& a, const Vec3& b, int axis, bool insideA,
-  bool insideB, int maxBisections = 24, double* opposite = nullptr);
+  bool insideB, int maxBisections = 24, double* opposite = nullptr, int maxPieces = 4096);
 
 /// A point of the surface on a segment whose endpoint signs differ (root
 /// finding on the exact field, paper 4.3), with `insideA` the sign at a.

@@ -58,14 +58,13 @@ struct FaceRefiner
         }
       }
       // None: a gap or wedge too thin for the samples may still cross an
-      // edge twice, where the crossing count finds a point inside it. (Not
-      // with mesh leaves: measured on CGAL's joint - knot1 at 1/64, splitting
-      // there left one cell with two loops no plane separates, where the
-      // midpoint split resolves.)
-      for (int k = 0; k < 4 && !this->Expression->HasMeshLeaves(); ++k)
+      // edge twice, where the crossing count finds a point inside it (a few
+      // pieces per level suffice for that; a surface lying along the edge,
+      // as where two solids touch, would take thousands).
+      for (int k = 0; k < 4; ++k)
       {
         double point = std::numeric_limits<double>::quiet_NaN();
-        EdgeCrossedOnce(this->Expression, this->Primitives, face, this->Axis, inside, k, &point);
+        EdgeCrossedOnce(this->Expression, this->Primitives, face, this->Axis, inside, k, &point, 128);
         if (this->LatticePointOfOppositeSign(t, k, point, inside[k], us, vs))
         {
           return;

@@ -96,9 +96,14 @@ int MeshModels(const MeshSolid& mesh, int sigma, const TriangleList& listed, con
 }
 } // namespace
 
-bool HasFacingSurfaces(
-  const CsgExpression& expression, const PrimitiveSet& primitives, const Box3& cell, double gap)
+bool HasFacingSurfaces(const CsgExpression& expression, const PrimitiveSet& primitives, const Box3& cell,
+  double gap, bool* touching)
 {
+  if (touching)
+  {
+    *touching = false;
+  }
+  bool facing = false;
   std::vector<AffineModel> models;
   for (const CsgLeaf& leaf : expression.Leaves())
   {
@@ -122,14 +127,20 @@ bool HasFacingSurfaces(
     for (std::size_t j = i + 1; j < models.size(); ++j)
     {
       const AffineModel &a = models[i], &b = models[j];
-      if (Dot(a.N, b.N) < -0.5 &&
-        MaxOverCorners(cell, [&](const Vec3& p) { return a(p) + b(p); }) + a.Error + b.Error <= gap)
+      const double apart = MaxOverCorners(cell, [&](const Vec3& p) { return a(p) + b(p); }) + a.Error + b.Error;
+      if (Dot(a.N, b.N) < -0.5 && apart <= gap)
       {
-        return true;
+        facing = true;
+        if (!touching)
+        {
+          return true;
+        }
+        // One plane: opposite normals and no distance beyond rounding.
+        *touching = *touching || apart <= 1e-12 * (cell.Diagonal() + Norm(cell.Center()));
       }
     }
   }
-  return false;
+  return facing;
 }
 
 } // namespace tpc

@@ -35,8 +35,10 @@ namespace tpc
 
 /// True when two leaves of `expression` (pruned to `cell`), or two planes of
 /// one mesh leaf, are locally planar surfaces facing each other closer than
-/// `gap` throughout the cell.
-bool HasFacingSurfaces(
-  const CsgExpression& expression, const PrimitiveSet& primitives, const Box3& cell, double gap);
+/// `gap` throughout the cell. `touching` (if given) is set when such a pair
+/// lies in one plane, up to rounding (solids touching along a face: no
+/// lattice placement separates them), and cleared otherwise.
+bool HasFacingSurfaces(const CsgExpression& expression, const PrimitiveSet& primitives, const Box3& cell,
+  double gap, bool* touching = nullptr);
 
 } // namespace tpc

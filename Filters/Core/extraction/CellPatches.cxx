@@ -110,6 +110,14 @@ void TriangulateCell(const BoundaryLoopSet& loops, const OctreeNode& node, const
     boxes.push_back(b);
     offset += loopSize;
   }
+  std::vector<std::vector<Vec3>> positions(points.size());
+  for (std::size_t l = 0; l < points.size() && ids.size() > 1; ++l)
+  {
+    for (const LoopPoint& p : points[l])
+    {
+      positions[l].push_back(p.Position);
+    }
+  }
   for (std::size_t l = 0; l < ids.size(); ++l)
   {
     const std::vector<std::uint32_t>& id = ids[l];
@@ -119,7 +127,9 @@ void TriangulateCell(const BoundaryLoopSet& loops, const OctreeNode& node, const
       continue; // only from inconsistent loops, counted by the caller
     }
     const Box3 region = ids.size() > 1 ? ApexRegion(boxes, l, box) : box;
-    const LoopPatch patch = TriangulateLoop(points[l], region, node.PlaneSection, expression, prims);
+    const std::vector<SeparatingPlane> below =
+      ids.size() > 1 ? ObliqueCuts(positions, boxes, l) : std::vector<SeparatingPlane>();
+    const LoopPatch patch = TriangulateLoop(points[l], region, node.PlaneSection, expression, prims, below);
     if (patch.Kind == LoopPatchKind::Triangle)
     {
       out.Triangles.push_back({ id[0], id[1], id[2] });

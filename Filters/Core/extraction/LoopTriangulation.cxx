@@ -174,6 +174,37 @@ Vec3 ProjectedCentroid(const Vec3& centroid, const Box3& box, const CsgExpressio
   return y;
 }
 
+/// `apex` moved below every plane by a quarter of its gap (then kept
+/// strictly inside the region); the loop's centroid, which is below them all
+/// with the loop, when a few alternating moves do not settle it.
+Vec3 KeptBelow(Vec3 apex, const std::vector<LoopPoint>& loop, const Box3& region,
+  const std::vector<SeparatingPlane>& below)
+{
+  auto settled = [&](const Vec3& p) {
+    for (const SeparatingPlane& plane : below)
+    {
+      if (!(Dot(plane.Normal, p) < plane.Offset - 0.25 * plane.Gap))
+      {
+        return false;
+      }
+    }
+    return StrictlyInside(p, region);
+  };
+  for (int round = 0; round < 4 && !settled(apex); ++round)
+  {
+    for (const SeparatingPlane& plane : below)
+    {
+      const double excess = Dot(plane.Normal, apex) - (plane.Offset - 0.375 * plane.Gap);
+      if (excess > 0.0)
+      {
+        apex = apex - plane.Normal * excess;
+      }
+    }
+    apex = ClampStrictlyInside(apex, region);
+  }
+  return settled(apex) ? apex : ClampStrictlyInside(Centroid(loop), region);
+}
+
 Vec3 PlaceApex(const std::vector<LoopPoint>& loop, const Box3& region, bool planeSection,
   const CsgExpression& expression, const PrimitiveSet& primitives)
 {
@@ -291,8 +322,28 @@ Box3 ApexRegion(const std::vector<Box3>& loopBoxes, std::size_t i, const Box3& c
   return region;
 }
 
+std::vector<SeparatingPlane> ObliqueCuts(const std::vector<std::vector<Vec3>>& loopPoints,
+  const std::vector<Box3>& loopBoxes, std::size_t i)
+{
+  std::vector<SeparatingPlane> cuts;
+  for (std::size_t j = 0; j < loopBoxes.size(); ++j)
+  {
+    bool apart = j == i;
+    for (int a = 0; a < 3 && !apart; ++a)
+    {
+      apart = loopBoxes[j].lo[a] > loopBoxes[i].hi[a] || loopBoxes[i].lo[a] > loopBoxes[j].hi[a];
+    }
+    SeparatingPlane plane;
+    if (!apart && FindSeparatingPlane(loopPoints[i], loopPoints[j], plane))
+    {
+      cuts.push_back(plane);
+    }
+  }
+  return cuts;
+}
+
 LoopPatch TriangulateLoop(const std::vector<LoopPoint>& loop, const Box3& region, bool planeSection,
-  const CsgExpression& expression, const PrimitiveSet& primitives)
+  const CsgExpression& expression, const PrimitiveSet& primitives, const std::vector<SeparatingPlane>& below)
 {
   LoopPatch patch;
   if (loop.size() == 3 && CommonFace(loop) < 0)
@@ -311,6 +362,10 @@ LoopPatch TriangulateLoop(const std::vector<LoopPoint>& loop, const Box3& region
   }
   patch.Kind = LoopPatchKind::ApexFan;
   patch.Apex = PlaceApex(loop, region, planeSection, expression, primitives);
+  if (!below.empty())
+  {
+    patch.Apex = KeptBelow(patch.Apex, loop, region, below);
+  }
   return patch;
 }
 

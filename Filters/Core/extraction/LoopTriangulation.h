@@ -31,12 +31,14 @@
 //    (three collinear points of a convex cell's boundary lie on one face).
 //
 // Several loops in one cell: a cell passes the tests with several loops only
-// when every two are separated by an axis-aligned plane that the surface does
-// not meet (LoopsSeparated, ComplexCellCriterion.h), so their points' bounding
-// boxes are apart along some axis. A patch lies in the convex hull of its loop
-// and apex; ApexRegion cuts the cell between the boxes of every two loops, and
-// with each apex in its loop's region the patches of different loops lie
-// strictly on opposite sides of a plane.
+// when every two are separated by a plane that the surface does not meet
+// (LoopsSeparated, ComplexCellCriterion.h): axis-aligned, so their points'
+// bounding boxes are apart along some axis, or oblique. A patch lies in the
+// convex hull of its loop and apex; ApexRegion cuts the cell between the boxes
+// of every two loops apart along an axis, ObliqueCuts finds a plane between
+// the points of two loops that are not, and with each apex in its loop's
+// region and below its cuts the patches of different loops lie strictly on
+// opposite sides of a plane.
 //
 // Patches of different cells are in different cells, which meet on their
 // boundaries only; there each patch is its chords, and both cells sharing a
@@ -49,6 +51,7 @@
 #pragma once
 
 #include "CsgExpression.h"
+#include "SeparatingPlane.h"
 #include "Vector3.h"
 
 #include <vector>
@@ -82,9 +85,19 @@ struct LoopPatch
 
 /// The open region of `cell` where loop `i`'s apex may lie: the cell cut, for
 /// every other loop whose bounding box is apart from loop i's along some axis,
-/// halfway between the two boxes. Loops not apart from loop i (only in cells
-/// stopped by a limit) do not cut it.
+/// halfway between the two boxes. Loops not apart from loop i do not cut it
+/// (see ObliqueCuts).
 Box3 ApexRegion(const std::vector<Box3>& loopBoxes, std::size_t i, const Box3& cell);
+
+/// For every other loop whose box is not apart from loop i's along any axis
+/// (two sheets beside a thin wedge's edge, which the subdivision separated by
+/// an oblique plane, LoopsSeparated): a plane between the two loops' points,
+/// loop i below it. The apex is kept below each by a quarter of its gap, so
+/// the patch (in the hull of loop i and its apex) lies strictly below it and
+/// the other loop's strictly above. None found (cells stopped by a limit):
+/// no cut, and the exact check decides.
+std::vector<SeparatingPlane> ObliqueCuts(const std::vector<std::vector<Vec3>>& loopPoints,
+  const std::vector<Box3>& loopBoxes, std::size_t i);
 
 /// How to span `loop` (at least three points, in order) inside its cell, with
 /// an apex (if any) strictly inside `region` (the cell, or ApexRegion).
@@ -95,7 +108,8 @@ Box3 ApexRegion(const std::vector<Box3>& loopBoxes, std::size_t i, const Box3& c
 /// Cubes does) and keeps 1/32 of the region's width from its boundary.
 /// `expression` (pruned to the cell) places apexes of caps over one face.
 LoopPatch TriangulateLoop(const std::vector<LoopPoint>& loop, const Box3& region, bool planeSection,
-  const CsgExpression& expression, const PrimitiveSet& primitives);
+  const CsgExpression& expression, const PrimitiveSet& primitives,
+  const std::vector<SeparatingPlane>& below = {});
 
 /// True when `p` lies strictly inside `box` on every axis (exact comparisons).
 bool StrictlyInside(const Vec3& p, const Box3& box);

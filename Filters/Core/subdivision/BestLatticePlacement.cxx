@@ -120,7 +120,7 @@ PlacedSubdivision RunOnBestLatticePlacement(const ImplicitScene& scene, const Bo
     ++best.PlacementsTried;
     // Decisions every piece takes alike.
     const std::size_t unresolved = sum(run.UnresolvedCells);
-    const std::size_t facing = sum(run.FacingSurfaceCells);
+    const std::size_t touching = sum(run.TouchingSurfaceCells);
     const bool cellLimit = sum(run.CellLimitReached ? 1 : 0) > 0;
     const bool aborted = sum(run.Aborted || abortAsked ? 1 : 0) > 0;
     run.Aborted = aborted;
@@ -136,9 +136,11 @@ PlacedSubdivision RunOnBestLatticePlacement(const ImplicitScene& scene, const Bo
       best.Result.Aborted = true;
       return best;
     }
-    // (Facing surfaces do not move away on another lattice.)
+    // Surfaces lying in one plane do not move apart on another lattice;
+    // surfaces merely close - beside a thin wedge's edge, where a few cells
+    // may stay unresolved at one placement - often resolve on another.
     if (aborted || best.UnresolvedCellsOfAllPieces == 0 ||
-      (best.UnresolvedCellsOfAllPieces == unresolved && unresolved == facing) || cellLimit)
+      (best.UnresolvedCellsOfAllPieces == unresolved && unresolved == touching) || cellLimit)
     {
       break;
     }

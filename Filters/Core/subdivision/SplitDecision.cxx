@@ -30,8 +30,8 @@ CellTests TestCell(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveS
     keepsOnFailure ? std::min(levels, ExactCellFaceRefinementLevels) : levels);
   if (limits.ToleranceSize && tests.Verdict.Kind == McVerdict::Split)
   {
-    tests.Facing = HasFacingSurfaces(
-      expression, primitives, tree.Grid.CellBox(limits.Level, tree.Nodes[n].Ijk), limits.FinestWidth);
+    tests.Facing = HasFacingSurfaces(expression, primitives, tree.Grid.CellBox(limits.Level, tree.Nodes[n].Ijk),
+      limits.FinestWidth, &tests.Touching);
   }
   return tests;
 }
@@ -80,6 +80,7 @@ bool DecideCell(AdaptiveOctree& tree, std::uint32_t n, const CellTests& tests, c
     node.Reason = tests.Facing ? SplitReason::SurfacesTooClose : SplitReason::LimitReached;
     node.FailedTest = v.Reason;
     result.FacingSurfaceCells += mine * tests.Facing;
+    result.TouchingSurfaceCells += mine * (tests.Facing && tests.Touching);
     result.DepthLimitReached |= mine && limits.AtDepthLimit && !tests.Facing;
     result.CellLimitReached |= mine && limits.AtCellLimit && !tests.Facing;
     result.UnresolvedCells += mine;

@@ -50,6 +50,8 @@ struct CellTests
   /// Failed at the tolerance's size with two surfaces facing each other
   /// closer than the finest cell.
   bool Facing = false;
+  /// Of those, two surfaces lying in one plane (FacingSurfaces.h).
+  bool Touching = false;
 };
 
 /// Runs the tests of cell `n` (thread-safe: reads the tree only).

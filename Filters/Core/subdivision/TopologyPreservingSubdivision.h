@@ -60,6 +60,9 @@ struct SubdivisionResult
   /// Of those, cells stopped because two surfaces face each other closer
   /// than the finest cell there (FacingSurfaces.h).
   std::size_t FacingSurfaceCells = 0;
+  /// Of those, cells where the two surfaces lie in one plane: solids touching
+  /// along a face, which no other lattice placement separates.
+  std::size_t TouchingSurfaceCells = 0;
   std::size_t RefinedFaces = 0; ///< faces sampled finer than their cell (FaceRefinement.h)
   /// Surface cells accepted larger than the tolerance as plane sections
   /// (PlanarCell.h).

@@ -177,6 +177,33 @@ TEST(ComplexCell, FaceAndVoxelAmbiguityFig2d)
   EXPECT_EQ(TopFace(f.Scene), SplitReason::FaceAmbiguity);
 }
 
+TEST(ComplexCell, SheetsBesideAThinWedgeAreSeparatedByAnObliquePlane)
+{
+  // A wedge of 8 degrees whose edge runs just outside the unit cell, tilted
+  // to every axis: the cell holds a piece of each sheet, nearly parallel,
+  // and no axis-aligned plane lies between their loops at any scale (the
+  // same picture in every child). A plane between the loops' points, proven
+  // missed leaf by leaf, separates them: two discs, the cell passes.
+  const Vec3 t = tpc::Normalized(Vec3{ 0.31, 0.93, 0.17 });
+  const Vec3 n1 = tpc::Normalized(tpc::Cross(t, Vec3{ 1, 0, 0.3 }));
+  const Vec3 m = tpc::Cross(t, n1);
+  const double a = 8.0 * M_PI / 180.0;
+  const Vec3 n2 = (n1 * std::cos(a) + m * std::sin(a)) * -1.0;
+  // The edge through o, 0.2 outside the cell along -m (the wedge opens along m).
+  const Vec3 o = Vec3{ 0.5, 0.5, 0.5 } - m * 0.2 - n1 * 0.01;
+  int passed = 0;
+  for (const double shift : { 0.0, 0.013, 0.029 })
+  {
+    SceneBuilder b;
+    const Vec3 through = o + m * (shift - 0.75);
+    b.Finish(SceneBuilder::Intersection(
+      { b.Add(tpc::Quadric::Plane(through, n1)), b.Add(tpc::Quadric::Plane(through, n2)) }));
+    const tpc::McCompatibility r = TestUnitCell(b.Scene);
+    passed += r.Kind == tpc::McVerdict::Pass ? 1 : 0;
+  }
+  EXPECT_EQ(passed, 3);
+}
+
 TEST(ComplexCell, SharpCreaseIsResolvedByRefiningFacesNotTheVoxel)
 {
   // Two half-spaces meet in a crease crossing the cell; the region outside

@@ -38,6 +38,25 @@ TEST(FacingSurfaces, BoxesSharingAFaceFaceEachOther)
   EXPECT_FALSE(Facing(b.Scene, CellAround({ 0.5, 0.99, 0.5 }, 0.05), 1e-6));
 }
 
+TEST(FacingSurfaces, OnlySurfacesInOnePlaneTouch)
+{
+  // Boxes sharing a face lie in one plane there (no other lattice placement
+  // separates them); spheres 1e-7 apart only face each other closely.
+  auto touching = [](const tpc::ImplicitScene& scene, const Box3& cell) {
+    const auto pruned = tpc::CsgExpression::Prune(scene.Expression, cell, scene.Primitives);
+    bool touch = false;
+    const bool facing = tpc::HasFacingSurfaces(*pruned.Expression, scene.Primitives, cell, 1e-4, &touch);
+    return facing ? (touch ? 2 : 1) : 0;
+  };
+  SceneBuilder boxes;
+  boxes.Finish(SceneBuilder::Union({ boxes.Box({ 0, 0, 0 }, { 1, 1, 1 }), boxes.Box({ 1, 0, 0 }, { 2, 1, 1 }) }));
+  EXPECT_EQ(touching(boxes.Scene, CellAround({ 1.0013, 0.5, 0.5 }, 0.003)), 2);
+  SceneBuilder spheres;
+  spheres.Finish(SceneBuilder::Union(
+    { spheres.Sphere({ -0.5, 0.01, 0 }, 0.5), spheres.Sphere({ 0.5 + 1e-7, 0.01, 0 }, 0.5) }));
+  EXPECT_EQ(touching(spheres.Scene, CellAround({ 0.0003, 0.0101, 0.0002 }, 0.0005)), 1);
+}
+
 TEST(FacingSurfaces, AGapWiderThanTheFinestCellIsNotFacing)
 {
   SceneBuilder b;

@@ -165,6 +165,34 @@ TEST(Subdivision, NearContactsSeparateWithoutRefiningToTheGap)
   }
 }
 
+TEST(Subdivision, ThinWedgesInAnyOrientationResolve)
+{
+  // A box cut by two planes meeting at 10 and 30 degrees along a line tilted
+  // to every axis: the solid is a thin wedge. Its edge's cells resolve at the
+  // tolerance's size or a few levels below: the tiles it pierces are split
+  // inside the wedge (FaceRefinement.h), the two sheets beside it are
+  // separated by an oblique plane (LoopsSeparated) - before, they failed at
+  // every level until stopped as too close.
+  for (const double degrees : { 30.0, 10.0 })
+  {
+    SceneBuilder b;
+    const Vec3 o{ 0.1234, 0.0567, 0.0891 };
+    const Vec3 t = tpc::Normalized(Vec3{ 0.31, 0.93, 0.17 });
+    const Vec3 n1 = tpc::Normalized(tpc::Cross(t, Vec3{ 1, 0, 0.3 }));
+    const Vec3 m = tpc::Cross(t, n1);
+    const double a = degrees * M_PI / 180.0;
+    const Vec3 n2 = (n1 * std::cos(a) + m * std::sin(a)) * -1.0;
+    b.Finish(SceneBuilder::Intersection({ b.Box({ -1, -1, -1 }, { 1, 1, 0.3 }), b.Add(tpc::Quadric::Plane(o, n1)),
+      b.Add(tpc::Quadric::Plane(o, n2)) }));
+    const ContourRun r = Contour(b.Scene, { { -1.0371, -1.0213, -1.0517 }, { 1.0423, 1.0312, 0.3317 } }, 0.01);
+    EXPECT_TRUE(r.Guaranteed) << degrees;
+    EXPECT_EQ(r.Subdivision.UnresolvedCells, 0u) << degrees;
+    EXPECT_EQ(r.Report.Components, 1) << degrees;
+    EXPECT_EQ(r.Report.Genus, 0) << degrees;
+    EXPECT_TRUE(r.Report.Closed && r.Report.Manifold) << degrees;
+  }
+}
+
 TEST(Subdivision, SmallComponentResolvesBelowTheOldLatticesEnd)
 {
   // A bubble of radius 1e-7 beside a sphere, in a domain 2 wide: its cells
