@@ -8,7 +8,8 @@
 // "spheres:cx cy cz r;cx cy cz r;..." - a union of spheres, approximated
 // here by icospheres fine enough (5 subdivisions, relative error < 2e-4)
 // that the configurations used, which are far from tangency, keep the exact
-// spheres' topology. Prints "components genus euler". Not built by default
+// spheres' topology. Prints "components genus euler angle": the last is the
+// smallest angle between crossing triangles of the two operands (degrees). Not built by default
 // (configure with -DTPC_BUILD_CSG_REFERENCE=ON); its results are recorded in
 // Data/CsgReference.csv.
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -116,6 +117,44 @@ bool Boolean(Mesh& a, Mesh& b, const std::string& op, Mesh& out)
   }
   return PMP::corefine_and_compute_difference(a, b, out);
 }
+/// The smallest angle (degrees, 0 to 90) between the planes of two crossing
+/// triangles, one of each mesh: how shallow the intersection is, which is
+/// what makes a Boolean hard for the filter (thin wedges along the curve).
+/// Brute force over bounding-box-overlapping pairs (the test meshes are
+/// small); -1 when the meshes do not meet.
+double MinimumCrossingAngle(const Mesh& a, const Mesh& b)
+{
+  std::vector<std::pair<Kernel::Triangle_3, CGAL::Bbox_3>> fb;
+  for (auto f : b.faces())
+  {
+    auto h = b.halfedge(f);
+    const Kernel::Triangle_3 t(b.point(b.source(h)), b.point(b.target(h)), b.point(b.target(b.next(h))));
+    fb.emplace_back(t, t.bbox());
+  }
+  double smallest = -1.0;
+  for (auto f : a.faces())
+  {
+    auto h = a.halfedge(f);
+    const Kernel::Triangle_3 ta(a.point(a.source(h)), a.point(a.target(h)), a.point(a.target(a.next(h))));
+    const CGAL::Bbox_3 box = ta.bbox();
+    const auto na = ta.supporting_plane().orthogonal_vector();
+    const double ax = CGAL::to_double(na.x()), ay = CGAL::to_double(na.y()), az = CGAL::to_double(na.z());
+    for (const auto& [tb, boxB] : fb)
+    {
+      if (!CGAL::do_overlap(box, boxB) || !CGAL::do_intersect(ta, tb))
+      {
+        continue;
+      }
+      const auto nb = tb.supporting_plane().orthogonal_vector();
+      const double bx = CGAL::to_double(nb.x()), by = CGAL::to_double(nb.y()), bz = CGAL::to_double(nb.z());
+      const double c = std::fabs(ax * bx + ay * by + az * bz) /
+        (std::sqrt(ax * ax + ay * ay + az * az) * std::sqrt(bx * bx + by * by + bz * bz));
+      const double angle = std::acos(std::min(1.0, c)) * 180.0 / M_PI;
+      smallest = smallest < 0.0 ? angle : std::min(smallest, angle);
+    }
+  }
+  return smallest;
+}
 } // namespace
 
 int main(int argc, char** argv)
@@ -170,6 +209,7 @@ int main(int argc, char** argv)
   {
     return 1;
   }
+  const double angle = MinimumCrossingAngle(a, b); // (before corefinement changes the meshes)
   Mesh out;
   if (!Boolean(a, b, op, out))
   {
@@ -182,6 +222,6 @@ int main(int argc, char** argv)
   auto fcc = out.add_property_map<Mesh::Face_index, std::size_t>("f:cc").first;
   const long long components = static_cast<long long>(PMP::connected_components(out, fcc));
   const long long euler = v - e + f;
-  std::cout << components << " " << (2 * components - euler) / 2 << " " << euler << "\n";
+  std::cout << components << " " << (2 * components - euler) / 2 << " " << euler << " " << angle << "\n";
   return 0;
 }
