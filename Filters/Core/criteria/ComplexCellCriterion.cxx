@@ -287,9 +287,7 @@ bool SectionMissedByPieces(const CsgExpressionPtr& expression, const PrimitiveSe
   double low = HUGE_VAL, high = -HUGE_VAL;
   for (int c = 0; c < 8; ++c)
   {
-    const Vec3 corner{ (c & 1) ? box.hi[0] : box.lo[0], (c & 2) ? box.hi[1] : box.lo[1],
-      (c & 4) ? box.hi[2] : box.lo[2] };
-    const double s = Dot(plane.Normal, corner) - plane.Offset;
+    const double s = Dot(plane.Normal, box.Corner(c)) - plane.Offset;
     low = std::min(low, s);
     high = std::max(high, s);
   }

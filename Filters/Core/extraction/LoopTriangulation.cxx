@@ -328,13 +328,8 @@ std::vector<SeparatingPlane> ObliqueCuts(const std::vector<std::vector<Vec3>>& l
   std::vector<SeparatingPlane> cuts;
   for (std::size_t j = 0; j < loopBoxes.size(); ++j)
   {
-    bool apart = j == i;
-    for (int a = 0; a < 3 && !apart; ++a)
-    {
-      apart = loopBoxes[j].lo[a] > loopBoxes[i].hi[a] || loopBoxes[i].lo[a] > loopBoxes[j].hi[a];
-    }
     SeparatingPlane plane;
-    if (!apart && FindSeparatingPlane(loopPoints[i], loopPoints[j], plane))
+    if (j != i && loopBoxes[i].Overlaps(loopBoxes[j]) && FindSeparatingPlane(loopPoints[i], loopPoints[j], plane))
     {
       cuts.push_back(plane);
     }

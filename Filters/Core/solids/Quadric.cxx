@@ -87,23 +87,28 @@ Interval IntervalQuadric::EncloseAt(const Vec3& p) const
     (A[2] * z + A[8]) * z + A[9];
 }
 
+Interval IntervalQuadric::EncloseTaylor(const Vec3& p, const Interval d[3]) const
+{
+  const Interval px(p[0]), py(p[1]), pz(p[2]);
+  const Interval two(2.0);
+  const Interval g0 = two * A[0] * px + A[3] * py + A[5] * pz + A[6];
+  const Interval g1 = A[3] * px + two * A[1] * py + A[4] * pz + A[7];
+  const Interval g2 = A[5] * px + A[4] * py + two * A[2] * pz + A[8];
+  return this->EncloseAt(p) + g0 * d[0] + g1 * d[1] + g2 * d[2] + A[0] * Square(d[0]) + A[1] * Square(d[1]) +
+    A[2] * Square(d[2]) + A[3] * (d[0] * d[1]) + A[4] * (d[1] * d[2]) + A[5] * (d[0] * d[2]);
+}
+
 Interval IntervalQuadric::Enclose(const Box3& box) const
 {
   const Vec3 c = box.Center();
-  double r[3];
+  Interval d[3];
   for (int i = 0; i < 3; ++i)
   {
-    r[i] = std::max(rounding::AddUp(c[i], -box.lo[i]), rounding::AddUp(box.hi[i], -c[i]));
+    const double r = std::max(rounding::AddUp(c[i], -box.lo[i]), rounding::AddUp(box.hi[i], -c[i]));
+    d[i] = Interval(-r, r);
   }
-  // Centred form: f(c + d) = f(c) + g(c).d + d'Qd with |d_i| <= r_i.
-  const Interval cx(c[0]), cy(c[1]), cz(c[2]);
-  const Interval two(2.0);
-  const Interval g0 = two * A[0] * cx + A[3] * cy + A[5] * cz + A[6];
-  const Interval g1 = A[3] * cx + two * A[1] * cy + A[4] * cz + A[7];
-  const Interval g2 = A[5] * cx + A[4] * cy + two * A[2] * cz + A[8];
-  const Interval d0(-r[0], r[0]), d1(-r[1], r[1]), d2(-r[2], r[2]);
-  const Interval taylor = this->EncloseAt(c) + g0 * d0 + g1 * d1 + g2 * d2 + A[0] * Square(d0) +
-    A[1] * Square(d1) + A[2] * Square(d2) + A[3] * (d0 * d1) + A[4] * (d1 * d2) + A[5] * (d0 * d2);
+  // Centred form: f(c + d) with |d_i| <= r_i.
+  const Interval taylor = this->EncloseTaylor(c, d);
 
   if (taylor.lo >= 0.0 || taylor.hi < 0.0)
   {
@@ -149,14 +154,9 @@ Interval IntervalQuadric::Enclose(const Box3& box) const
       m[i] -= inverse[i][j] * 0.5 * (A[6 + j].lo + A[6 + j].hi);
     }
   }
-  const Interval mx(m[0]), my(m[1]), mz(m[2]);
-  const Interval h0 = two * A[0] * mx + A[3] * my + A[5] * mz + A[6];
-  const Interval h1 = A[3] * mx + two * A[1] * my + A[4] * mz + A[7];
-  const Interval h2 = A[5] * mx + A[4] * my + two * A[2] * mz + A[8];
-  const Interval e0 = Interval(box.lo[0], box.hi[0]) - mx, e1 = Interval(box.lo[1], box.hi[1]) - my,
-                 e2 = Interval(box.lo[2], box.hi[2]) - mz;
-  const Interval centred = this->EncloseAt(m) + h0 * e0 + h1 * e1 + h2 * e2 + A[0] * Square(e0) +
-    A[1] * Square(e1) + A[2] * Square(e2) + A[3] * (e0 * e1) + A[4] * (e1 * e2) + A[5] * (e0 * e2);
+  const Interval e[3] = { Interval(box.lo[0], box.hi[0]) - Interval(m[0]),
+    Interval(box.lo[1], box.hi[1]) - Interval(m[1]), Interval(box.lo[2], box.hi[2]) - Interval(m[2]) };
+  const Interval centred = this->EncloseTaylor(m, e);
   return { std::max(best.lo, centred.lo), std::min(best.hi, centred.hi) };
 }
 

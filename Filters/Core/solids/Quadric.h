@@ -34,6 +34,9 @@ struct IntervalQuadric
   Interval Enclose(const Box3& box) const;
   /// Enclosure of the polynomial at a single point.
   Interval EncloseAt(const Vec3& p) const;
+  /// Second-order Taylor form at p: f(p + d) = f(p) + g(p).d + d'Qd, with d
+  /// ranging over the intervals `d` (exact for a quadric, up to rounding).
+  Interval EncloseTaylor(const Vec3& p, const Interval d[3]) const;
 };
 
 /// A homogeneous witness point for the star-shaped test: a finite point p
