@@ -207,10 +207,12 @@ public:
   /**
    * Safety limits against runaway refinement (tangential contact never passes
    * the tests). Cells stopped by them are marked and the guarantee flag is 0.
-   * MaximumDepth is clamped to 40: the lattice reaches 2^-41 of the domain
-   * (less far from the origin, where the coordinates' doubles run out first).
-   * Raising it resolves thinner gaps between surfaces that face each other.
-   * Defaults: 16 and 10 000 000. Memory: at most about 100 MiB + 800 bytes x
+   * MaximumDepth defaults to 40, the lattice's end (2^-41 of the domain; less
+   * far from the origin, where the coordinates' doubles run out first):
+   * refinement below the tolerance's cells happens only where a topology test
+   * fails (a thin wedge's edge, a near contact), so the limit costs nothing
+   * where it is not needed. Lower it to cap the time spent on such places.
+   * Defaults: 40 and 10 000 000. Memory: at most about 100 MiB + 800 bytes x
    * MaximumNumberOfCells beyond the inputs.
    */
   vtkSetClampMacro(MaximumDepth, int, 0, 40);
@@ -243,7 +245,7 @@ protected:
   double Bounds[6] = { 0.0, -1.0, 0.0, -1.0, 0.0, -1.0 };
   double Tolerance = 0.01;
   bool ToleranceIsRelative = true;
-  int MaximumDepth = 16;
+  int MaximumDepth = 40;
   vtkIdType MaximumNumberOfCells = 10000000;
 
 private:

@@ -40,7 +40,9 @@ Options:
                          a number or a fraction: 0.01 (default), 1/64
       --absolute-tolerance E
                          epsilon in the inputs' units (instead of --tolerance)
-      --max-depth N      refinement limit, 0..19 (default 16)
+      --max-depth N      refinement limit, 0..40 (default 40,
+                         the lattice's end; refinement goes deep only
+                         where a topology test fails)
       --max-cells N      octree cell limit (default 10000000)
       --fill-holes       close the holes of open inputs (the filter's FillHoles,
                          vtkFillHolesFilter; reported as a repair) instead of
@@ -154,9 +156,9 @@ std::string ParseOption(const std::string& a, const std::vector<std::string>& ar
   }
   else if (a == "--max-depth")
   {
-    if (!value(v) || !ParseDecimal(v, x) || x < 0 || x > 19 || x != static_cast<int>(x))
+    if (!value(v) || !ParseDecimal(v, x) || x < 0 || x > 40 || x != static_cast<int>(x))
     {
-      return "--max-depth needs an integer from 0 to 19";
+      return "--max-depth needs an integer from 0 to 40";
     }
     o.MaxDepth = static_cast<int>(x);
   }

@@ -24,7 +24,7 @@ struct Options
   bool Grids = false;
   double Tolerance = 0.01;
   bool Absolute = false;
-  int MaxDepth = 16;
+  int MaxDepth = 40;
   long long MaxCells = 10000000;
   bool FillHoles = false;
   bool Json = false, Quiet = false, Help = false;

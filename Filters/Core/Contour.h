@@ -62,13 +62,20 @@ struct ContourScene
   CsgTerm::Op Operation = CsgTerm::Op::Union;
 };
 
+/// The deepest MaximumDepth: the lattice reaches 2^-41 of the domain
+/// (LatticeBits in RootGrid.h; less where the coordinates' doubles run out).
+constexpr int DeepestMaximumDepth = 40;
+
 struct ContourParameters
 {
   /// The two-sided Hausdorff bound epsilon, relative to the diagonal of the
   /// domain (Bounds, Region, or the solid's bounding box) or absolute.
   double Tolerance = 0.01;
   bool ToleranceIsRelative = true;
-  int MaximumDepth = 16;
+  /// A safety limit, not how the answer is reached: refinement below the
+  /// tolerance's cells happens only where a topology test fails, so the
+  /// default is the lattice's end (2^-41 of the domain; RootGrid.h).
+  int MaximumDepth = DeepestMaximumDepth;
   std::size_t MaximumNumberOfCells = 10000000; ///< (at least 8 are used)
   /// Clip the solid to this box (capped: the planes of its faces bound the
   /// solid) and contour only there.

@@ -63,11 +63,6 @@ def run(program, meshes, method, scene, epsilon, threads, cell_size, timeout, ma
         cmd += ["--max-cells", str(max_cells)]
     if abort_at:
         cmd += ["--abort-at", repr(abort_at)]
-    if method == "tpc":
-        # The 20-bit lattice's deepest level, kept so results stay comparable
-        # (the lattice now goes to 41): at 1/256 the default MaximumDepth (16)
-        # stops a few cells that need more levels below the tolerance's.
-        cmd += ["--max-depth", "19"]
     env = dict(os.environ, VTK_SMP_BACKEND_IN_USE="STDThread")
     try:
         done = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=timeout)

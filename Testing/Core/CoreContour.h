@@ -63,9 +63,10 @@ inline tpc::Box3 GrownDomain(const tpc::Box3& bounds) { return bounds.Grown(0.05
 /// A whole run through the core's entry point (tpc::Contour): the lattice laid
 /// over `bounds` (Region: grown by the usual margin, not clipped), the
 /// tolerance relative to its diagonal, trying up to `placements` lattice
-/// placements. The test scenes' meshes meet the paper's assumptions.
+/// placements, refining at most to `maxDepth` (the product's default, the
+/// lattice's end). The test scenes' meshes meet the paper's assumptions.
 inline ContourRun Contour(const Scene& scene, const tpc::Box3& bounds, double relativeTolerance,
-  int maxDepth = 16, int placements = tpc::LatticePlacements, std::size_t maxCells = 10000000)
+  int maxDepth = tpc::DeepestMaximumDepth, int placements = tpc::LatticePlacements, std::size_t maxCells = 10000000)
 {
   tpc::ContourScene input;
   input.Primitives = scene.Primitives;

@@ -550,7 +550,7 @@ TEST(FilterErrors, SurfacesCloserThanTheFinestCellAreSeparatedAtTheToleranceSize
 TEST(FilterErrors, BoxesSharingAFaceStopQuicklyWithoutGuarantee)
 {
   // Two vtkBox solids touching along a face: refining the contact grows like
-  // its area (half a minute at MaximumDepth 10, hours at the default 16).
+  // its area (half a minute at MaximumDepth 10, hours at 16 and beyond).
   const double a[6] = { 0, 1, 0, 1, 0, 1 }, b[6] = { 1, 2, 0, 1, 0, 1 };
   vtkNew<vtkTopologyPreservingContour> f;
   f->SetImplicitFunction(TwoBoxes(a, b));

@@ -8,11 +8,15 @@
 // "spheres:cx cy cz r;cx cy cz r;..." - a union of spheres, approximated
 // here by icospheres fine enough (5 subdivisions, relative error < 2e-4)
 // that the configurations used, which are far from tangency, keep the exact
-// spheres' topology. Prints "components genus euler angle": the last is the
-// smallest angle between crossing triangles of the two operands (degrees). Not built by default
+// spheres' topology. Prints "components genus euler angle gap": angle is the
+// smallest angle between crossing triangles of the two operands (degrees, -1
+// where they do not cross); gap, where they do not meet, is the distance
+// between them relative to the diagonal of their common bounding box (the
+// filter's domain), else -1. Not built by default
 // (configure with -DTPC_BUILD_CSG_REFERENCE=ON); its results are recorded in
 // Data/CsgReference.csv.
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
@@ -25,12 +29,14 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <string>
 #include <vector>
 
 using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
+using Inexact = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
@@ -155,6 +161,113 @@ double MinimumCrossingAngle(const Mesh& a, const Mesh& b)
   }
   return smallest;
 }
+
+/// A mesh's triangles in doubles with their boxes (distances need no exact
+/// constructions: the gap is reported, not decided on).
+std::vector<std::pair<Inexact::Triangle_3, CGAL::Bbox_3>> InexactTriangles(const Mesh& m)
+{
+  std::vector<std::pair<Inexact::Triangle_3, CGAL::Bbox_3>> triangles;
+  for (auto f : m.faces())
+  {
+    auto h = m.halfedge(f);
+    const Kernel::Point_3* p[3] = { &m.point(m.source(h)), &m.point(m.target(h)), &m.point(m.target(m.next(h))) };
+    Inexact::Point_3 q[3];
+    for (int i = 0; i < 3; ++i)
+    {
+      q[i] = Inexact::Point_3(CGAL::to_double(p[i]->x()), CGAL::to_double(p[i]->y()), CGAL::to_double(p[i]->z()));
+    }
+    const Inexact::Triangle_3 t(q[0], q[1], q[2]);
+    triangles.emplace_back(t, t.bbox());
+  }
+  return triangles;
+}
+
+/// Distance between two disjoint triangles: attained at a vertex of one and
+/// the other triangle, or between two edges.
+double TriangleDistance(const Inexact::Triangle_3& s, const Inexact::Triangle_3& t)
+{
+  double d2 = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 3; ++i)
+  {
+    d2 = std::min({ d2, CGAL::to_double(CGAL::squared_distance(s.vertex(i), t)),
+      CGAL::to_double(CGAL::squared_distance(t.vertex(i), s)) });
+    for (int j = 0; j < 3; ++j)
+    {
+      const Inexact::Segment_3 a(s.vertex(i), s.vertex((i + 1) % 3)), b(t.vertex(j), t.vertex((j + 1) % 3));
+      d2 = std::min(d2, CGAL::to_double(CGAL::squared_distance(a, b)));
+    }
+  }
+  return std::sqrt(d2);
+}
+
+/// Squared distance between two boxes (0 where they overlap).
+double BoxDistance2(const CGAL::Bbox_3& a, const CGAL::Bbox_3& b)
+{
+  double d2 = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    const double g = std::max({ 0.0, a.min(k) - b.max(k), b.min(k) - a.max(k) });
+    d2 += g * g;
+  }
+  return d2;
+}
+
+/// The distance between two meshes that do not meet: brute force over the
+/// triangle pairs whose boxes are closer than the best so far, seeded by the
+/// closest pair of vertices (the test meshes are small).
+double MinimumDistance(const Mesh& a, const Mesh& b)
+{
+  const auto ta = InexactTriangles(a), tb = InexactTriangles(b);
+  double best = std::numeric_limits<double>::infinity();
+  for (const auto& [s, boxS] : ta)
+  {
+    for (const auto& [t, boxT] : tb)
+    {
+      best = std::min(best, std::sqrt(CGAL::to_double(CGAL::squared_distance(s.vertex(0), t.vertex(0)))));
+    }
+  }
+  for (const auto& [s, boxS] : ta)
+  {
+    for (const auto& [t, boxT] : tb)
+    {
+      if (BoxDistance2(boxS, boxT) < best * best)
+      {
+        best = std::min(best, TriangleDistance(s, t));
+      }
+    }
+  }
+  return best;
+}
+
+/// The distance from a point to a mesh's surface.
+double DistanceToSurface(const Mesh& m, const Inexact::Point_3& p)
+{
+  double d2 = std::numeric_limits<double>::infinity();
+  for (const auto& [t, box] : InexactTriangles(m))
+  {
+    d2 = std::min(d2, CGAL::to_double(CGAL::squared_distance(p, t)));
+  }
+  return std::sqrt(d2);
+}
+
+/// The diagonal of the box holding both meshes (the filter's domain).
+double CommonDiagonal(const Mesh& a, const Mesh& b)
+{
+  CGAL::Bbox_3 box;
+  for (const Mesh* m : { &a, &b })
+  {
+    for (auto v : m->vertices())
+    {
+      box += m->point(v).bbox();
+    }
+  }
+  double d2 = 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    d2 += (box.max(k) - box.min(k)) * (box.max(k) - box.min(k));
+  }
+  return std::sqrt(d2);
+}
 } // namespace
 
 int main(int argc, char** argv)
@@ -175,6 +288,7 @@ int main(int argc, char** argv)
   }
   Mesh b;
   const std::string second = argv[2];
+  std::vector<std::array<double, 4>> spheres;
   if (second.rfind("spheres:", 0) == 0)
   {
     std::stringstream list(second.substr(8));
@@ -188,6 +302,7 @@ int main(int argc, char** argv)
       {
         fields >> x;
       }
+      spheres.push_back({ c[0], c[1], c[2], c[3] });
       Mesh s = Icosphere(c[0], c[1], c[2], c[3], 5);
       if (first)
       {
@@ -210,6 +325,19 @@ int main(int argc, char** argv)
     return 1;
   }
   const double angle = MinimumCrossingAngle(a, b); // (before corefinement changes the meshes)
+  // The gap between surfaces that do not cross: for spheres, the exact
+  // spheres' (distance from the centre to A's surface, minus the radius).
+  double gap = angle < 0.0 ? MinimumDistance(a, b) : -1.0;
+  if (!spheres.empty())
+  {
+    gap = std::numeric_limits<double>::infinity();
+    for (const auto& c : spheres)
+    {
+      gap = std::min(gap, DistanceToSurface(a, Inexact::Point_3(c[0], c[1], c[2])) - c[3]);
+    }
+    gap = gap > 0.0 ? gap : -1.0;
+  }
+  const double relativeGap = gap > 0.0 ? gap / CommonDiagonal(a, b) : -1.0;
   Mesh out;
   if (!Boolean(a, b, op, out))
   {
@@ -222,6 +350,6 @@ int main(int argc, char** argv)
   auto fcc = out.add_property_map<Mesh::Face_index, std::size_t>("f:cc").first;
   const long long components = static_cast<long long>(PMP::connected_components(out, fcc));
   const long long euler = v - e + f;
-  std::cout << components << " " << (2 * components - euler) / 2 << " " << euler << " " << angle << "\n";
+  std::cout << components << " " << (2 * components - euler) / 2 << " " << euler << " " << angle << " " << relativeGap << "\n";
   return 0;
 }

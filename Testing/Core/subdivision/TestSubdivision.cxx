@@ -17,6 +17,20 @@ using tpctest::SceneBuilder;
 using tpctest::Contour;
 using tpctest::ContourRun;
 
+namespace
+{
+/// The deepest level of a run's octree.
+int DeepestLevel(const ContourRun& r)
+{
+  int deepest = 0;
+  for (const tpc::OctreeNode& n : r.Subdivision.Octree.Nodes)
+  {
+    deepest = std::max(deepest, static_cast<int>(n.Level));
+  }
+  return deepest;
+}
+} // namespace
+
 TEST(Subdivision, SphereIsAdaptiveClosedAndWithinTolerance)
 {
   SceneBuilder b;
@@ -133,8 +147,7 @@ TEST(Subdivision, TangentialContactEndsAtTheLimitWithoutAGuarantee)
 TEST(Subdivision, NearContactsSeparateWithoutRefiningToTheGap)
 {
   // Two spheres of radius 0.5 whose gap is 1e-3, 1e-6, 1e-9 of a domain 2
-  // wide, at the default MaximumDepth (16: finest cell about 3e-5, wider
-  // than the two smaller gaps). The loops on either side of the gap are
+  // wide, at the default MaximumDepth. The loops on either side of the gap are
   // located down to the lattice and separated by a plane in the gap that
   // the surface provably misses (LoopsSeparated); each cap passes the
   // star-shaped test on its own side. So the cells at the contact pass at
@@ -155,25 +168,22 @@ TEST(Subdivision, NearContactsSeparateWithoutRefiningToTheGap)
       EXPECT_EQ(r.Report.Components, 2) << gap;
       EXPECT_EQ(r.Report.Genus, 0) << gap;
       EXPECT_TRUE(r.Report.Closed && r.Report.Manifold) << gap;
-      int deepest = 0;
-      for (const tpc::OctreeNode& n : r.Subdivision.Octree.Nodes)
-      {
-        deepest = std::max(deepest, static_cast<int>(n.Level));
-      }
-      EXPECT_LE(deepest, 12) << gap << ": refined towards the gap";
+      EXPECT_LE(DeepestLevel(r), 12) << gap << ": refined towards the gap";
     }
   }
 }
 
 TEST(Subdivision, ThinWedgesInAnyOrientationResolve)
 {
-  // A box cut by two planes meeting at 10 and 30 degrees along a line tilted
-  // to every axis: the solid is a thin wedge. Its edge's cells resolve at the
-  // tolerance's size or a few levels below: the tiles it pierces are split
-  // inside the wedge (FaceRefinement.h), the two sheets beside it are
-  // separated by an oblique plane (LoopsSeparated) - before, they failed at
-  // every level until stopped as too close.
-  for (const double degrees : { 30.0, 10.0 })
+  // A box cut by two planes meeting at 30, 10 and 3 degrees along a line
+  // tilted to every axis: the solid is a thin wedge. Its edge's cells
+  // resolve a few levels below the tolerance's size: the tiles it pierces
+  // are split inside the wedge (FaceRefinement.h), the two sheets beside it
+  // are separated by an oblique plane (LoopsSeparated) - before, they failed
+  // at every level until stopped as too close. At 3 degrees two cells
+  // needed more than MaximumDepth 16 on this lattice; the default (the
+  // lattice's end) resolves them.
+  for (const double degrees : { 30.0, 10.0, 3.0 })
   {
     SceneBuilder b;
     const Vec3 o{ 0.1234, 0.0567, 0.0891 };
@@ -198,9 +208,9 @@ TEST(Subdivision, SmallComponentResolvesBelowTheOldLatticesEnd)
   // A bubble of radius 1e-7 beside a sphere, in a domain 2 wide: its cells
   // must reach level 22 or so before a corner falls inside it. At
   // MaximumDepth 16 the cells around it are stopped at the limit, the
-  // guarantee withdrawn. At 24 the lattice (42 bits, RootGrid.h) lets
-  // refinement go below level 19, where the old 20-bit lattice ended: two
-  // components, guaranteed.
+  // guarantee withdrawn. At the default (the lattice's end, 42 bits,
+  // RootGrid.h) refinement goes below level 19, where the old 20-bit lattice
+  // ended, only around the bubble: two components, guaranteed.
   SceneBuilder b;
   b.Finish(SceneBuilder::Union(
     { b.Sphere({ -0.5013, 0.0021, 0.0007 }, 0.5), b.Sphere({ 0.7071, 0.0123, -0.0031 }, 1e-7) }));
@@ -208,17 +218,68 @@ TEST(Subdivision, SmallComponentResolvesBelowTheOldLatticesEnd)
   const ContourRun stopped = Contour(b.Scene, bounds, 1.0 / 32, 16, 1);
   EXPECT_TRUE(stopped.Subdivision.DepthLimitReached);
   EXPECT_FALSE(stopped.Guaranteed);
-  const ContourRun resolved = Contour(b.Scene, bounds, 1.0 / 32, 24, 1);
+  const ContourRun resolved = Contour(b.Scene, bounds, 1.0 / 32, tpc::DeepestMaximumDepth, 1);
   EXPECT_EQ(resolved.Subdivision.UnresolvedCells, 0u);
   EXPECT_TRUE(resolved.Guaranteed);
   EXPECT_EQ(resolved.Report.Components, 2);
   EXPECT_EQ(resolved.Report.Genus, 0);
-  int deepest = 0;
-  for (const tpc::OctreeNode& n : resolved.Subdivision.Octree.Nodes)
+  EXPECT_GT(DeepestLevel(resolved), 19);
+}
+
+TEST(Subdivision, SharpWedgesResolveAtADepthGrowingWithTheAngle)
+{
+  // A box cut at 30, 10, 3 and 1 degrees to its top face: a wedge along a
+  // line. The cells at its edge resolve a bounded number of levels below
+  // the tolerance's, growing with log2(1/angle), not at the lattice's end
+  // (issue 16). Measured deepest levels (tolerance level 8, one lattice
+  // placement): 12, 12, 13, 16, 17, 19, 19, 16 at 30, 10, 3, 2, 1.5, 1, 0.5,
+  // 0.25 degrees - where the edge falls on the lattice matters as much as
+  // the angle. The 1-degree wedge needs levels beyond 16, where the old
+  // default MaximumDepth stopped 28 cells; the default, the lattice's end,
+  // costs nothing where it is not needed.
+  for (const double degrees : { 30.0, 10.0, 3.0, 1.0 })
   {
-    deepest = std::max(deepest, static_cast<int>(n.Level));
+    const double a = degrees * M_PI / 180.0;
+    SceneBuilder b;
+    b.Finish(SceneBuilder::Intersection({ b.Box({ -1, -1, -1 }, { 1, 1, 0.3 }),
+      b.Add(tpc::Quadric::Plane({ 0.1234, 0, 0.3 }, { -std::sin(a), -0.0123, -std::cos(a) })) }));
+    const Box3 bounds{ { -1.0371, -1.0213, -1.0517 }, { 1.0423, 1.0312, 0.3317 } };
+    const ContourRun r = Contour(b.Scene, bounds, 0.01, tpc::DeepestMaximumDepth, 1);
+    EXPECT_TRUE(r.Guaranteed) << degrees;
+    EXPECT_EQ(r.Subdivision.UnresolvedCells, 0u) << degrees;
+    EXPECT_EQ(r.Report.Components, 1) << degrees;
+    EXPECT_EQ(r.Report.Genus, 0) << degrees;
+    const int toleranceLevel = tpc::ToleranceLevel(tpctest::GrownDomain(bounds), r.Tolerance);
+    const int logAngle = static_cast<int>(std::ceil(std::log2(30.0 / degrees)));
+    EXPECT_LE(DeepestLevel(r), toleranceLevel + 4 + 2 * logAngle) << degrees;
+    if (degrees == 1.0)
+    {
+      EXPECT_GT(DeepestLevel(r), 16);
+      const ContourRun old = Contour(b.Scene, bounds, 0.01, 16, 1);
+      EXPECT_FALSE(old.Guaranteed);
+      EXPECT_GT(old.Subdivision.UnresolvedCells, 0u);
+    }
   }
-  EXPECT_GT(deepest, 19);
+}
+
+TEST(Subdivision, SpheresOverlappingByAHairFormOneSolid)
+{
+  // Two spheres of radius 0.5 overlapping by 1e-6 of the domain: the exact
+  // union is one component joined by a neck 1e-3 wide, with a sharp
+  // exterior wedge around it. Resolved at the default MaximumDepth (at 16
+  // the neck's cells were stopped and the output had two components).
+  SceneBuilder b;
+  b.Finish(SceneBuilder::Union({ b.Sphere({ -0.5013, 0.0021, 0.0007 }, 0.5),
+    b.Sphere({ 0.4987 - 2e-6, 0.0021, 0.0007 }, 0.5) }));
+  const Box3 bounds{ { -1.01, -0.51, -0.51 }, { 1.01, 0.51, 0.51 } };
+  const ContourRun r = Contour(b.Scene, bounds, 1.0 / 64);
+  EXPECT_TRUE(r.Guaranteed);
+  EXPECT_EQ(r.Subdivision.UnresolvedCells, 0u);
+  EXPECT_EQ(r.Report.Components, 1);
+  EXPECT_EQ(r.Report.Genus, 0);
+  EXPECT_TRUE(r.Report.Closed && r.Report.Manifold);
+  const ContourRun old = Contour(b.Scene, bounds, 1.0 / 64, 16);
+  EXPECT_FALSE(old.Guaranteed);
 }
 
 TEST(Subdivision, LatticePlacementsDifferAndAllCoverTheDomain)
