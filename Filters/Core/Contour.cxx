@@ -488,8 +488,9 @@ void DescribeUnresolvedCells(std::ostringstream& why, const SubdivisionResult& a
   }
   if (all.FacingSurfaceCells > 0)
   {
-    why << " Overlap touching solids, or move them apart, by more than a few lattice spacings; for a thin wedge, "
-           "raise MaximumDepth.";
+    why << " Overlap touching solids, or move them apart, by more than a few lattice spacings";
+    // (At the default depth the finest cell is the lattice's: raising it is no remedy.)
+    why << (p.MaximumDepth < DeepestMaximumDepth ? "; for a thin wedge, raise MaximumDepth." : ".");
   }
 }
 

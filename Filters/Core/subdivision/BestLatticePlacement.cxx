@@ -121,6 +121,7 @@ PlacedSubdivision RunOnBestLatticePlacement(const ImplicitScene& scene, const Bo
     // Decisions every piece takes alike.
     const std::size_t unresolved = sum(run.UnresolvedCells);
     const std::size_t touching = sum(run.TouchingSurfaceCells);
+    const std::size_t facing = sum(run.FacingSurfaceCells);
     const bool cellLimit = sum(run.CellLimitReached ? 1 : 0) > 0;
     const bool aborted = sum(run.Aborted || abortAsked ? 1 : 0) > 0;
     run.Aborted = aborted;
@@ -136,11 +137,16 @@ PlacedSubdivision RunOnBestLatticePlacement(const ImplicitScene& scene, const Bo
       best.Result.Aborted = true;
       return best;
     }
-    // Surfaces lying in one plane do not move apart on another lattice;
-    // surfaces merely close - beside a thin wedge's edge, where a few cells
-    // may stay unresolved at one placement - often resolve on another.
+    // Surfaces lying in one plane do not move apart on another lattice, nor
+    // do surfaces closer than the finest cell when that cell is at most two
+    // lattice spacings wide (the default MaximumDepth: ~1e-12 of the domain,
+    // they touch). With MaximumDepth lowered, surfaces merely close - beside
+    // a thin wedge's edge, where a few cells may stay unresolved at one
+    // placement - often resolve on another.
+    const bool atLatticeEnd = params.MaximumDepth + 1 >= grid.MaxDepth;
+    const bool inContact = unresolved == touching || (atLatticeEnd && unresolved == facing);
     if (aborted || best.UnresolvedCellsOfAllPieces == 0 ||
-      (best.UnresolvedCellsOfAllPieces == unresolved && unresolved == touching) || cellLimit)
+      (best.UnresolvedCellsOfAllPieces == unresolved && inContact) || cellLimit)
     {
       break;
     }
