@@ -16,6 +16,7 @@
 // (configure with -DTPC_BUILD_CSG_REFERENCE=ON); its results are recorded in
 // Data/CsgReference.csv.
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Cartesian_converter.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
@@ -123,6 +124,13 @@ bool Boolean(Mesh& a, Mesh& b, const std::string& op, Mesh& out)
   }
   return PMP::corefine_and_compute_difference(a, b, out);
 }
+/// The triangle of a face of a (triangle) mesh.
+Kernel::Triangle_3 FaceTriangle(const Mesh& m, Mesh::Face_index f)
+{
+  const auto h = m.halfedge(f);
+  return { m.point(m.source(h)), m.point(m.target(h)), m.point(m.target(m.next(h))) };
+}
+
 /// The smallest angle (degrees, 0 to 90) between the planes of two crossing
 /// triangles, one of each mesh: how shallow the intersection is, which is
 /// what makes a Boolean hard for the filter (thin wedges along the curve).
@@ -133,15 +141,13 @@ double MinimumCrossingAngle(const Mesh& a, const Mesh& b)
   std::vector<std::pair<Kernel::Triangle_3, CGAL::Bbox_3>> fb;
   for (auto f : b.faces())
   {
-    auto h = b.halfedge(f);
-    const Kernel::Triangle_3 t(b.point(b.source(h)), b.point(b.target(h)), b.point(b.target(b.next(h))));
+    const Kernel::Triangle_3 t = FaceTriangle(b, f);
     fb.emplace_back(t, t.bbox());
   }
   double smallest = -1.0;
   for (auto f : a.faces())
   {
-    auto h = a.halfedge(f);
-    const Kernel::Triangle_3 ta(a.point(a.source(h)), a.point(a.target(h)), a.point(a.target(a.next(h))));
+    const Kernel::Triangle_3 ta = FaceTriangle(a, f);
     const CGAL::Bbox_3 box = ta.bbox();
     const auto na = ta.supporting_plane().orthogonal_vector();
     const double ax = CGAL::to_double(na.x()), ay = CGAL::to_double(na.y()), az = CGAL::to_double(na.z());
@@ -166,17 +172,11 @@ double MinimumCrossingAngle(const Mesh& a, const Mesh& b)
 /// constructions: the gap is reported, not decided on).
 std::vector<std::pair<Inexact::Triangle_3, CGAL::Bbox_3>> InexactTriangles(const Mesh& m)
 {
+  const CGAL::Cartesian_converter<Kernel, Inexact> toDoubles;
   std::vector<std::pair<Inexact::Triangle_3, CGAL::Bbox_3>> triangles;
   for (auto f : m.faces())
   {
-    auto h = m.halfedge(f);
-    const Kernel::Point_3* p[3] = { &m.point(m.source(h)), &m.point(m.target(h)), &m.point(m.target(m.next(h))) };
-    Inexact::Point_3 q[3];
-    for (int i = 0; i < 3; ++i)
-    {
-      q[i] = Inexact::Point_3(CGAL::to_double(p[i]->x()), CGAL::to_double(p[i]->y()), CGAL::to_double(p[i]->z()));
-    }
-    const Inexact::Triangle_3 t(q[0], q[1], q[2]);
+    const Inexact::Triangle_3 t = toDoubles(FaceTriangle(m, f));
     triangles.emplace_back(t, t.bbox());
   }
   return triangles;
@@ -239,11 +239,12 @@ double MinimumDistance(const Mesh& a, const Mesh& b)
   return best;
 }
 
-/// The distance from a point to a mesh's surface.
-double DistanceToSurface(const Mesh& m, const Inexact::Point_3& p)
+/// The distance from a point to a surface (its InexactTriangles).
+double DistanceToSurface(const std::vector<std::pair<Inexact::Triangle_3, CGAL::Bbox_3>>& surface,
+  const Inexact::Point_3& p)
 {
   double d2 = std::numeric_limits<double>::infinity();
-  for (const auto& [t, box] : InexactTriangles(m))
+  for (const auto& [t, box] : surface)
   {
     d2 = std::min(d2, CGAL::to_double(CGAL::squared_distance(p, t)));
   }
@@ -331,9 +332,10 @@ int main(int argc, char** argv)
   if (!spheres.empty())
   {
     gap = std::numeric_limits<double>::infinity();
+    const auto surfaceA = InexactTriangles(a);
     for (const auto& c : spheres)
     {
-      gap = std::min(gap, DistanceToSurface(a, Inexact::Point_3(c[0], c[1], c[2])) - c[3]);
+      gap = std::min(gap, DistanceToSurface(surfaceA, Inexact::Point_3(c[0], c[1], c[2])) - c[3]);
     }
     gap = gap > 0.0 ? gap : -1.0;
   }
