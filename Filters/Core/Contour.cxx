@@ -508,8 +508,15 @@ void DecideGuarantee(ContourResult& r, const ContourParameters& p, double tolera
   r.Topology = WholeTopology(r, run);
   const TopologyReport& whole = r.Topology;
   ContourReport& report = r.Report;
-  // Surface in a cell without a patch is missing from the output: no bound.
-  report.HausdorffBound = withoutPatch == 0 ? all.HausdorffBound : std::nan("");
+  // The cells bounded by their size and the cells certified on their patches
+  // (QuadricCellError.h); surface in a cell without a patch is missing from
+  // the output: no bound.
+  const ExtractionResult& e = r.Extraction;
+  const double certified = run.Collective() ? run.Exchange.Max(e.CertifiedBound) : e.CertifiedBound;
+  const std::size_t uncertified = run.Sum(e.UncertifiedCells);
+  report.HausdorffBound = withoutPatch == 0 ? std::max(all.HausdorffBound, certified) : std::nan("");
+  // (NaN compares false: a missing bound withdraws the guarantee too.)
+  const bool withinTolerance = report.HausdorffBound <= tolerance * (1.0 + 1e-9);
   report.Embedded = embedding.NotEmbeddedPieces == 0;
   report.PlanarCells = static_cast<long long>(all.PlanarSurfaceCells);
   report.ExactCells = static_cast<long long>(all.ExactCells);
@@ -522,6 +529,7 @@ void DecideGuarantee(ContourResult& r, const ContourParameters& p, double tolera
   report.Manifold = whole.Manifold;
   const bool empty = whole.Faces == 0;
   report.Guaranteed = r.AssumptionsMet && all.UnresolvedCells == 0 && inconsistent == 0 && report.Embedded &&
+    withinTolerance &&
     (run.Piece.Pieces == 1 || run.Collective()) && (empty || (whole.Closed && whole.Manifold && whole.Oriented));
   if (report.Guaranteed || (run.Collective() && run.Piece.Piece != 0)) // (one piece says it)
   {
@@ -548,6 +556,11 @@ void DecideGuarantee(ContourResult& r, const ContourParameters& p, double tolera
   if (inconsistent > 0)
   {
     why << " " << inconsistent << " cell(s) gave inconsistent loops.";
+  }
+  if (!withinTolerance && all.UnresolvedCells == 0)
+  {
+    why << " the proven Hausdorff bound (" << report.HausdorffBound << ") exceeds the tolerance (" << tolerance
+        << "): " << uncertified << " cell(s) kept larger than the tolerance could not certify their patch's error.";
   }
   r.Messages.push_back({ ContourMessage::Level::Warning, why.str() });
 }

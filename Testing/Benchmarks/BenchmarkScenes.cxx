@@ -226,6 +226,19 @@ Scene MakeScene(const std::string& name, const std::string& meshDirectory)
     s.Genus = 100;
     return s;
   }
+  if (name == "sphere")
+  {
+    // The sphere of Core.QuadricCellError (certified cells, issue 17).
+    vtkNew<vtkSphere> sphere;
+    sphere->SetCenter(0.03, -0.05, 0.02);
+    sphere->SetRadius(0.8);
+    s.Implicit = sphere;
+    s.Bounds = { -1.0, 1.0, -1.0, 1.0, -1.0, 1.0 };
+    s.HasBounds = false;
+    s.Components = 1;
+    s.Genus = 0;
+    return s;
+  }
   if (name == "demo-csg")
   {
     s.Implicit = DemoSolid();

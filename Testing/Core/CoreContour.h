@@ -20,6 +20,7 @@ struct ContourRun
   tpc::EmbeddingReport Embedding;
   tpc::TopologyReport Report;
   double Tolerance = 0.0; ///< absolute
+  double HausdorffBound = 0.0; ///< the report's proven two-sided bound
   bool Guaranteed = false;
   bool Contoured = false; ///< contoured, or the solid is empty (else Messages say why)
   std::vector<tpc::ContourMessage> Messages;
@@ -88,6 +89,7 @@ inline ContourRun Contour(const Scene& scene, const tpc::Box3& bounds, double re
   r.Embedding = std::move(result.Embedding);
   r.Report = result.Topology;
   r.Tolerance = result.Report.AbsoluteTolerance;
+  r.HausdorffBound = result.Report.HausdorffBound;
   r.Guaranteed = result.Report.Guaranteed;
   r.Contoured = result.Status == tpc::ContourResult::Outcome::Contoured ||
     result.Status == tpc::ContourResult::Outcome::Empty;

@@ -4,6 +4,7 @@
 #include "ComplexCellCriterion.h"
 #include "FaceRefinement.h"
 #include "PlanarCell.h"
+#include "QuadricCellError.h"
 #include "StarShapedCriterion.h"
 
 #include <algorithm>
@@ -90,9 +91,17 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     }
   }
   // Cells that must shrink anyway skip the costlier tests; a plane section
-  // may stay larger (error-driven acceptance, PlanarCell.h).
+  // (PlanarCell.h) or a cell whose certified error is within the tolerance
+  // (QuadricCellError.h) may stay larger.
   const bool oversized = grid.CellDiagonal(node.Level) > tolerance * (1.0 + 1e-9);
-  if (oversized && (uniform || !IsPlanarCell(*expression, prims, box)))
+  const bool planar = oversized && !uniform && IsPlanarCell(*expression, prims, box);
+  if (!uniform && !planar)
+  {
+    const std::optional<QuadricCellError> quadric = BoundQuadricCell(expression, tree.SceneExpression, prims, box, tolerance);
+    v.PredictedError = quadric ? PredictedCellError(*quadric) : HUGE_VAL;
+    v.ErrorBounded = v.PredictedError <= tolerance;
+  }
+  if (oversized && !planar && !v.ErrorBounded)
   {
     v.Reason = uniform ? SplitReason::ComplexVoxel : SplitReason::HausdorffSize;
     return v;
@@ -127,7 +136,7 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   }
   v.Kind = McVerdict::Pass;
   v.Reason = SplitReason::None;
-  v.Planar = oversized; // (an oversized cell only gets this far as a plane section)
+  v.Planar = planar;
   v.NewSigns = signs.NewSigns();
   return v;
 }

@@ -6,6 +6,7 @@
 #include "AdaptiveOctree.h"
 #include "BoundaryLoops.h"
 
+#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -28,6 +29,12 @@ struct McCompatibility
   /// Passed while larger than the tolerance: the surface in it is a plane
   /// section (PlanarCell.h), so its patch is exact whatever its size.
   bool Planar = false;
+  /// One quadric is the surface in the cell and the certified error of any
+  /// patch of it (QuadricCellError.h), PredictedError, is within the
+  /// tolerance: the cell may pass at any size, and its error is certified on
+  /// its final patch (CellPatches.h).
+  bool ErrorBounded = false;
+  double PredictedError = HUGE_VAL;
   /// Faces this cell refined (only kept if it passes).
   std::vector<std::pair<FaceKey, std::vector<FaceTile>>> Refinements;
   /// Signs evaluated during the tests, for the global table.
@@ -40,7 +47,9 @@ constexpr int FaceRefinementLevels = 10;
 /// The tests of paper 5.3 on one cell, with faces refined where a face test
 /// fails (FaceRefinement.h). A cell passes when
 /// - it is no larger than the tolerance (Hausdorff, 5.3.4), or the surface in
-///   it is a plane section (PlanarCell.h: the patch is then exact);
+///   it is a plane section (PlanarCell.h: the patch is then exact), or one
+///   quadric whose certified error is within the tolerance
+///   (QuadricCellError.h);
 /// - each face can be tiled by MC-compatible tiles (complex face and edge,
 ///   face ambiguity, star-shaped w.r.t. the face; Lemma 1 per tile);
 /// - the surface draws at least one loop on the cell boundary (none while the

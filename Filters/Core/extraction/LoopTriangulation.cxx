@@ -3,6 +3,7 @@
 #include "SymmetricEigen.h"
 
 #include <cmath>
+#include <optional>
 
 namespace tpc
 {
@@ -205,8 +206,25 @@ Vec3 KeptBelow(Vec3 apex, const std::vector<LoopPoint>& loop, const Box3& region
   return settled(apex) ? apex : ClampStrictlyInside(Centroid(loop), region);
 }
 
+/// On the surface, along the certified cell's direction n from the feature
+/// point or else the centroid, where that keeps the fan consistent: the
+/// certified error then has no apex term (QuadricCellError.h).
+std::optional<Vec3> ApexOnSurface(const std::vector<LoopPoint>& loop, const Box3& inner,
+  const QuadricCellError& surface, const Vec3& feature, const Vec3& centroid)
+{
+  for (const Vec3& start : { feature, inner.Clamp(centroid) })
+  {
+    const std::optional<Vec3> p = SurfacePointAlongDirection(surface, start, inner);
+    if (p && StrictlyInside(*p, inner) && FanIsConsistent(loop, *p))
+    {
+      return p;
+    }
+  }
+  return std::nullopt;
+}
+
 Vec3 PlaceApex(const std::vector<LoopPoint>& loop, const Box3& region, bool planeSection,
-  const CsgExpression& expression, const PrimitiveSet& primitives)
+  const CsgExpression& expression, const PrimitiveSet& primitives, const QuadricCellError* surface)
 {
   const Vec3 centroid = Centroid(loop);
   if (planeSection)
@@ -216,6 +234,13 @@ Vec3 PlaceApex(const std::vector<LoopPoint>& loop, const Box3& region, bool plan
   }
   const Box3 inner = Shrunk(region, ApexMargin);
   const Vec3 feature = inner.Clamp(TangentPlanesPoint(loop, centroid));
+  if (surface)
+  {
+    if (const std::optional<Vec3> onSurface = ApexOnSurface(loop, inner, *surface, feature, centroid))
+    {
+      return *onSurface;
+    }
+  }
   if (FanIsConsistent(loop, feature))
   {
     return ClampStrictlyInside(feature, region);
@@ -338,7 +363,8 @@ std::vector<SeparatingPlane> ObliqueCuts(const std::vector<std::vector<Vec3>>& l
 }
 
 LoopPatch TriangulateLoop(const std::vector<LoopPoint>& loop, const Box3& region, bool planeSection,
-  const CsgExpression& expression, const PrimitiveSet& primitives, const std::vector<SeparatingPlane>& below)
+  const CsgExpression& expression, const PrimitiveSet& primitives, const std::vector<SeparatingPlane>& below,
+  const QuadricCellError* surface)
 {
   LoopPatch patch;
   if (loop.size() == 3 && CommonFace(loop) < 0)
@@ -356,7 +382,7 @@ LoopPatch TriangulateLoop(const std::vector<LoopPoint>& loop, const Box3& region
     }
   }
   patch.Kind = LoopPatchKind::ApexFan;
-  patch.Apex = PlaceApex(loop, region, planeSection, expression, primitives);
+  patch.Apex = PlaceApex(loop, region, planeSection, expression, primitives, surface);
   if (!below.empty())
   {
     patch.Apex = KeptBelow(patch.Apex, loop, region, below);

@@ -51,6 +51,7 @@
 #pragma once
 
 #include "CsgExpression.h"
+#include "QuadricCellError.h"
 #include "SeparatingPlane.h"
 #include "Vector3.h"
 
@@ -107,9 +108,11 @@ std::vector<SeparatingPlane> ObliqueCuts(const std::vector<std::vector<Vec3>>& l
 /// apex recovers sharp features from the crossing normals (as Extended Marching
 /// Cubes does) and keeps 1/32 of the region's width from its boundary.
 /// `expression` (pruned to the cell) places apexes of caps over one face.
+/// `surface`: the cell's error is certified (QuadricCellError.h); the apex is
+/// then put on the surface where it can be, so that it adds no error.
 LoopPatch TriangulateLoop(const std::vector<LoopPoint>& loop, const Box3& region, bool planeSection,
   const CsgExpression& expression, const PrimitiveSet& primitives,
-  const std::vector<SeparatingPlane>& below = {});
+  const std::vector<SeparatingPlane>& below = {}, const QuadricCellError* surface = nullptr);
 
 /// True when `p` lies strictly inside `box` on every axis (exact comparisons).
 bool StrictlyInside(const Vec3& p, const Box3& box);

@@ -1,8 +1,13 @@
 #include "SurfaceExtraction.h"
 
 #include "CellPatches.h"
+#include "CertifiedError.h"
 #include "CrackPatching.h"
 #include "CrossingVertices.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
 
 namespace tpc
 {
@@ -88,6 +93,22 @@ void CountDefects(const AdaptiveOctree& tree, const std::vector<std::uint32_t>& 
       own[i] && patches[i].Triangles.empty() && tree.Nodes[cells[i]].State != CellState::Exact ? 1 : 0;
   }
 }
+
+/// The error-bounded cells' bound: each one's certified error, or its
+/// diagonal where that is smaller or the certificate failed (ExtractionResult).
+void GatherCertifiedBound(const AdaptiveOctree& tree, const std::vector<std::uint32_t>& cells,
+  const std::vector<double>& errors, ExtractionResult& result)
+{
+  for (std::size_t i = 0; i < cells.size(); ++i)
+  {
+    const OctreeNode& node = tree.Nodes[cells[i]];
+    if (node.State == CellState::Surface && node.ErrorBounded && tree.RoleOf(node) == TreeRole::Own)
+    {
+      result.UncertifiedCells += errors[i] == HUGE_VAL ? 1 : 0;
+      result.CertifiedBound = std::max(result.CertifiedBound, std::min(errors[i], tree.Grid.CellDiagonal(node.Level)));
+    }
+  }
+}
 } // namespace
 
 ExtractionResult ExtractSurface(const AdaptiveOctree& tree, const ImplicitScene& scene,
@@ -135,8 +156,9 @@ ExtractionResult ExtractSurface(const AdaptiveOctree& tree, const ImplicitScene&
     return result;
   }
 
-  // Pass 3: each own cell's patches.
+  // Pass 3: each own cell's patches, and the error-bounded cells' errors.
   std::vector<CellPatches> patches(cells.size());
+  std::vector<double> errors(cells.size(), 0.0);
   if (!ChunkedFor(cells.size(), Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i)
         {
@@ -146,8 +168,15 @@ ExtractionResult ExtractSurface(const AdaptiveOctree& tree, const ImplicitScene&
           }
           else if (own[i])
           {
-            TriangulateCell(loops[i], tree.Nodes[cells[i]], *tree.Expressions[cells[i]], prims, tree.Grid, vertices,
-              mesh, patches[i]);
+            const OctreeNode& node = tree.Nodes[cells[i]];
+            const bool bounded = node.State == CellState::Surface && node.ErrorBounded;
+            const std::optional<QuadricCellError> surface = bounded
+              ? BoundQuadricCell(tree.Expressions[cells[i]], tree.SceneExpression, prims,
+                  tree.Grid.CellBox(node.Level, node.Ijk), tree.HausdorffTolerance)
+              : std::nullopt;
+            TriangulateCell(loops[i], node, *tree.Expressions[cells[i]], prims, tree.Grid, vertices, mesh,
+              patches[i], surface ? &*surface : nullptr);
+            errors[i] = !bounded ? 0.0 : surface ? CertifiedPatchError(*surface, patches[i], mesh) : HUGE_VAL;
           }
         }
       }, ProgressRange(progress, 0.7, 0.95)))
@@ -156,6 +185,7 @@ ExtractionResult ExtractSurface(const AdaptiveOctree& tree, const ImplicitScene&
     return result;
   }
   CountDefects(tree, cells, own, loops, patches, result);
+  GatherCertifiedBound(tree, cells, errors, result);
 
   // Pass 4: the output, written once.
   if (!WritePatches(patches, cells, mesh, parallelFor, ProgressRange(progress, 0.95, 1.0)))

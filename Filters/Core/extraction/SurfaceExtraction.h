@@ -38,6 +38,13 @@ struct ExtractionResult
   /// The surface there, if any, is missing from the mesh, so no Hausdorff
   /// bound holds.
   std::size_t CellsWithoutPatch = 0;
+  /// The largest two-sided Hausdorff bound of the error-bounded cells
+  /// (QuadricCellError.h), each certified on its final patch
+  /// (CertifiedError.h), or its diagonal where that is smaller or the
+  /// certificate failed.
+  double CertifiedBound = 0.0;
+  /// Error-bounded cells whose certificate failed (their diagonal counts).
+  std::size_t UncertifiedCells = 0;
   /// `progress` asked to stop: the mesh is incomplete.
   bool Aborted = false;
 };

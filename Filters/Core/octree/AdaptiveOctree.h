@@ -30,6 +30,10 @@ struct OctreeNode
   /// is a union of plane sections (PlanarCell.h): its patches must stay in
   /// their planes.
   bool PlaneSection = false;
+  /// A Surface leaf where one quadric is the surface and its error is
+  /// certified on its patch (QuadricCellError.h); it may be larger than the
+  /// tolerance.
+  bool ErrorBounded = false;
   /// Children are FirstChild + c, c = x + 2y + 4z (VTK's HyperTree order); -1 for leaves.
   std::int32_t FirstChild = -1;
 
@@ -70,6 +74,12 @@ class AdaptiveOctree
 {
 public:
   RootGrid Grid;
+  /// The tolerance the cells were accepted with (the margin of the certified
+  /// cells' bounds, QuadricCellError.h).
+  double HausdorffTolerance = 0.0;
+  /// The scene's whole expression, for what looks beyond a cell (the grown
+  /// cell of QuadricCellError.h).
+  CsgExpressionPtr SceneExpression;
   /// Role of each tree in a run split into pieces (ForestPartition.h);
   /// empty: one piece, every tree its own.
   std::vector<TreeRole> Roles;

@@ -49,10 +49,16 @@ bool DecideCell(AdaptiveOctree& tree, std::uint32_t n, const CellTests& tests, c
   {
     node.State = CellState::Surface;
     node.PlaneSection = v.Planar;
+    node.ErrorBounded = v.ErrorBounded;
     result.SurfaceCells += mine;
     result.PlanarSurfaceCells += v.Planar ? mine : 0;
-    result.HausdorffBound =
-      std::max(result.HausdorffBound, mine * grid.CellDiagonal(v.Planar ? grid.MaxDepth : level));
+    result.ErrorBoundedCells += v.ErrorBounded ? mine : 0;
+    result.OversizedErrorBoundedCells += v.ErrorBounded && grid.CellDiagonal(level) > parameters.HausdorffTolerance ? mine : 0;
+    if (!v.ErrorBounded) // (certified on its patch: ExtractionResult::CertifiedBound)
+    {
+      result.HausdorffBound =
+        std::max(result.HausdorffBound, mine * grid.CellDiagonal(v.Planar ? grid.MaxDepth : level));
+    }
     return false;
   }
   if (v.Kind == McVerdict::Constant)

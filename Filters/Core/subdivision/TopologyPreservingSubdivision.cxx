@@ -35,6 +35,8 @@ public:
     , Progress(progress)
   {
     this->Result.Octree.Grid = grid;
+    this->Result.Octree.HausdorffTolerance = parameters.HausdorffTolerance;
+    this->Result.Octree.SceneExpression = scene.Expression;
     this->Result.Octree.Roles = parameters.TreeRoles;
     this->Limits.FinestWidth = std::ldexp(grid.RootSize, -std::min(parameters.MaximumDepth, grid.MaxDepth));
     this->Limits.ExactLevel = ExactCellLevelsBelowTolerance;

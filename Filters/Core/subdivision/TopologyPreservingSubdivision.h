@@ -69,10 +69,16 @@ struct SubdivisionResult
   std::size_t PlanarSurfaceCells = 0;
   /// Cells whose patch is the input mesh clipped to them (ExactCell.h).
   std::size_t ExactCells = 0;
+  /// Surface cells whose error is certified on their patch
+  /// (QuadricCellError.h), of any size; of those, larger than the tolerance.
+  std::size_t ErrorBoundedCells = 0;
+  std::size_t OversizedErrorBoundedCells = 0;
   /// The proven two-sided Hausdorff bound between the exact surface and the
-  /// extracted one: the largest diagonal of a surface or unresolved leaf (both
-  /// surfaces lie in it), where plane sections count the finest lattice
-  /// cell's diagonal (their patch is exact up to rounding).
+  /// extracted one over the leaves other than error-bounded cells (those are
+  /// certified on their patches: ExtractionResult::CertifiedBound): the
+  /// largest diagonal of a surface or unresolved leaf (both surfaces lie in
+  /// it), where plane sections count the finest lattice cell's diagonal
+  /// (their patch is exact up to rounding).
   double HausdorffBound = 0.0;
   /// Number of cells split for each SplitReason (and leaves left unresolved
   /// with that failing test, in UnresolvedByReason).

@@ -1,0 +1,119 @@
+// Certified per-cell error where one quadric is the surface (issue 17;
+// replaces the paper's 5.3.4 size criterion there).
+//
+// The paper bounds the two-sided Hausdorff distance by the cell's size: the
+// surface S and the patch P both lie in the cell C. What matters is their
+// distance, and where the solid in C is one quadric leaf it can be bounded
+// from the quadric's shape and the patch's geometry, so a surface cell may
+// stay larger than the tolerance wherever that bound is below it.
+//
+// Setting. f(x) = x'Ax + b'x + c (sign sigma applied, the solid is f < 0), A
+// the half Hessian. C+ is C grown by the margin m (the tolerance) on every
+// side; the expression pruned to C+ is the single leaf, so S ∩ C+ is the zero
+// set of f there. Chosen: a unit direction n (the gradient at C's centre) and,
+// for each face phi of C that may meet S, a unit direction m_phi in phi's
+// plane (the gradient there with its normal part removed).
+//   g      = min over C+ of grad f . n      (> 0 required)
+//   g_phi  = min over phi of grad f . m_phi (> 0 required where phi meets S)
+//   ||A||  <= min(max absolute row sum, Frobenius norm) of A
+// grad f is affine, so grad f . n is affine and its minimum over a box (a
+// rectangle) is at a corner: evaluated there in interval arithmetic, these are
+// proven lower bounds. (1) f increases at rate >= g along n throughout C+, and
+// along m_phi within phi.
+//
+// The quadratic's interpolation error. For a triangle or segment with
+// vertices v_i and a point x = sum l_i v_i (l_i >= 0, sum 1), expanding f at x
+// gives exactly sum l_i f(v_i) - f(x) = sum l_i (v_i - x)'A(v_i - x), so
+//   |f(x)| <= max |f(v_i)| + ||A|| sum l_i |v_i - x|^2 <= max |f(v_i)| + ||A|| R^2,
+// R the radius of the smallest ball around the vertices (sum l_i |v_i - o|^2
+// is smallest at o = x, and <= R^2 at that ball's centre); R = L/2 for a
+// segment of length L. (2)
+//
+// The bound. Let F_T be (2) for a patch triangle T and F_ab for a chord ab of
+// the patch's loop on face phi, and
+//   E_C = max( max_T F_T / g,  max_ab F_ab (1/g + 1/g_phi) ),
+// required <= m. Then every point of P_C is within E_C of S, and every point
+// of S ∩ C within E_C of the output:
+// - Patch to surface. x in P_C has |f(x)| <= F_T; by (1) f vanishes on the
+//   segment from x along -sign(f(x)) n of length |f(x)|/g <= m, inside C+.
+// - Surface to patch. Let y in S ∩ C and l the line through y along n; it
+//   leaves C at e- below and e+ above, where f(e-) <= 0 <= f(e+) by (1). Call
+//   a point of the boundary of C discretely inside when it is on the inside
+//   side of the patch's loop L there. (a) If e- is discretely inside and e+
+//   discretely outside, l crosses the patch (a union of discs spanning the
+//   loops, which separates C into the loops' sides) at some x in C, and by (1)
+//   |x - y| <= |f(x)|/g <= F_T/g. (b) Otherwise one end, say e+, has the wrong
+//   side: it lies on a face tile whose chord ab (the tiles passed the face
+//   tests: one chord per tile, and the surface crosses the tile in one arc
+//   whose ends are the chord's, up to the crossings' rounding, which |f(a)|
+//   covers) separates it from the arc, i.e. between the arc and the chord. On
+//   the line through e+ along m_phi, f is monotone within the tile (1): it
+//   meets the arc once and the chord once, at z_c, and the disagreement of the
+//   two sides along it is the stretch between them, so |f(e+)| <= |f(z_c)| <=
+//   F_ab and |e+ - z_c| <= F_ab/g_phi. Then |y - e+| <= f(e+)/g by (1), and
+//   d(y, P) <= F_ab/g + F_ab/g_phi.
+// Crack patching only refines a face's tiles (the finer neighbour's tiles lie
+// in this cell's), which shortens chords and keeps g_phi (a minimum over the
+// whole face); the certified value is computed on the final patch anyway
+// (CellPatches.h), and the subdivision's prediction bounds it for any patch
+// whose vertices lie on S in C: R <= D/2 (every triangle in C lies in C's
+// circumscribed ball, D the diagonal), L <= the face's diagonal.
+//
+// A plane (A = 0) gives zero: the patch is then the plane section
+// (PlanarCell.h says the same for several planes and flat meshes).
+#pragma once
+
+#include "CsgExpression.h"
+#include "Quadric.h"
+
+#include <optional>
+
+namespace tpc
+{
+
+struct QuadricCellError
+{
+  Box3 Cell;
+  double Margin = 0.0; ///< C+ is Cell grown by this on every side
+  Quadric Field;       ///< the leaf's quadric with its sign (solid: Field < 0)
+  Vec3 Direction;      ///< n
+  double Rise = 0.0;   ///< g
+  double Curvature = 0.0; ///< upper bound of ||A||_2
+  /// Per face (CubeTopology.h numbering, 2 axis + side): m_phi and g_phi,
+  /// g_phi = 0 where the face may meet S but f is not monotone along m_phi
+  /// on it, +inf where the face provably misses S.
+  Vec3 FaceDirection[6];
+  double FaceRise[6] = { 0, 0, 0, 0, 0, 0 };
+};
+
+/// The setting above for `cell` when the scene's expression pruned to the
+/// cell grown by `margin` is a single quadric leaf and g > 0; nothing
+/// otherwise. `cellExpression` is the scene's pruned to the cell (as the
+/// octree keeps it): unless it is a single quadric leaf, nothing is looked at
+/// further. (It cannot stand for the scene's: another primitive may lie
+/// outside the cell but within the margin.)
+std::optional<QuadricCellError> BoundQuadricCell(const CsgExpressionPtr& cellExpression,
+  const CsgExpressionPtr& sceneExpression, const PrimitiveSet& primitives, const Box3& cell, double margin);
+
+/// An upper bound of E_C for any patch whose vertices lie on S in the cell
+/// (the subdivision's acceptance test); +inf when a face that may meet S has
+/// g_phi <= 0.
+double PredictedCellError(const QuadricCellError& bound);
+
+/// F_T / g for the patch triangle (a, b, c).
+double TriangleError(const QuadricCellError& bound, const Vec3& a, const Vec3& b, const Vec3& c);
+
+/// F_ab (1/g + 1/g_phi) for the chord ab lying in face `face`; +inf where
+/// g_phi is not positive.
+double ChordError(const QuadricCellError& bound, int face, const Vec3& a, const Vec3& b);
+
+/// The face of the cell holding both points (exact comparison with its
+/// plane), -1 if none.
+int CommonCellFace(const Box3& cell, const Vec3& a, const Vec3& b);
+
+/// The point of S on the line through `p` along n inside `region` (part of
+/// the cell), found by bisection on the exact sign; nothing when the line
+/// does not cross S there.
+std::optional<Vec3> SurfacePointAlongDirection(const QuadricCellError& bound, const Vec3& p, const Box3& region);
+
+} // namespace tpc

@@ -1,0 +1,42 @@
+#include "CertifiedError.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tpc
+{
+namespace
+{
+/// The chord term of the edge ab if it lies in a face of the cell (the larger
+/// one for an edge on two faces), 0 otherwise.
+double EdgeChordError(const QuadricCellError& bound, const Vec3& a, const Vec3& b)
+{
+  double error = 0.0;
+  for (int face = 0; face < 6; ++face)
+  {
+    const double plane = (face % 2 ? bound.Cell.hi : bound.Cell.lo)[face / 2];
+    if (a[face / 2] == plane && b[face / 2] == plane)
+    {
+      error = std::max(error, ChordError(bound, face, a, b));
+    }
+  }
+  return error;
+}
+} // namespace
+
+double CertifiedPatchError(const QuadricCellError& bound, const CellPatches& patches, const TriangleMesh& mesh)
+{
+  const auto position = [&](std::uint32_t v) -> const Vec3& {
+    return (v & CellPatches::LocalFlag) ? patches.Apexes[v & ~CellPatches::LocalFlag] : mesh.Points[v];
+  };
+  double error = 0.0;
+  for (const Triangle& t : patches.Triangles)
+  {
+    const Vec3 &a = position(t[0]), &b = position(t[1]), &c = position(t[2]);
+    error = std::max({ error, TriangleError(bound, a, b, c), EdgeChordError(bound, a, b), EdgeChordError(bound, b, c),
+      EdgeChordError(bound, c, a) });
+  }
+  return error <= bound.Margin ? error : HUGE_VAL;
+}
+
+} // namespace tpc

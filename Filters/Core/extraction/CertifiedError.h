@@ -1,0 +1,22 @@
+// The certified error of a cell's final patch (issue 17): the bound of
+// QuadricCellError.h evaluated on the triangles and loop chords the cell
+// actually drew, after crack patching and apex placement.
+#pragma once
+
+#include "CellPatches.h"
+#include "QuadricCellError.h"
+#include "TriangleMesh.h"
+
+namespace tpc
+{
+
+/// E_C of the cell's `patches` (crossing vertices in `mesh`, apexes local):
+/// the largest triangle term over its triangles and the largest chord term
+/// over the triangle edges lying in one face of the cell (the loop's chords:
+/// an apex is strictly inside the cell, and Marching Cubes' fan diagonals
+/// join points on no common face, LoopTriangulation.h). +inf when a chord
+/// lies on a face without a monotone direction, or when E_C exceeds the
+/// margin (the argument's segments must stay in the grown cell).
+double CertifiedPatchError(const QuadricCellError& bound, const CellPatches& patches, const TriangleMesh& mesh);
+
+} // namespace tpc

@@ -1,0 +1,372 @@
+// The certified per-cell error (QuadricCellError.h, CertifiedError.h): in
+// every error-bounded cell of whole runs the certificate is at least the
+// two-sided distance measured by brute force between the exact surface in the
+// cell and the output; the subdivision's prediction bounds the certificate of
+// any patch on the surface; cells grow past the tolerance where the bound
+// allows, and the report's bound holds.
+#include "CoreContour.h"
+#include "QuadricCellError.h"
+#include "SceneBuilder.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <random>
+
+using tpc::Box3;
+using tpc::Vec3;
+using tpctest::SceneBuilder;
+
+namespace
+{
+/// A test surface with its exact distance and a projection onto it.
+struct ExactSurface
+{
+  std::function<double(const Vec3&)> Distance;
+  std::function<Vec3(const Vec3&)> Project;
+};
+
+ExactSurface Sphere(const Vec3& c, double r)
+{
+  return { [=](const Vec3& p) { return std::fabs(tpc::Norm(p - c) - r); },
+    [=](const Vec3& p) { return c + tpc::Normalized(p - c) * r; } };
+}
+
+/// Distance from y (centred) to the axis-aligned ellipsoid with semi-axes a:
+/// the closest point is a_i^2 y_i / (t + a_i^2) with t the root of
+/// sum (a_i y_i / (t + a_i^2))^2 = 1 on (-min a_i^2, inf), where that sum
+/// decreases (Eberly); bisection to the last bit.
+double EllipsoidDistance(const Vec3& y, const Vec3& a)
+{
+  const auto excess = [&](double t) {
+    double s = 0.0;
+    for (int i = 0; i < 3; ++i)
+    {
+      const double q = a[i] * y[i] / (t + a[i] * a[i]);
+      s += q * q;
+    }
+    return s - 1.0;
+  };
+  double lo = -std::min({ a[0] * a[0], a[1] * a[1], a[2] * a[2] }), hi = tpc::Norm(y) * std::max({ a[0], a[1], a[2] });
+  for (int k = 0; k < 200; ++k)
+  {
+    const double mid = 0.5 * (lo + hi);
+    if (mid <= lo || mid >= hi)
+    {
+      break;
+    }
+    (excess(mid) > 0.0 ? lo : hi) = mid;
+  }
+  const double t = 0.5 * (lo + hi);
+  Vec3 x;
+  for (int i = 0; i < 3; ++i)
+  {
+    x[i] = a[i] * a[i] * y[i] / (t + a[i] * a[i]);
+  }
+  return tpc::Norm(y - x);
+}
+
+/// The ellipsoid with centre c and semi-axes a, rotated by the orthogonal
+/// `rotation` (row-major): the solid {x : E(R x) < 0}.
+ExactSurface RotatedEllipsoid(const Vec3& c, const Vec3& a, const double rotation[9])
+{
+  std::array<double, 9> m;
+  std::copy(rotation, rotation + 9, m.begin());
+  const auto toFrame = [=](const Vec3& p) {
+    return Vec3(m[0] * p[0] + m[1] * p[1] + m[2] * p[2], m[3] * p[0] + m[4] * p[1] + m[5] * p[2],
+             m[6] * p[0] + m[7] * p[1] + m[8] * p[2]) - c;
+  };
+  const auto fromFrame = [=](const Vec3& q) {
+    const Vec3 p = q + c;
+    return Vec3(m[0] * p[0] + m[3] * p[1] + m[6] * p[2], m[1] * p[0] + m[4] * p[1] + m[7] * p[2],
+      m[2] * p[0] + m[5] * p[1] + m[8] * p[2]);
+  };
+  return { [=](const Vec3& p) { return EllipsoidDistance(toFrame(p), a); },
+    [=](const Vec3& p) {
+      const Vec3 y = toFrame(p);
+      const double s = std::sqrt(y[0] * y[0] / (a[0] * a[0]) + y[1] * y[1] / (a[1] * a[1]) + y[2] * y[2] / (a[2] * a[2]));
+      return fromFrame(y * (1.0 / s));
+    } };
+}
+
+/// A rotation by `angle` about the unit `axis` (Rodrigues), row-major.
+void Rotation(const Vec3& axis, double angle, double m[9])
+{
+  const double c = std::cos(angle), s = std::sin(angle), t = 1 - c;
+  const double x = axis[0], y = axis[1], z = axis[2];
+  const double r[9] = { t * x * x + c, t * x * y - s * z, t * x * z + s * y, t * x * y + s * z, t * y * y + c,
+    t * y * z - s * x, t * x * z - s * y, t * y * z + s * x, t * z * z + c };
+  std::copy(r, r + 9, m);
+}
+
+/// The certificate of node n's patch, recomputed from the output the way
+/// CertifiedError.cxx does it (triangle terms, and chord terms for edges in
+/// one face of the cell).
+double RecomputedCertificate(const tpc::QuadricCellError& bound, const tpc::TriangleMesh& mesh, std::uint32_t n)
+{
+  double error = 0.0;
+  for (std::size_t t = 0; t < mesh.Triangles.size(); ++t)
+  {
+    if (mesh.TriangleCell[t] != n)
+    {
+      continue;
+    }
+    const tpc::Triangle& tri = mesh.Triangles[t];
+    const Vec3 p[3] = { mesh.Points[tri[0]], mesh.Points[tri[1]], mesh.Points[tri[2]] };
+    error = std::max(error, tpc::TriangleError(bound, p[0], p[1], p[2]));
+    for (int k = 0; k < 3; ++k)
+    {
+      const int face = tpc::CommonCellFace(bound.Cell, p[k], p[(k + 1) % 3]);
+      if (face >= 0)
+      {
+        error = std::max(error, tpc::ChordError(bound, face, p[k], p[(k + 1) % 3]));
+      }
+    }
+  }
+  return error;
+}
+
+struct Measured
+{
+  std::size_t Cells = 0;          ///< error-bounded cells checked
+  std::size_t OversizedCells = 0; ///< of those, larger than the tolerance
+  double WorstRatio = 0.0;        ///< largest measured distance / certificate
+  double LargestCertificate = 0.0;
+};
+
+/// In every error-bounded cell: the distance from the cell's triangles
+/// (sampled on a barycentric grid) to the exact surface, and from exact
+/// surface points in the cell to the whole output, are at most the cell's
+/// certificate.
+Measured CheckEveryCertificate(const tpctest::ContourRun& r, const tpctest::Scene& scene, const ExactSurface& exact)
+{
+  Measured m;
+  const tpc::AdaptiveOctree& tree = r.Subdivision.Octree;
+  const tpc::TriangleMesh& mesh = r.Extraction.Mesh;
+  const tpc::MeshSolid output(mesh.Points.ToVector(), mesh.Triangles.ToVector());
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (std::uint32_t n = 0; n < tree.Nodes.size(); ++n)
+  {
+    const tpc::OctreeNode& node = tree.Nodes[n];
+    if (!node.IsLeaf() || node.State != tpc::CellState::Surface || !node.ErrorBounded)
+    {
+      continue;
+    }
+    const Box3 cell = tree.Grid.CellBox(node.Level, node.Ijk);
+    const auto bound =
+      tpc::BoundQuadricCell(tree.Expressions[n], scene.Expression, scene.Primitives, cell, r.Tolerance);
+    EXPECT_TRUE(bound.has_value());
+    if (!bound)
+    {
+      continue;
+    }
+    const double certificate = RecomputedCertificate(*bound, mesh, n);
+    EXPECT_LE(certificate, r.HausdorffBound * (1 + 1e-12));
+    m.LargestCertificate = std::max(m.LargestCertificate, certificate);
+    ++m.Cells;
+    m.OversizedCells += tree.Grid.CellDiagonal(node.Level) > r.Tolerance ? 1 : 0;
+    const double allowance = certificate * (1 + 1e-9) + 1e-14;
+    // Patch to surface.
+    for (std::size_t t = 0; t < mesh.Triangles.size(); ++t)
+    {
+      if (mesh.TriangleCell[t] != n)
+      {
+        continue;
+      }
+      const tpc::Triangle& tri = mesh.Triangles[t];
+      constexpr int Steps = 10;
+      for (int i = 0; i <= Steps; ++i)
+      {
+        for (int j = 0; i + j <= Steps; ++j)
+        {
+          const double a = double(i) / Steps, b = double(j) / Steps;
+          const Vec3 x = mesh.Points[tri[0]] * (1 - a - b) + mesh.Points[tri[1]] * a + mesh.Points[tri[2]] * b;
+          const double d = exact.Distance(x);
+          EXPECT_LE(d, allowance) << "patch point of cell " << n;
+          m.WorstRatio = std::max(m.WorstRatio, d / std::max(certificate, 1e-300));
+        }
+      }
+    }
+    // Surface to patch: points of the exact surface inside the cell.
+    const Vec3 w = cell.hi - cell.lo;
+    const Box3 near{ cell.lo - w, cell.hi + w };
+    const tpc::TriangleList candidates = output.Overlapping(near);
+    for (int s = 0; s < 400; ++s)
+    {
+      const Vec3 y = exact.Project(cell.lo + Vec3(u(rng) * w[0], u(rng) * w[1], u(rng) * w[2]));
+      if (!cell.Contains(y))
+      {
+        continue;
+      }
+      const double d = std::fabs(output.ApproximateSignedDistance(y, candidates));
+      EXPECT_LE(d, allowance) << "surface point of cell " << n;
+      m.WorstRatio = std::max(m.WorstRatio, d / std::max(certificate, 1e-300));
+    }
+  }
+  return m;
+}
+} // namespace
+
+TEST(QuadricCellError, CertificatesBoundTheMeasuredDistanceOnASphere)
+{
+  SceneBuilder b;
+  const Vec3 c{ 0.03, -0.05, 0.02 };
+  b.Finish(b.Sphere(c, 0.8));
+  // Triangles before certified cells (every surface cell at most the
+  // tolerance; measured at 0e95ccb): 6 340 and 101 324.
+  const std::map<double, std::size_t> before{ { 1.0 / 32, 6340 }, { 1.0 / 128, 101324 } };
+  for (const double tolerance : { 1.0 / 32, 1.0 / 128 })
+  {
+    const tpctest::ContourRun r = tpctest::Contour(b.Scene, { { -1, -1, -1 }, { 1, 1, 1 } }, tolerance);
+    EXPECT_TRUE(r.Guaranteed);
+    EXPECT_EQ(r.Report.Components, 1);
+    EXPECT_EQ(r.Report.Genus, 0);
+    EXPECT_LE(r.HausdorffBound, r.Tolerance * (1 + 1e-9));
+    const Measured m = CheckEveryCertificate(r, b.Scene, Sphere(c, 0.8));
+    EXPECT_GT(m.OversizedCells, 0u) << tolerance;
+    EXPECT_LT(r.Extraction.Mesh.Triangles.size(), before.at(tolerance) / (tolerance < 0.01 ? 30 : 4)) << tolerance;
+    EXPECT_EQ(m.Cells, r.Subdivision.ErrorBoundedCells);
+    // Every cell is a sphere cell here: the report's bound is the largest certificate.
+    EXPECT_DOUBLE_EQ(m.LargestCertificate, r.HausdorffBound);
+    // Not vacuous: the certificate is within a small factor of what is measured.
+    EXPECT_GT(m.WorstRatio, 0.1);
+    std::cout << "sphere 1/" << 1 / tolerance << ": " << r.Extraction.Mesh.Triangles.size() << " triangles, "
+              << m.Cells << " certified cells (" << m.OversizedCells << " larger than the tolerance), bound "
+              << r.HausdorffBound / r.Tolerance << " tolerance, worst measured/certified " << m.WorstRatio << "\n";
+  }
+}
+
+TEST(QuadricCellError, CertificatesBoundTheMeasuredDistanceOnARotatedEllipsoid)
+{
+  SceneBuilder b;
+  double rotation[9];
+  Rotation(tpc::Normalized(Vec3(1, 2, 3)), 0.7, rotation);
+  const Vec3 c{ 0.05, 0.02, -0.04 }, axes{ 0.9, 0.5, 0.3 };
+  // E(R x) with E the axis-aligned ellipsoid: composed with the rotation.
+  const double matrix[16] = { rotation[0], rotation[1], rotation[2], 0, rotation[3], rotation[4], rotation[5], 0,
+    rotation[6], rotation[7], rotation[8], 0, 0, 0, 0, 1 };
+  b.Finish(b.Add(tpc::Quadric::Ellipsoid(c, axes).Composed(matrix)));
+  const tpctest::ContourRun r = tpctest::Contour(b.Scene, { { -1, -1, -1 }, { 1, 1, 1 } }, 1.0 / 64);
+  EXPECT_TRUE(r.Guaranteed);
+  EXPECT_EQ(r.Report.Components, 1);
+  EXPECT_EQ(r.Report.Genus, 0);
+  const Measured m = CheckEveryCertificate(r, b.Scene, RotatedEllipsoid(c, axes, rotation));
+  EXPECT_GT(m.OversizedCells, 0u);
+  EXPECT_GT(m.WorstRatio, 0.1);
+  std::cout << "ellipsoid: " << r.Extraction.Mesh.Triangles.size() << " triangles, " << m.Cells
+            << " certified cells (" << m.OversizedCells << " oversized), worst measured/certified " << m.WorstRatio
+            << "\n";
+}
+
+TEST(QuadricCellError, PredictionBoundsEveryPatchOnTheSurface)
+{
+  // Triangles and chords with their vertices on a sphere inside the cell: the
+  // subdivision's prediction is at least their certificate terms (that is
+  // what lets it accept a cell before its patch exists).
+  SceneBuilder b;
+  const Vec3 c{ 0.0, 0.0, 0.0 };
+  const double radius = 0.7;
+  b.Finish(b.Sphere(c, radius));
+  const ExactSurface sphere = Sphere(c, radius);
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int checkedCells = 0;
+  for (int k = 0; k < 200; ++k)
+  {
+    const double width = 0.05 + 0.25 * u(rng);
+    const Vec3 centre = sphere.Project(Vec3(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5));
+    const Box3 cell{ centre - Vec3(width, width, width) * 0.5, centre + Vec3(width, width, width) * 0.5 };
+    const auto bound = tpc::BoundQuadricCell(b.Scene.Expression, b.Scene.Expression, b.Scene.Primitives, cell, 0.05);
+    if (!bound)
+    {
+      continue;
+    }
+    ++checkedCells;
+    const double predicted = tpc::PredictedCellError(*bound);
+    std::vector<Vec3> onSurface;
+    for (int s = 0; s < 2000 && onSurface.size() < 30; ++s)
+    {
+      const Vec3 y = sphere.Project(cell.lo + Vec3(u(rng), u(rng), u(rng)) * width);
+      if (cell.Contains(y))
+      {
+        onSurface.push_back(y);
+      }
+    }
+    for (std::size_t i = 0; i + 2 < onSurface.size(); ++i)
+    {
+      EXPECT_LE(tpc::TriangleError(*bound, onSurface[i], onSurface[i + 1], onSurface[i + 2]), predicted * (1 + 1e-9));
+    }
+    // Chords: crossings of the sphere with two edges of one face.
+    for (int face = 0; face < 6; ++face)
+    {
+      const int axis = face / 2, ua = (axis + 1) % 3, va = (axis + 2) % 3;
+      std::vector<Vec3> onFace;
+      for (int e = 0; e < 4; ++e)
+      {
+        Vec3 p = cell.lo;
+        p[axis] = face % 2 ? cell.hi[axis] : cell.lo[axis];
+        const int along = e < 2 ? ua : va, across = e < 2 ? va : ua;
+        p[across] = e % 2 ? cell.hi[across] : cell.lo[across];
+        // The sphere on this edge: |p + t e_along - c| = radius.
+        const double rest = radius * radius - (tpc::Norm(p - c) * tpc::Norm(p - c) - (p[along] - c[along]) * (p[along] - c[along]));
+        for (const double sign : { -1.0, 1.0 })
+        {
+          Vec3 q = p;
+          q[along] = c[along] + sign * std::sqrt(std::max(0.0, rest));
+          if (rest > 0 && q[along] > cell.lo[along] && q[along] < cell.hi[along])
+          {
+            onFace.push_back(q);
+          }
+        }
+      }
+      if (onFace.size() == 2)
+      {
+        EXPECT_LE(tpc::ChordError(*bound, face, onFace[0], onFace[1]), predicted * (1 + 1e-9));
+      }
+    }
+  }
+  EXPECT_GT(checkedCells, 50);
+}
+
+TEST(QuadricCellError, NoCertificateWhereAnotherPrimitiveIsNearOrTheFieldTurns)
+{
+  SceneBuilder b;
+  b.Finish(SceneBuilder::Difference({ b.Sphere({ 0, 0, 0 }, 0.8), b.Sphere({ 0.8, 0, 0 }, 0.3) }));
+  const auto prunedTo = [&](const Box3& cell) {
+    return tpc::CsgExpression::Prune(b.Scene.Expression, cell, b.Scene.Primitives).Expression;
+  };
+  // On the big sphere, beside the small one's cut: the cell itself holds the
+  // big sphere only, but the small one is within the margin of it.
+  // ((0.7, 0.387, 0) is on the big sphere, 0.1 from the small one.)
+  const Box3 nearCut{ { 0.69, 0.377, -0.01 }, { 0.71, 0.397, 0.01 } };
+  const double margin = 0.12;
+  ASSERT_TRUE(prunedTo(nearCut));
+  ASSERT_EQ(prunedTo(nearCut)->NodeCount(), 1u);
+  EXPECT_FALSE(tpc::BoundQuadricCell(prunedTo(nearCut), b.Scene.Expression, b.Scene.Primitives, nearCut, margin));
+  // (Given the cell's own expression for the scene's, it would be certified.)
+  EXPECT_TRUE(tpc::BoundQuadricCell(prunedTo(nearCut), prunedTo(nearCut), b.Scene.Primitives, nearCut, margin));
+  // An expression with two leaves in the cell is not looked at.
+  const Box3 onCut{ { 0.45, 0.2, -0.05 }, { 0.55, 0.3, 0.05 } };
+  EXPECT_FALSE(tpc::BoundQuadricCell(b.Scene.Expression, b.Scene.Expression, b.Scene.Primitives, onCut, 0.02));
+  // Far from it, on the big sphere: one leaf, certified.
+  const Box3 far{ { -0.85, -0.05, -0.05 }, { -0.75, 0.05, 0.05 } };
+  const auto bound = tpc::BoundQuadricCell(prunedTo(far), b.Scene.Expression, b.Scene.Primitives, far, 0.02);
+  ASSERT_TRUE(bound.has_value());
+  EXPECT_GT(bound->Rise, 0.0);
+  // A cell holding the sphere's centre: the gradient turns, no direction has g > 0.
+  SceneBuilder one;
+  one.Finish(one.Sphere({ 0, 0, 0 }, 0.1));
+  const Box3 around{ { -0.2, -0.2, -0.2 }, { 0.2, 0.2, 0.2 } };
+  EXPECT_FALSE(tpc::BoundQuadricCell(one.Scene.Expression, one.Scene.Expression, one.Scene.Primitives, around, 0.01));
+  // A plane: no curvature, a zero prediction however large the cell.
+  SceneBuilder plane;
+  plane.Finish(plane.Add(tpc::Quadric::Plane({ 0, 0, 0.1 }, tpc::Normalized(Vec3(0.2, 0.3, 1)))));
+  const auto flat = tpc::BoundQuadricCell(
+    plane.Scene.Expression, plane.Scene.Expression, plane.Scene.Primitives, { { -1, -1, -1 }, { 1, 1, 1 } }, 0.01);
+  ASSERT_TRUE(flat.has_value());
+  EXPECT_EQ(tpc::PredictedCellError(*flat), 0.0);
+}
