@@ -10,6 +10,8 @@
 #include "vtkStringArray.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <cmath>
+
 namespace tpc
 {
 namespace vtkadapter
@@ -146,6 +148,23 @@ bool ConvertOctree(const AdaptiveOctree& tree, vtkHyperTreeGrid* grid, std::vect
   grid->GetFieldData()->AddArray(reasonNames);
   grid->GetFieldData()->AddArray(stateNames);
   return !visits.Aborted;
+}
+
+void AddCertifiedErrors(vtkHyperTreeGrid* grid, const std::vector<vtkIdType>& nodeToCell,
+  const std::vector<std::pair<std::uint32_t, double>>& cellErrors)
+{
+  vtkNew<vtkDoubleArray> certified;
+  certified->SetName("CertifiedError");
+  certified->SetNumberOfValues(grid->GetNumberOfCells());
+  certified->Fill(std::nan(""));
+  for (const auto& [node, error] : cellErrors)
+  {
+    if (nodeToCell[node] >= 0)
+    {
+      certified->SetValue(nodeToCell[node], error);
+    }
+  }
+  grid->GetCellData()->AddArray(certified);
 }
 
 } // namespace vtkadapter

@@ -466,6 +466,7 @@ int vtkTopologyPreservingContour::RequestData(
   {
     return aborted();
   }
+  tpc::vtkadapter::AddCertifiedErrors(gridOut, nodeToCell, result.Extraction.CellErrors);
   MoveSurface(result, nodeToCell, surfaceOut);
   surfaceOut->GetFieldData()->Initialize(); // (ConvertOctree initialized the grid)
   AddReport(gridOut, result.Report);

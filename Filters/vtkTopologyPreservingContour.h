@@ -43,8 +43,11 @@
  *   (0 inside, 1 outside, 2 surface cell that passed every test, 3 surface cell
  *   stopped by a limit or whose patch failed the embedding check, 4 refined,
  *   5 exact: a cell of one input mesh the tests could not resolve, whose patch
- *   is that mesh clipped to it) and "FailedTest" (for states 3 and 5, the
- *   test that failed, as a SplitReasons value). Field data "SplitReasonNames" and
+ *   is that mesh clipped to it), "FailedTest" (for states 3 and 5, the
+ *   test that failed, as a SplitReasons value) and "CertifiedError" (on
+ *   surface cells where one quadric is the surface: the certified two-sided
+ *   Hausdorff error of the cell's patch, which lets such cells be larger than
+ *   epsilon; NaN elsewhere). Field data "SplitReasonNames" and
  *   "CellStateNames" (string arrays indexed by value) name the values.
  * - Field data on both: "Components", "Genus", "EulerCharacteristic",
  *   "TopologyGuaranteed" (1 only if every cell on the surface passed every
@@ -55,7 +58,8 @@
  *   two vertices at the same coordinates and no degenerate triangle),
  *   "HausdorffBound" (the proven two-sided bound: the largest diagonal of a
  *   cell holding surface, except that cells where the surface is a plane
- *   section count the finest lattice cell's; NaN when not proven: a limit
+ *   section count the finest lattice cell's and cells with a CertifiedError
+ *   count that error (or their diagonal if smaller); NaN when not proven: a limit
  *   stopped a cell that may hold surface without a patch), "PlanarCells" (surface cells
  *   kept larger than epsilon because the surface in them is a plane section -
  *   a plane, a box face or coplanar mesh triangles - so their patch is exact),

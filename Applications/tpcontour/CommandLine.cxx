@@ -27,7 +27,7 @@ Options:
                          current directory)
   -g, --grid FILE        adaptive grid to write (.htg, a vtkHyperTreeGrid with
                          cell data Depth, SplitReason, SizeReason, CellState,
-                         FailedTest)
+                         FailedTest, CertifiedError)
       --operation OP     union, intersection or difference of the inputs;
                          required with more than one input (without --batch)
       --batch            one surface per input (a folder stands for the .stl,

@@ -2,13 +2,14 @@
 // every triangle lies in the leaf its "GridCell" names (so child ordering and
 // coordinates are right), that leaf is a surface cell that passed every test,
 // depths are consistent, split reasons are recorded on inner cells only,
-// each cell's SizeReason is its parent's SplitReason, and the field data name
-// every value.
+// each cell's SizeReason is its parent's SplitReason, the field data name
+// every value, and certified cells carry their error.
 #include "FilterTestHelpers.h"
 
 #include "vtkBitArray.h"
 #include "vtkCellData.h"
 #include "vtkCylinder.h"
+#include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkHyperTreeGridNonOrientedGeometryCursor.h"
 #include "vtkIdTypeArray.h"
@@ -21,6 +22,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <utility>
 #include <vector>
@@ -235,4 +237,108 @@ TEST(HyperTreeGrid, RoundTripsThroughTheXmlWriter)
   EXPECT_EQ(back->GetNumberOfCells(), r.Grid->GetNumberOfCells());
   EXPECT_NE(back->GetCellData()->GetArray("SplitReason"), nullptr);
   std::remove(path.c_str());
+}
+
+namespace
+{
+/// Leaves (global index, cell diagonal), descending with geometry cursors.
+void CollectLeafSizes(vtkHyperTreeGridNonOrientedGeometryCursor* cursor, std::vector<std::pair<vtkIdType, double>>& leaves)
+{
+  if (cursor->IsLeaf())
+  {
+    double b[6];
+    cursor->GetBounds(b);
+    leaves.emplace_back(cursor->GetGlobalNodeIndex(), std::hypot(b[1] - b[0], b[3] - b[2], b[5] - b[4]));
+    return;
+  }
+  for (unsigned char c = 0; c < cursor->GetNumberOfChildren(); ++c)
+  {
+    cursor->ToChild(c);
+    CollectLeafSizes(cursor, leaves);
+    cursor->ToParent();
+  }
+}
+} // namespace
+
+TEST(HyperTreeGrid, CertifiedErrorsOnQuadricCells)
+{
+  // A sphere minus a cylinder: away from the rim where they meet, each cell
+  // holds one quadric and carries its certified error (QuadricCellError.h),
+  // many of them larger than the tolerance; the report's bound is the largest.
+  vtkNew<vtkSphere> sphere;
+  sphere->SetCenter(0.1, 0.2, 0.3);
+  sphere->SetRadius(0.5);
+  vtkNew<vtkCylinder> hole;
+  hole->SetCenter(0.05, 0.0, 0.25);
+  hole->SetRadius(0.2);
+  vtkNew<vtkImplicitBoolean> diff;
+  diff->SetOperationTypeToDifference();
+  diff->AddFunction(sphere);
+  diff->AddFunction(hole);
+  const tpctest::FilterResult r = tpctest::Contour(diff, 0.02);
+  ASSERT_EQ(r.Guaranteed, 1);
+  EXPECT_EQ(r.Genus, 1);
+  vtkHyperTreeGrid* grid = r.Grid;
+  auto* certified = vtkDoubleArray::SafeDownCast(grid->GetCellData()->GetArray("CertifiedError"));
+  auto* state = vtkUnsignedCharArray::SafeDownCast(grid->GetCellData()->GetArray("CellState"));
+  ASSERT_TRUE(certified && state);
+  ASSERT_EQ(certified->GetNumberOfTuples(), grid->GetNumberOfCells());
+
+  std::vector<std::pair<vtkIdType, double>> leaves;
+  vtkHyperTreeGrid::vtkHyperTreeGridIterator it;
+  grid->InitializeTreeIterator(it);
+  vtkIdType index;
+  vtkNew<vtkHyperTreeGridNonOrientedGeometryCursor> cursor;
+  while (it.GetNextTree(index))
+  {
+    grid->InitializeNonOrientedGeometryCursor(cursor, index);
+    CollectLeafSizes(cursor, leaves);
+  }
+  int certifiedLeaves = 0, larger = 0;
+  double largest = 0.0;
+  for (const auto& [cell, diagonal] : leaves)
+  {
+    const double e = certified->GetValue(cell);
+    if (std::isnan(e))
+    {
+      continue;
+    }
+    EXPECT_EQ(state->GetValue(cell), 2); // only surface cells that passed
+    EXPECT_GE(e, 0.0);
+    EXPECT_LE(e, r.Tolerance * (1 + 1e-9));
+    ++certifiedLeaves;
+    larger += diagonal > r.Tolerance ? 1 : 0;
+    largest = std::max(largest, e);
+  }
+  for (vtkIdType i = 0; i < state->GetNumberOfTuples(); ++i)
+  {
+    EXPECT_TRUE(state->GetValue(i) == 2 || std::isnan(certified->GetValue(i)));
+  }
+  EXPECT_GT(certifiedLeaves, 50);
+  EXPECT_GT(larger, 10);
+  EXPECT_LE(largest, r.HausdorffBound);
+
+  // Every vertex of a certified cell's triangles is within its certificate of
+  // the sphere or the cylinder (both pass through the surface's pieces).
+  auto* gridCell = vtkIdTypeArray::SafeDownCast(r.Surface->GetCellData()->GetArray("GridCell"));
+  ASSERT_NE(gridCell, nullptr);
+  for (vtkIdType t = 0; t < r.Surface->GetNumberOfCells(); ++t)
+  {
+    const double e = certified->GetValue(gridCell->GetValue(t));
+    if (std::isnan(e))
+    {
+      continue;
+    }
+    vtkIdType npts;
+    const vtkIdType* ids;
+    r.Surface->GetCellPoints(t, npts, ids);
+    for (int k = 0; k < 3; ++k)
+    {
+      double p[3];
+      r.Surface->GetPoint(ids[k], p);
+      const double toSphere = std::fabs(std::hypot(p[0] - 0.1, p[1] - 0.2, p[2] - 0.3) - 0.5);
+      const double toCylinder = std::fabs(std::hypot(p[0] - 0.05, p[2] - 0.25) - 0.2);
+      EXPECT_LE(std::min(toSphere, toCylinder), e * (1 + 1e-9) + 1e-15);
+    }
+  }
 }

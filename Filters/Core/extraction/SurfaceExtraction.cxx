@@ -105,6 +105,7 @@ void GatherCertifiedBound(const AdaptiveOctree& tree, const std::vector<std::uin
     if (node.State == CellState::Surface && node.ErrorBounded && tree.RoleOf(node) == TreeRole::Own)
     {
       result.UncertifiedCells += errors[i] == HUGE_VAL ? 1 : 0;
+      result.CellErrors.emplace_back(cells[i], errors[i]);
       result.CertifiedBound = std::max(result.CertifiedBound, std::min(errors[i], tree.Grid.CellDiagonal(node.Level)));
     }
   }

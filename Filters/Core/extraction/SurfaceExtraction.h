@@ -24,6 +24,10 @@
 #include "Parallel.h"
 #include "TriangleMesh.h"
 
+#include <cstdint>
+#include <utility>
+#include <vector>
+
 namespace tpc
 {
 
@@ -45,6 +49,9 @@ struct ExtractionResult
   double CertifiedBound = 0.0;
   /// Error-bounded cells whose certificate failed (their diagonal counts).
   std::size_t UncertifiedCells = 0;
+  /// Each own error-bounded cell's certified error (node index, E_C; +inf
+  /// where the certificate failed), in node order.
+  std::vector<std::pair<std::uint32_t, double>> CellErrors;
   /// `progress` asked to stop: the mesh is incomplete.
   bool Aborted = false;
 };
