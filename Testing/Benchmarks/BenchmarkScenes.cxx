@@ -233,7 +233,11 @@ Scene MakeScene(const std::string& name, const std::string& meshDirectory)
     sphere->SetCenter(0.03, -0.05, 0.02);
     sphere->SetRadius(0.8);
     s.Implicit = sphere;
-    s.Bounds = { -1.0, 1.0, -1.0, 1.0, -1.0, 1.0 };
+    s.IsBall = true;
+    s.Ball = { 0.03, -0.05, 0.02, 0.8 };
+    // (Its bounding box: the domain the filter derives, so that the
+    // baselines' cells are the size the tolerance gives.)
+    s.Bounds = { 0.03 - 0.8, 0.03 + 0.8, -0.05 - 0.8, -0.05 + 0.8, 0.02 - 0.8, 0.02 + 0.8 };
     s.HasBounds = false;
     s.Components = 1;
     s.Genus = 0;

@@ -40,8 +40,12 @@ struct Scene
   /// filter folds its inputs by Difference.
   std::vector<vtkSmartPointer<vtkPolyData>> Meshes;
   /// A whole implicit solid (VTK functions), for scenes that are neither
-  /// meshes nor the plate; OpenVDB does not run on it.
+  /// meshes nor the plate; OpenVDB does not run on it, except on a ball.
   vtkSmartPointer<vtkImplicitFunction> Implicit;
+  /// The implicit solid is this ball (centre, radius): OpenVDB's own
+  /// level-set sphere stands for it.
+  bool IsBall = false;
+  std::array<double, 4> Ball{};
   /// Subtracted from the meshes / from the plate (spheres are ellipsoids
   /// with equal axes).
   std::vector<Ellipsoid> Holes;

@@ -4,7 +4,7 @@
 //
 //   tpc_benchmark --method tpc|vtk|vdb --scene NAME --epsilon E --threads N
 //                 --meshes DIR [--cell-size H] [--max-depth D] [--max-cells N] [--abort-at P]
-//                 [--fingerprint 1]
+//                 [--fingerprint 1] [--adaptivity A]
 //
 // tpc: vtkTopologyPreservingContour, epsilon relative to the diagonal of
 //      the scene's domain (Bounds set to it);
@@ -13,12 +13,15 @@
 //      sample spacing H;
 // vdb: OpenVDB, meshes (and tessellated ellipsoids, the plate's box, exact
 //      spheres) -> narrow-band level sets -> level-set CSG -> volumeToMesh,
-//      at voxel size H.
+//      at voxel size H (with --adaptivity A, volumeToMesh's adaptivity:
+//      0 uniform, up to 1 merging flat regions' polygons).
 // H is the edge of the filter's surface cells at epsilon (the driver passes
 // it), so all three resolve the surface at the same finest cell size.
 // With --fingerprint 1 the filter's run also prints a hash of everything it
 // output (run_benchmark.py --compare: the same output from two builds).
 #include "BenchmarkScenes.h"
+
+#include "MeshSolid.h"
 
 #include "TopologyReport.h"
 #include "TriangleMesh.h"
@@ -85,7 +88,48 @@ struct RunResult
   double LongestProgressGapAt = 0.0;
   double AbortLatency = -1.0;
   std::string Fingerprint; ///< tpc with --fingerprint only
+  double HausdorffBound = -1.0; ///< tpc only: the reported bound (absolute)
+  tpc::TriangleMesh Surface;    ///< the output (for the measured distance)
 };
+
+/// The measured two-sided Hausdorff distance between `surface` and the ball
+/// `ball` (centre, radius)'s sphere: from the surface, on a barycentric grid
+/// of every triangle (the exact distance to a sphere is | |x - c| - r |);
+/// to the surface, from 20 000 points spread on the sphere (exact distances
+/// to the nearest triangles). Sampled, so a lower estimate of the maximum.
+double MeasuredBallHausdorff(const tpc::TriangleMesh& surface, const std::array<double, 4>& ball, double reach)
+{
+  const tpc::Vec3 c(ball[0], ball[1], ball[2]);
+  const double radius = ball[3];
+  double worst = 0.0;
+  for (const auto& t : surface.Triangles)
+  {
+    constexpr int Steps = 6;
+    for (int i = 0; i <= Steps; ++i)
+    {
+      for (int j = 0; i + j <= Steps; ++j)
+      {
+        const double a = double(i) / Steps, b = double(j) / Steps;
+        const tpc::Vec3 x =
+          surface.Points[t[0]] * (1 - a - b) + surface.Points[t[1]] * a + surface.Points[t[2]] * b;
+        worst = std::max(worst, std::fabs(tpc::Norm(x - c) - radius));
+      }
+    }
+  }
+  const tpc::MeshSolid mesh(surface.Points.ToVector(), surface.Triangles.ToVector());
+  constexpr int Samples = 20000;
+  for (int k = 0; k < Samples; ++k)
+  {
+    // Fibonacci sphere: evenly spread, deterministic.
+    const double z = 1.0 - (2.0 * k + 1.0) / Samples, phi = k * 2.399963229728653;
+    const double s = std::sqrt(1.0 - z * z);
+    const tpc::Vec3 q = c + tpc::Vec3(s * std::cos(phi), s * std::sin(phi), z) * radius;
+    const tpc::Vec3 r(reach, reach, reach);
+    const tpc::TriangleList near = mesh.Overlapping({ q - r, q + r });
+    worst = std::max(worst, near.empty() ? reach : std::fabs(mesh.ApproximateSignedDistance(q, near)));
+  }
+  return worst;
+}
 
 /// FNV-1a over bytes: a fingerprint, not a cryptographic hash.
 struct Fnv1a
@@ -303,8 +347,10 @@ RunResult RunFilter(const tpcbench::Scene& scene, double epsilon, int maximumDep
   auto* grid = vtkHyperTreeGrid::SafeDownCast(filter->GetOutputDataObject(1));
   r.Triangles = surface->GetNumberOfPolys();
   r.GridCells = grid->GetNumberOfCells();
-  r.Topology = tpc::ComputeTopologyReport(Triangulated(surface));
+  r.Surface = Triangulated(surface);
+  r.Topology = tpc::ComputeTopologyReport(r.Surface);
   vtkFieldData* fd = surface->GetFieldData();
+  r.HausdorffBound = fd->GetArray("HausdorffBound")->GetTuple1(0);
   r.Guaranteed = fd->GetArray("TopologyGuaranteed")->GetTuple1(0) == 1.0;
   // The edge of the cells the size criterion stops at (diagonal <= the
   // absolute tolerance; plane sections may stay larger): root size / 2^level.
@@ -347,7 +393,8 @@ RunResult RunVtkRecipe(const tpcbench::Scene& scene, double h)
   r.Seconds = std::chrono::duration<double>(Clock::now() - start).count();
   r.Triangles = contour->GetOutput()->GetNumberOfPolys();
   r.GridCells = static_cast<long long>(dims[0]) * dims[1] * dims[2];
-  r.Topology = tpc::ComputeTopologyReport(Triangulated(contour->GetOutput()));
+  r.Surface = Triangulated(contour->GetOutput());
+  r.Topology = tpc::ComputeTopologyReport(r.Surface);
   return r;
 }
 
@@ -367,9 +414,9 @@ openvdb::FloatGrid::Ptr MeshLevelSet(vtkPolyData* surface, const openvdb::math::
   return openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(xform, points, triangles, 3.0f);
 }
 
-RunResult RunOpenVdb(const tpcbench::Scene& scene, double h)
+RunResult RunOpenVdb(const tpcbench::Scene& scene, double h, double adaptivity)
 {
-  if (scene.Implicit)
+  if (scene.Implicit && !scene.IsBall)
   {
     throw std::runtime_error("the OpenVDB baseline takes meshes, spheres and the plate, not " + scene.Name);
   }
@@ -377,6 +424,13 @@ RunResult RunOpenVdb(const tpcbench::Scene& scene, double h)
   const auto start = Clock::now();
   const auto xform = openvdb::math::Transform::createLinearTransform(h);
   openvdb::FloatGrid::Ptr solid;
+  if (scene.IsBall)
+  {
+    const auto& b = scene.Ball;
+    solid = openvdb::tools::createLevelSetSphere<openvdb::FloatGrid>(static_cast<float>(b[3]),
+      openvdb::Vec3f(static_cast<float>(b[0]), static_cast<float>(b[1]), static_cast<float>(b[2])),
+      static_cast<float>(h), 3.0f);
+  }
   if (scene.HasPlate)
   {
     vtkNew<vtkCubeSource> plate;
@@ -415,7 +469,7 @@ RunResult RunOpenVdb(const tpcbench::Scene& scene, double h)
   std::vector<openvdb::Vec3s> points;
   std::vector<openvdb::Vec3I> triangles;
   std::vector<openvdb::Vec4I> quads;
-  openvdb::tools::volumeToMesh(*solid, points, triangles, quads, 0.0);
+  openvdb::tools::volumeToMesh(*solid, points, triangles, quads, 0.0, adaptivity);
   RunResult r;
   r.Seconds = std::chrono::duration<double>(Clock::now() - start).count();
   r.Triangles = static_cast<long long>(triangles.size() + 2 * quads.size());
@@ -435,6 +489,7 @@ RunResult RunOpenVdb(const tpcbench::Scene& scene, double h)
     mesh.Triangles.push_back({ q[0], q[2], q[3] });
   }
   r.Topology = tpc::ComputeTopologyReport(mesh);
+  r.Surface = std::move(mesh);
   return r;
 }
 } // namespace
@@ -451,7 +506,7 @@ int main(int argc, char* argv[])
     if (!args.count(required))
     {
       std::cerr << "usage: tpc_benchmark --method tpc|vtk|vdb --scene NAME --epsilon E --threads N "
-                   "--meshes DIR [--cell-size H] [--max-depth D] [--max-cells N] [--abort-at P] [--fingerprint 1]\n";
+                   "--meshes DIR [--cell-size H] [--max-depth D] [--max-cells N] [--abort-at P] [--fingerprint 1] [--adaptivity A]\n";
       return 1;
     }
   }
@@ -480,7 +535,7 @@ int main(int argc, char* argv[])
     }
     else if (method == "vdb")
     {
-      r = RunOpenVdb(scene, h);
+      r = RunOpenVdb(scene, h, args.count("--adaptivity") ? std::stod(args["--adaptivity"]) : 0.0);
     }
     else
     {
@@ -505,6 +560,17 @@ int main(int argc, char* argv[])
          << ", \"longest_progress_gap_s\": " << r.LongestProgressGap
          << ", \"longest_progress_gap_at\": " << r.LongestProgressGapAt
          << ", \"abort_latency_s\": " << r.AbortLatency;
+    // Errors relative to epsilon (absolute: epsilon times the domain's diagonal).
+    const double absolute = epsilon * Diagonal(scene.Bounds);
+    if (r.HausdorffBound >= 0.0)
+    {
+      json << ", \"hausdorff_bound_over_eps\": " << r.HausdorffBound / absolute;
+    }
+    if (scene.IsBall)
+    {
+      json << ", \"measured_hausdorff_over_eps\": "
+           << MeasuredBallHausdorff(r.Surface, scene.Ball, 4 * absolute) / absolute;
+    }
     if (!r.Fingerprint.empty())
     {
       json << ", \"fingerprint\": \"" << r.Fingerprint << "\"";
