@@ -104,9 +104,11 @@ void GatherCertifiedBound(const AdaptiveOctree& tree, const std::vector<std::uin
     const OctreeNode& node = tree.Nodes[cells[i]];
     if (node.State == CellState::Surface && node.ErrorBounded && tree.RoleOf(node) == TreeRole::Own)
     {
-      result.UncertifiedCells += errors[i] == HUGE_VAL ? 1 : 0;
+      const double diagonal = tree.Grid.CellDiagonal(node.Level);
+      // (A cell no larger than the tolerance keeps its diagonal's bound.)
+      result.UncertifiedCells += errors[i] == HUGE_VAL && diagonal > tree.HausdorffTolerance ? 1 : 0;
       result.CellErrors.emplace_back(cells[i], errors[i]);
-      result.CertifiedBound = std::max(result.CertifiedBound, std::min(errors[i], tree.Grid.CellDiagonal(node.Level)));
+      result.CertifiedBound = std::max(result.CertifiedBound, std::min(errors[i], diagonal));
     }
   }
 }

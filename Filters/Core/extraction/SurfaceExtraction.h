@@ -47,7 +47,8 @@ struct ExtractionResult
   /// (CertifiedError.h), or its diagonal where that is smaller or the
   /// certificate failed.
   double CertifiedBound = 0.0;
-  /// Error-bounded cells whose certificate failed (their diagonal counts).
+  /// Error-bounded cells larger than the tolerance whose certificate failed
+  /// (their diagonal counts, which exceeds the tolerance).
   std::size_t UncertifiedCells = 0;
   /// Each own error-bounded cell's certified error (node index, E_C; +inf
   /// where the certificate failed), in node order.
