@@ -137,11 +137,12 @@ std::optional<QuadricCellError> BoundQuadricCell(const CsgExpressionPtr& cellExp
   QuadricCellError bound;
   bound.Cell = cell;
   bound.Margin = margin;
+  // (Rounded outward: C+ holds the cell grown by the margin exactly.)
   Box3 grown = cell;
   for (int a = 0; a < 3; ++a)
   {
-    grown.lo[a] -= margin;
-    grown.hi[a] += margin;
+    grown.lo[a] = std::nextafter(cell.lo[a] - margin, -HUGE_VAL);
+    grown.hi[a] = std::nextafter(cell.hi[a] + margin, HUGE_VAL);
   }
   const CsgExpression::Pruned there = CsgExpression::Prune(sceneExpression, grown, primitives);
   if (there.Sign != RegionSign::Mixed)
