@@ -29,6 +29,26 @@
 
 namespace
 {
+const double SphereCenter[3] = { 0.1, 0.2, 0.3 }, SphereRadius = 0.5;
+const double HoleCenter[3] = { 0.05, 0.0, 0.25 }, HoleRadius = 0.2;
+
+/// A sphere drilled by a cylinder along y, through the sphere well inside
+/// its rim (genus 1).
+vtkSmartPointer<vtkImplicitBoolean> DrilledSphere()
+{
+  vtkNew<vtkSphere> sphere;
+  sphere->SetCenter(SphereCenter);
+  sphere->SetRadius(SphereRadius);
+  vtkNew<vtkCylinder> hole;
+  hole->SetCenter(HoleCenter);
+  hole->SetRadius(HoleRadius);
+  auto diff = vtkSmartPointer<vtkImplicitBoolean>::New();
+  diff->SetOperationTypeToDifference();
+  diff->AddFunction(sphere);
+  diff->AddFunction(hole);
+  return diff;
+}
+
 /// p in the closed box, up to the rounding of a triangle's centroid.
 bool Contains(const double b[6], const double p[3])
 {
@@ -105,17 +125,7 @@ int SizeReasonMismatches(vtkHyperTreeGridNonOrientedGeometryCursor* cursor,
 
 TEST(HyperTreeGrid, TrianglesLieInTheSurfaceLeavesTheyName)
 {
-  vtkNew<vtkSphere> sphere;
-  sphere->SetCenter(0.1, 0.2, 0.3);
-  sphere->SetRadius(0.5);
-  vtkNew<vtkCylinder> hole; // along y, through the sphere well inside its rim
-  hole->SetCenter(0.05, 0.0, 0.25);
-  hole->SetRadius(0.2);
-  vtkNew<vtkImplicitBoolean> diff;
-  diff->SetOperationTypeToDifference();
-  diff->AddFunction(sphere);
-  diff->AddFunction(hole);
-  const tpctest::FilterResult r = tpctest::Contour(diff, 0.04);
+  const tpctest::FilterResult r = tpctest::Contour(DrilledSphere(), 0.04);
   ASSERT_EQ(r.Guaranteed, 1);
   EXPECT_EQ(r.Genus, 1);
 
@@ -262,20 +272,11 @@ void CollectLeafSizes(vtkHyperTreeGridNonOrientedGeometryCursor* cursor, std::ve
 
 TEST(HyperTreeGrid, CertifiedErrorsOnQuadricCells)
 {
-  // A sphere minus a cylinder: away from the rim where they meet, each cell
-  // holds one quadric and carries its certified error (QuadricCellError.h),
-  // many of them larger than the tolerance; the report's bound is the largest.
-  vtkNew<vtkSphere> sphere;
-  sphere->SetCenter(0.1, 0.2, 0.3);
-  sphere->SetRadius(0.5);
-  vtkNew<vtkCylinder> hole;
-  hole->SetCenter(0.05, 0.0, 0.25);
-  hole->SetRadius(0.2);
-  vtkNew<vtkImplicitBoolean> diff;
-  diff->SetOperationTypeToDifference();
-  diff->AddFunction(sphere);
-  diff->AddFunction(hole);
-  const tpctest::FilterResult r = tpctest::Contour(diff, 0.02);
+  // The drilled sphere: away from the rim where sphere and cylinder meet,
+  // each cell holds one quadric and carries its certified error
+  // (QuadricCellError.h), many of them larger than the tolerance; the
+  // report's bound is the largest.
+  const tpctest::FilterResult r = tpctest::Contour(DrilledSphere(), 0.02);
   ASSERT_EQ(r.Guaranteed, 1);
   EXPECT_EQ(r.Genus, 1);
   vtkHyperTreeGrid* grid = r.Grid;
@@ -336,8 +337,10 @@ TEST(HyperTreeGrid, CertifiedErrorsOnQuadricCells)
     {
       double p[3];
       r.Surface->GetPoint(ids[k], p);
-      const double toSphere = std::fabs(std::hypot(p[0] - 0.1, p[1] - 0.2, p[2] - 0.3) - 0.5);
-      const double toCylinder = std::fabs(std::hypot(p[0] - 0.05, p[2] - 0.25) - 0.2);
+      const double toSphere = std::fabs(
+        std::hypot(p[0] - SphereCenter[0], p[1] - SphereCenter[1], p[2] - SphereCenter[2]) - SphereRadius);
+      const double toCylinder =
+        std::fabs(std::hypot(p[0] - HoleCenter[0], p[2] - HoleCenter[2]) - HoleRadius); // (axis y)
       EXPECT_LE(std::min(toSphere, toCylinder), e * (1 + 1e-9) + 1e-15);
     }
   }

@@ -93,15 +93,15 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   // Cells that must shrink anyway skip the costlier tests; a plane section
   // (PlanarCell.h) or a cell whose certified error is within the tolerance
   // (QuadricCellError.h) may stay larger.
-  const bool oversized = grid.CellDiagonal(node.Level) > tolerance * (1.0 + 1e-9);
-  const bool planar = oversized && !uniform && IsPlanarCell(*expression, prims, box);
+  v.Oversized = grid.CellDiagonal(node.Level) > tolerance * (1.0 + 1e-9);
+  const bool planar = v.Oversized && !uniform && IsPlanarCell(*expression, prims, box);
   if (!uniform && !planar)
   {
     const std::optional<QuadricCellError> quadric = BoundQuadricCell(expression, tree.SceneExpression, prims, box, tolerance);
     v.PredictedError = quadric ? PredictedCellError(*quadric) : HUGE_VAL;
     v.ErrorBounded = v.PredictedError <= tolerance;
   }
-  if (oversized && !planar && !v.ErrorBounded)
+  if (v.Oversized && !planar && !v.ErrorBounded)
   {
     v.Reason = uniform ? SplitReason::ComplexVoxel : SplitReason::HausdorffSize;
     return v;

@@ -35,6 +35,8 @@ struct McCompatibility
   /// its final patch (CellPatches.h).
   bool ErrorBounded = false;
   double PredictedError = HUGE_VAL;
+  /// Larger than the tolerance (the Hausdorff size test's own comparison).
+  bool Oversized = false;
   /// Faces this cell refined (only kept if it passes).
   std::vector<std::pair<FaceKey, std::vector<FaceTile>>> Refinements;
   /// Signs evaluated during the tests, for the global table.

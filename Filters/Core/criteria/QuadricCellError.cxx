@@ -31,12 +31,9 @@ Quadric SignedQuadric(const Quadric& q, int sigma)
 /// Encloses grad f(p) . d (interval arithmetic on exact inputs).
 Interval EncloseDirectionalDerivative(const Quadric& q, const Vec3& p, const Vec3& d)
 {
-  const auto& c = q.Coefficients();
-  const Interval x(p[0]), y(p[1]), z(p[2]), two(2.0);
-  const Interval g0 = two * Interval(c[0]) * x + Interval(c[3]) * y + Interval(c[5]) * z + Interval(c[6]);
-  const Interval g1 = Interval(c[3]) * x + two * Interval(c[1]) * y + Interval(c[4]) * z + Interval(c[7]);
-  const Interval g2 = Interval(c[5]) * x + Interval(c[4]) * y + two * Interval(c[2]) * z + Interval(c[8]);
-  return g0 * Interval(d[0]) + g1 * Interval(d[1]) + g2 * Interval(d[2]);
+  const Box3 point{ p, p };
+  return q.EncloseDerivative(point, 0) * Interval(d[0]) + q.EncloseDerivative(point, 1) * Interval(d[1]) +
+    q.EncloseDerivative(point, 2) * Interval(d[2]);
 }
 
 /// A proven lower bound of grad f . d over the box (affine: its minimum is at
@@ -81,15 +78,10 @@ double SquaredNorm(const Vec3& v)
   return Dot(v, v);
 }
 
-/// Upper bound of |f(p)| (interval evaluation).
+/// Upper bound of |f(p)| (the quadric's enclosure over the point).
 double FieldMagnitude(const Quadric& q, const Vec3& p)
 {
-  const auto& c = q.Coefficients();
-  const Interval x(p[0]), y(p[1]), z(p[2]);
-  const auto I = [](double v) { return Interval(v); };
-  const Interval value = (I(c[0]) * x + I(c[3]) * y + I(c[5]) * z + I(c[6])) * x +
-    (I(c[1]) * y + I(c[4]) * z + I(c[7])) * y + (I(c[2]) * z + I(c[8])) * z + I(c[9]);
-  return value.Magnitude();
+  return q.Enclose(Box3{ p, p }).Magnitude();
 }
 
 /// Squared radius of the smallest ball holding the triangle: half its longest
@@ -220,19 +212,6 @@ double ChordError(const QuadricCellError& bound, int face, const Vec3& a, const 
   const double ends = std::max(FieldMagnitude(bound.Field, a), FieldMagnitude(bound.Field, b));
   const double sag = bound.Curvature * 0.25 * SquaredNorm(b - a) * RoundingAllowance;
   return (ends + sag) * (1.0 / bound.Rise + 1.0 / rise) * RoundingAllowance;
-}
-
-int CommonCellFace(const Box3& cell, const Vec3& a, const Vec3& b)
-{
-  for (int face = 0; face < 6; ++face)
-  {
-    const double plane = (face % 2 ? cell.hi : cell.lo)[face / 2];
-    if (a[face / 2] == plane && b[face / 2] == plane)
-    {
-      return face;
-    }
-  }
-  return -1;
 }
 
 std::optional<Vec3> SurfacePointAlongDirection(const QuadricCellError& bound, const Vec3& p, const Box3& region)

@@ -107,10 +107,6 @@ double TriangleError(const QuadricCellError& bound, const Vec3& a, const Vec3& b
 /// g_phi is not positive.
 double ChordError(const QuadricCellError& bound, int face, const Vec3& a, const Vec3& b);
 
-/// The face of the cell holding both points (exact comparison with its
-/// plane), -1 if none.
-int CommonCellFace(const Box3& cell, const Vec3& a, const Vec3& b);
-
 /// The point of S on the line through `p` along n inside `region` (part of
 /// the cell), found by bisection on the exact sign; nothing when the line
 /// does not cross S there.

@@ -53,7 +53,7 @@ bool DecideCell(AdaptiveOctree& tree, std::uint32_t n, const CellTests& tests, c
     result.SurfaceCells += mine;
     result.PlanarSurfaceCells += v.Planar ? mine : 0;
     result.ErrorBoundedCells += v.ErrorBounded ? mine : 0;
-    result.OversizedErrorBoundedCells += v.ErrorBounded && grid.CellDiagonal(level) > parameters.HausdorffTolerance ? mine : 0;
+    result.OversizedErrorBoundedCells += v.ErrorBounded && v.Oversized ? mine : 0;
     if (!v.ErrorBounded) // (certified on its patch: ExtractionResult::CertifiedBound)
     {
       result.HausdorffBound =

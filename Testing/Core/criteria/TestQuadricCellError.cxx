@@ -1,9 +1,11 @@
 // The certified per-cell error (QuadricCellError.h, CertifiedError.h): in
-// every error-bounded cell of whole runs the certificate is at least the
+// every error-bounded cell of whole runs the certificate (finite: at most
+// the margin) is at least the
 // two-sided distance measured by brute force between the exact surface in the
 // cell and the output; the subdivision's prediction bounds the certificate of
 // any patch on the surface; cells grow past the tolerance where the bound
 // allows, and the report's bound holds.
+#include "CertifiedError.h"
 #include "CoreContour.h"
 #include "QuadricCellError.h"
 #include "SceneBuilder.h"
@@ -102,31 +104,19 @@ void Rotation(const Vec3& axis, double angle, double m[9])
   std::copy(r, r + 9, m);
 }
 
-/// The certificate of node n's patch, recomputed from the output the way
-/// CertifiedError.cxx does it (triangle terms, and chord terms for edges in
-/// one face of the cell).
-double RecomputedCertificate(const tpc::QuadricCellError& bound, const tpc::TriangleMesh& mesh, std::uint32_t n)
+/// The certificate of node n's patch (CertifiedError.h), on its triangles
+/// as the output holds them.
+double Certificate(const tpc::QuadricCellError& bound, const tpc::TriangleMesh& mesh, std::uint32_t n)
 {
-  double error = 0.0;
+  tpc::CellPatches patch;
   for (std::size_t t = 0; t < mesh.Triangles.size(); ++t)
   {
-    if (mesh.TriangleCell[t] != n)
+    if (mesh.TriangleCell[t] == n)
     {
-      continue;
-    }
-    const tpc::Triangle& tri = mesh.Triangles[t];
-    const Vec3 p[3] = { mesh.Points[tri[0]], mesh.Points[tri[1]], mesh.Points[tri[2]] };
-    error = std::max(error, tpc::TriangleError(bound, p[0], p[1], p[2]));
-    for (int k = 0; k < 3; ++k)
-    {
-      const int face = tpc::CommonCellFace(bound.Cell, p[k], p[(k + 1) % 3]);
-      if (face >= 0)
-      {
-        error = std::max(error, tpc::ChordError(bound, face, p[k], p[(k + 1) % 3]));
-      }
+      patch.Triangles.push_back(mesh.Triangles[t]);
     }
   }
-  return error;
+  return tpc::CertifiedPatchError(bound, patch, mesh);
 }
 
 struct Measured
@@ -164,7 +154,7 @@ Measured CheckEveryCertificate(const tpctest::ContourRun& r, const tpctest::Scen
     {
       continue;
     }
-    const double certificate = RecomputedCertificate(*bound, mesh, n);
+    const double certificate = Certificate(*bound, mesh, n);
     EXPECT_LE(certificate, r.HausdorffBound * (1 + 1e-12));
     m.LargestCertificate = std::max(m.LargestCertificate, certificate);
     ++m.Cells;
