@@ -28,7 +28,7 @@ bool ConvertOctree(const AdaptiveOctree& octree, vtkHyperTreeGrid* grid, std::ve
   const ProgressCallback& progress = nullptr);
 
 /// Adds the cell array "CertifiedError": each error-bounded cell's certified
-/// two-sided error (QuadricCellError.h; +inf where its certificate failed),
+/// two-sided error (QuadricCellError.h, MeshCellError.h; +inf where its certificate failed),
 /// NaN on every other cell.
 void AddCertifiedErrors(vtkHyperTreeGrid* grid, const std::vector<vtkIdType>& nodeToCell,
   const std::vector<std::pair<std::uint32_t, double>>& cellErrors);

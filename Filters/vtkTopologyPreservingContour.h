@@ -45,9 +45,9 @@
  *   5 exact: a cell of one input mesh the tests could not resolve, whose patch
  *   is that mesh clipped to it), "FailedTest" (for states 3 and 5, the
  *   test that failed, as a SplitReasons value) and "CertifiedError" (on
- *   surface cells where one quadric is the surface: the certified two-sided
- *   Hausdorff error of the cell's patch, which lets such cells be larger than
- *   epsilon; NaN elsewhere). Field data "SplitReasonNames" and
+ *   surface cells where one quadric or one input mesh is the surface: the
+ *   certified two-sided Hausdorff error of the cell's patch, which lets such
+ *   cells be larger than epsilon; NaN elsewhere). Field data "SplitReasonNames" and
  *   "CellStateNames" (string arrays indexed by value) name the values.
  * - Field data on both: "Components", "Genus", "EulerCharacteristic",
  *   "TopologyGuaranteed" (1 only if every cell on the surface passed every

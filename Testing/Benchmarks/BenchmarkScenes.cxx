@@ -252,16 +252,16 @@ Scene MakeScene(const std::string& name, const std::string& meshDirectory)
     s.Genus = 5;
     return s;
   }
-  if (name == "couplingdown" || name == "joint-minus-knot")
+  if (name == "couplingdown" || name == "joint-minus-knot" || name == "fandisk")
   {
     const bool boolean = name == "joint-minus-knot";
-    s.Meshes.push_back(ReadOff(meshDirectory + (boolean ? "/joint.off" : "/couplingdown.off")));
+    s.Meshes.push_back(ReadOff(meshDirectory + "/" + (boolean ? "joint" : name) + ".off"));
     if (boolean)
     {
       s.Meshes.push_back(Translated(ReadOff(meshDirectory + "/knot1.off"), 0.0158, 0.0442, 0.0271));
     }
     s.Components = 1;
-    s.Genus = 9;
+    s.Genus = name == "fandisk" ? 0 : 9;
     double b[6];
     s.Meshes[0]->GetBounds(b);
     s.Bounds = Padded(b, 0.01);

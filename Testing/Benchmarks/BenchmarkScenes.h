@@ -11,6 +11,7 @@
 // - "demo-csg": (cube ∩ sphere) − (three cylinders), the filter's domain
 //   derived from the solid (no Bounds): 1 component, genus 5;
 // - "couplingdown": CGAL's couplingdown.off, a CAD part of genus 9;
+// - "fandisk": CGAL's fandisk.off, a CAD part with sharp creases, genus 0;
 // - "joint-minus-knot": CGAL's joint.off minus knot1.off moved by
 //   (0.0158, 0.0442, 0.0271): 1 component, genus 9 (Data/CsgReference.csv).
 #pragma once

@@ -11,6 +11,8 @@ grows from epsilon to epsilon/2.
     python3 Testing/Benchmarks/run_benchmark.py --quick    # 1/64 and 1/128 only
     python3 Testing/Benchmarks/run_benchmark.py --limits   # memory budget and abort latency
     python3 Testing/Benchmarks/run_benchmark.py --ranks    # 1 vs 2 MPI ranks
+    python3 Testing/Benchmarks/run_benchmark.py --errors [--before OLD/tpc_benchmark]
+        # issue 17: triangles, certified and measured error vs OpenVDB
     python3 Testing/Benchmarks/run_benchmark.py --compare OLD/tpc_benchmark
         # this build's filter vs another build's, interleaved: seconds and
         # whether the outputs are identical (a refactoring keeps them)
@@ -52,11 +54,15 @@ ABORT_POINTS = [("inputs", 0.01), ("subdivision", 0.3), ("subdivision", 0.8), ("
 
 
 def run(program, meshes, method, scene, epsilon, threads, cell_size, timeout, max_cells=None, abort_at=None,
-        fingerprint=False):
+        fingerprint=False, adaptivity=None, measure=False):
     cmd = [program, "--method", method, "--scene", scene, "--epsilon", repr(epsilon),
            "--threads", str(threads), "--meshes", meshes]
     if fingerprint:
         cmd += ["--fingerprint", "1"]
+    if adaptivity:
+        cmd += ["--adaptivity", repr(adaptivity)]
+    if measure:
+        cmd += ["--measure", "1"]
     if cell_size:
         cmd += ["--cell-size", repr(cell_size)]
     if max_cells:
@@ -190,6 +196,51 @@ def ranks(a):
     return 1 if failed else 0
 
 
+# Issue 17's table: the certified per-cell error against the cells sized by
+# epsilon and OpenVDB, uniform and adaptive.
+ERROR_SCENES = ["sphere", "armadillo", "turbine", "couplingdown", "fandisk", "plate-ellipsoids", "demo-csg"]
+ERROR_METHODS = [("filter now", "tpc", None), ("filter before", "before", None), ("OpenVDB uniform", "vdb", None),
+                 ("OpenVDB adaptivity 0.05", "vdb", 0.05)]
+
+
+def errors(a):
+    """Triangles, seconds, the certified bound and the measured two-sided
+    Hausdorff distance (sampled on the sphere, CGAL's certified estimate on
+    the scenes of one mesh) relative to epsilon, for this build's filter, an
+    earlier build's (--before PROGRAM), and OpenVDB uniform and with
+    adaptivity 0.05 at the filter's finest cell size; ratios to OpenVDB
+    uniform."""
+    print("Machine:", machine())
+    scenes = a.scenes.split(",") if a.scenes != ",".join(SCENES) else ERROR_SCENES
+    denominators = [int(d) for d in a.epsilons.split(",")]
+    rows = [["scene", "epsilon", "method", "triangles", "seconds", "bound/eps", "measured/eps", "uniform/this",
+             "topology"]]
+    for scene in scenes:
+        for d in denominators:
+            results = {}
+            for label, method, adaptivity in ERROR_METHODS:
+                if method == "before" and not a.before:
+                    continue
+                program = a.before if method == "before" else a.program
+                cell = results["filter now"].get("cell_size") if method == "vdb" else None
+                results[label] = run(program, a.meshes, "tpc" if method == "before" else method, scene, 1.0 / d, 2,
+                                     cell, 4 * 3600 if method != "vdb" else a.time_limit, adaptivity=adaptivity,
+                                     measure=True)
+                print(f"  ran {scene:16} 1/{d:<4} {label:24} {results[label].get('seconds', float('nan')):8.2f} s",
+                      file=sys.stderr, flush=True)
+            uniform = results["OpenVDB uniform"].get("triangles")
+            for label, r in results.items():
+                bound, measured = r.get("hausdorff_bound_over_eps"), r.get("measured_hausdorff_over_eps")
+                rows.append([scene, f"1/{d}", label, r.get("triangles", "-"),
+                             f"{r['seconds']:.2f}" if "seconds" in r else "-",
+                             f"{bound:.2f}" if bound is not None else "-",
+                             f"{measured:.2f}" if measured is not None else "-",
+                             ratio(uniform, r.get("triangles")),
+                             topology(r) + (", guaranteed" if r.get("guaranteed") else "")])
+    table(rows)
+    return 0
+
+
 def compare(a):
     """This build's filter against another build's (--compare PROGRAM), both
     with 2 threads, runs interleaved (new, old, new, old, ...) so that the
@@ -250,7 +301,13 @@ def main():
                         help="only the filter, against another build's tpc_benchmark: interleaved seconds and "
                              "identical outputs, on the timed scenes and " + ", ".join(CHECK_SCENES))
     parser.add_argument("--repeat", type=int, default=3, help="with --compare: runs of each build per case")
+    parser.add_argument("--errors", action="store_true",
+                        help="only issue 17's table: triangles, seconds, certified and measured error against "
+                             "OpenVDB uniform and adaptive, on " + ", ".join(ERROR_SCENES))
+    parser.add_argument("--before", metavar="PROGRAM", help="with --errors: an earlier build's tpc_benchmark")
     a = parser.parse_args()
+    if a.errors:
+        return errors(a)
     if a.compare:
         return compare(a)
     if a.limits:

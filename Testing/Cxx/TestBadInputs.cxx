@@ -247,17 +247,20 @@ TEST(BadInputs, HugeAndTinyCoordinatesGiveTheSameAnswer)
     }
   }
   // Decimal scales round every coordinate differently, so lattice lines
-  // fall a hair differently past the sphere's creases: the same topology,
-  // guarantee and relative bound, a surface of the same size.
+  // fall a hair differently past the sphere's creases, and a few cells whose
+  // certified error is near the tolerance (MeshCellError.h) decide the other
+  // way: the same topology and guarantee, a bound within the tolerance and
+  // near the unit one, a surface of about the same size.
   for (const double scale : { 1e-9, 1e9 })
   {
     SCOPED_TRACE(scale);
     const Outcome o = Contour(ScaledSphere(scale));
     ExpectGuaranteedSphere(o);
     EXPECT_NEAR(o.Result.Tolerance / scale, unit.Result.Tolerance, 1e-12 * unit.Result.Tolerance);
-    EXPECT_NEAR(o.Result.HausdorffBound / scale, unit.Result.HausdorffBound, 1e-12 * unit.Result.HausdorffBound);
+    EXPECT_LE(o.Result.HausdorffBound, o.Result.Tolerance);
+    EXPECT_NEAR(o.Result.HausdorffBound / scale, unit.Result.HausdorffBound, 0.25 * unit.Result.HausdorffBound);
     EXPECT_NEAR(static_cast<double>(o.Result.Surface->GetNumberOfPolys()), static_cast<double>(u->GetNumberOfPolys()),
-      0.01 * static_cast<double>(u->GetNumberOfPolys()));
+      0.05 * static_cast<double>(u->GetNumberOfPolys()));
   }
 }
 
@@ -271,8 +274,10 @@ TEST(BadInputs, ToleranceLargerThanTheDomainGivesACoarseClosedSurface)
   EXPECT_LE(coarse.Result.Surface->GetNumberOfPolys(), 16);
   EXPECT_GE(coarse.Result.Surface->GetNumberOfPolys(), 4);
   EXPECT_LE(coarse.Result.HausdorffBound, coarse.Result.Tolerance);
+  // (The input is a coarse polyhedron, 16 x 12: at 0.05 its cells are as
+  // large as their certified error allows, MeshCellError.h.)
   const Outcome fine = Contour(Sphere(), 0.05);
-  EXPECT_GT(fine.Result.Surface->GetNumberOfPolys(), 100 * coarse.Result.Surface->GetNumberOfPolys());
+  EXPECT_GT(fine.Result.Surface->GetNumberOfPolys(), 30 * coarse.Result.Surface->GetNumberOfPolys());
 }
 
 TEST(BadInputs, AbsurdMaximumDepthIsClamped)

@@ -1,5 +1,6 @@
 #include "EdgeCrossings.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -259,6 +260,21 @@ Vec3 FindEdgeCrossing(const CsgExpression& expression, const PrimitiveSet& primi
     (insideA ? (fa < 0.0 && fb >= 0.0) : (fa >= 0.0 && fb < 0.0));
   return usable ? IllinoisRoot(expression, primitives, a, b, fa, fb)
                 : BisectOnExactSigns(expression, primitives, a, b, insideA);
+}
+
+Vec3 PlaceSubEdgeCrossing(const Crossing& c, const RootGrid& grid, const CsgExpression& expression,
+  const PrimitiveSet& primitives)
+{
+  const int axis = AxisOf(c.Key);
+  LatticeIndex lo[3], hi[3];
+  SplitPointKey(PointOf(c.Key), lo);
+  std::copy(lo, lo + 3, hi);
+  hi[axis] = c.Upper;
+  const Vec3 a = grid.Point(lo), b = grid.Point(hi);
+  const Vec3 found = FindEdgeCrossing(expression, primitives, a, b, c.LowerInside);
+  Vec3 p = a;
+  p[axis] = std::clamp(found[axis], std::nextafter(a[axis], b[axis]), std::nextafter(b[axis], a[axis]));
+  return p;
 }
 
 } // namespace tpc

@@ -12,6 +12,7 @@
 // reported as not proven (hence complex).
 #pragma once
 
+#include "BoundaryLoops.h"
 #include "CsgExpression.h"
 
 namespace tpc
@@ -40,5 +41,13 @@ EdgeCrossingCount CountEdgeCrossings(const CsgExpressionPtr& expression,
 /// finding on the exact field, paper 4.3), with `insideA` the sign at a.
 Vec3 FindEdgeCrossing(const CsgExpression& expression, const PrimitiveSet& primitives,
   const Vec3& a, const Vec3& b, bool insideA);
+
+/// The point of a sub-edge crossing (CrossingKind::SubEdge): found on the
+/// exact field (FindEdgeCrossing; a lone mesh leaf crossed once gives the
+/// point on the crossed triangle's plane), then put exactly on the sub-edge's
+/// line and strictly inside it, so that crossings of different sub-edges never
+/// coincide and a loop's chords meet only at their ends (LoopTriangulation.h).
+Vec3 PlaceSubEdgeCrossing(const Crossing& c, const RootGrid& grid, const CsgExpression& expression,
+  const PrimitiveSet& primitives);
 
 } // namespace tpc

@@ -2,7 +2,9 @@
 
 #include "BoundaryLoops.h"
 #include "ComplexCellCriterion.h"
+#include "ExactCellCriterion.h"
 #include "FaceRefinement.h"
+#include "MeshCellError.h"
 #include "PlanarCell.h"
 #include "QuadricCellError.h"
 #include "StarShapedCriterion.h"
@@ -92,7 +94,8 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   }
   // Cells that must shrink anyway skip the costlier tests; a plane section
   // (PlanarCell.h) or a cell whose certified error is within the tolerance
-  // (QuadricCellError.h) may stay larger.
+  // (QuadricCellError.h; MeshCellError.h, decided on the cell's loop once the
+  // tests passed) may stay larger.
   v.Oversized = grid.CellDiagonal(node.Level) > tolerance * (1.0 + 1e-9);
   const bool planar = v.Oversized && !uniform && IsPlanarCell(*expression, prims, box);
   if (!uniform && !planar)
@@ -101,7 +104,8 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     v.PredictedError = quadric ? PredictedCellError(*quadric) : HUGE_VAL;
     v.ErrorBounded = v.PredictedError <= tolerance;
   }
-  if (v.Oversized && !planar && !v.ErrorBounded)
+  const bool meshBounded = v.Oversized && !uniform && !planar && !v.ErrorBounded && LoneMeshLeaf(*expression);
+  if (v.Oversized && !planar && !v.ErrorBounded && !meshBounded)
   {
     v.Reason = uniform ? SplitReason::ComplexVoxel : SplitReason::HausdorffSize;
     return v;
@@ -113,7 +117,8 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     return v;
   }
   std::vector<Box3> loopRegions;
-  v.Reason = VoxelCompatibilityTest(TraceBoundaryLoops(boundary), expression, prims, grid, box, &loopRegions);
+  const BoundaryLoopSet loops = TraceBoundaryLoops(boundary);
+  v.Reason = VoxelCompatibilityTest(loops, expression, prims, grid, box, &loopRegions);
   if (v.Reason != SplitReason::None)
   {
     return v;
@@ -133,6 +138,24 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
       v.Reason = SplitReason::NotStarShapedVoxel;
       return v;
     }
+  }
+  if (meshBounded)
+  {
+    v.PredictedError = PredictedMeshCellError(*expression, prims, grid, box, boundary, loops, tolerance);
+    v.ErrorBounded = v.MeshSurface = v.PredictedError <= tolerance;
+    if (!v.ErrorBounded)
+    {
+      v.Reason = SplitReason::HausdorffSize;
+      return v;
+    }
+  }
+  else if (!v.Oversized && !v.ErrorBounded && LoneMeshLeaf(*expression))
+  {
+    // Within the tolerance by its size, whatever its patch; the extraction
+    // certifies the patch's distance to the mesh too (MeshCellError.h), so
+    // that the reported bound is what the cells' patches need.
+    v.ErrorBounded = true;
+    v.PredictedError = grid.CellDiagonal(node.Level);
   }
   v.Kind = McVerdict::Pass;
   v.Reason = SplitReason::None;

@@ -30,11 +30,18 @@ struct McCompatibility
   /// section (PlanarCell.h), so its patch is exact whatever its size.
   bool Planar = false;
   /// One quadric is the surface in the cell and the certified error of any
-  /// patch of it (QuadricCellError.h), PredictedError, is within the
+  /// patch of it (QuadricCellError.h), or one mesh and the certified error of
+  /// its final fan (MeshCellError.h), PredictedError, is within the
   /// tolerance: the cell may pass at any size, and its error is certified on
   /// its final patch (CellPatches.h).
   bool ErrorBounded = false;
   double PredictedError = HUGE_VAL;
+  /// ErrorBounded where one mesh is the surface in a cell larger than the
+  /// tolerance (MeshCellError.h): the prediction holds for the fan around
+  /// MeshCellApex over the final loop. (Cells of one mesh within the
+  /// tolerance are ErrorBounded too, predicted by their diagonal, with their
+  /// own patch.)
+  bool MeshSurface = false;
   /// Larger than the tolerance (the Hausdorff size test's own comparison).
   bool Oversized = false;
   /// Faces this cell refined (only kept if it passes).
@@ -50,8 +57,9 @@ constexpr int FaceRefinementLevels = 10;
 /// fails (FaceRefinement.h). A cell passes when
 /// - it is no larger than the tolerance (Hausdorff, 5.3.4), or the surface in
 ///   it is a plane section (PlanarCell.h: the patch is then exact), or one
-///   quadric whose certified error is within the tolerance
-///   (QuadricCellError.h);
+///   quadric or one mesh whose certified error is within the tolerance
+///   (QuadricCellError.h, MeshCellError.h: for a mesh, decided last, on the
+///   loop the other tests traced);
 /// - each face can be tiled by MC-compatible tiles (complex face and edge,
 ///   face ambiguity, star-shaped w.r.t. the face; Lemma 1 per tile);
 /// - the surface draws at least one loop on the cell boundary (none while the

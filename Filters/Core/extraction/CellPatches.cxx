@@ -80,7 +80,7 @@ void WriteCellPatches(const CellPatches& patches, std::uint32_t cell, std::size_
 
 void TriangulateCell(const BoundaryLoopSet& loops, const OctreeNode& node, const CsgExpression& expression,
   const PrimitiveSet& prims, const RootGrid& grid, const CrossingVertices& vertices, const TriangleMesh& mesh,
-  CellPatches& out, const QuadricCellError* surface)
+  CellPatches& out, const QuadricCellError* surface, const Vec3* meshApex)
 {
   const Box3 box = grid.CellBox(node.Level, node.Ijk);
   LatticeIndex base[3];
@@ -129,7 +129,8 @@ void TriangulateCell(const BoundaryLoopSet& loops, const OctreeNode& node, const
     const Box3 region = ids.size() > 1 ? ApexRegion(boxes, l, box) : box;
     const std::vector<SeparatingPlane> below =
       ids.size() > 1 ? ObliqueCuts(positions, boxes, l) : std::vector<SeparatingPlane>();
-    const LoopPatch patch = TriangulateLoop(points[l], region, node.PlaneSection, expression, prims, below, surface);
+    const LoopPatch patch = TriangulateLoop(points[l], region, node.PlaneSection, expression, prims, below, surface,
+      ids.size() == 1 ? meshApex : nullptr);
     if (patch.Kind == LoopPatchKind::Triangle)
     {
       out.Triangles.push_back({ id[0], id[1], id[2] });

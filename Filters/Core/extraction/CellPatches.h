@@ -28,10 +28,11 @@ struct CellPatches
 /// Spans every loop of leaf `node` (LoopTriangulation.h), each apex in its
 /// own loop's region of the cell; `mesh` holds the crossing vertices.
 /// `surface`: the cell's error is certified (QuadricCellError.h), its apexes
-/// go on the surface where they can.
+/// go on the surface where they can. `meshApex`: the cell's one loop is
+/// fanned around it (MeshCellError.h).
 void TriangulateCell(const BoundaryLoopSet& loops, const OctreeNode& node, const CsgExpression& expression,
   const PrimitiveSet& primitives, const RootGrid& grid, const CrossingVertices& vertices, const TriangleMesh& mesh,
-  CellPatches& out, const QuadricCellError* surface = nullptr);
+  CellPatches& out, const QuadricCellError* surface = nullptr, const Vec3* meshApex = nullptr);
 
 /// An exact cell's polygons (ExactCell.h), each a triangle or a fan around
 /// its centroid (in its triangle's plane: the polygon is convex, and its

@@ -22,21 +22,38 @@ double EdgeChordError(const QuadricCellError& bound, const Vec3& a, const Vec3& 
   }
   return error;
 }
-} // namespace
 
-double CertifiedPatchError(const QuadricCellError& bound, const CellPatches& patches, const TriangleMesh& mesh)
+/// The cell's triangles with their vertices' positions.
+std::vector<SourceTriangle> PatchTriangles(const CellPatches& patches, const TriangleMesh& mesh)
 {
   const auto position = [&](std::uint32_t v) -> const Vec3& {
     return (v & CellPatches::LocalFlag) ? patches.Apexes[v & ~CellPatches::LocalFlag] : mesh.Points[v];
   };
-  double error = 0.0;
+  std::vector<SourceTriangle> triangles;
   for (const Triangle& t : patches.Triangles)
   {
-    const Vec3 &a = position(t[0]), &b = position(t[1]), &c = position(t[2]);
+    triangles.push_back({ position(t[0]), position(t[1]), position(t[2]) });
+  }
+  return triangles;
+}
+} // namespace
+
+double CertifiedPatchError(const QuadricCellError& bound, const CellPatches& patches, const TriangleMesh& mesh)
+{
+  double error = 0.0;
+  for (const SourceTriangle& t : PatchTriangles(patches, mesh))
+  {
+    const Vec3 &a = t[0], &b = t[1], &c = t[2];
     error = std::max({ error, TriangleError(bound, a, b, c), EdgeChordError(bound, a, b), EdgeChordError(bound, b, c),
       EdgeChordError(bound, c, a) });
   }
   return error <= bound.Margin ? error : HUGE_VAL;
+}
+
+HausdorffEstimate CertifiedMeshCellError(const std::vector<ConvexPolygon>& surface, const CellPatches& patches,
+  const TriangleMesh& mesh, const Box3& cell, double enough, double giveUp, std::size_t budget)
+{
+  return CertifiedMeshPatchError(surface, PatchTriangles(patches, mesh), cell, enough, giveUp, budget);
 }
 
 } // namespace tpc

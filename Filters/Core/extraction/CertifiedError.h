@@ -1,9 +1,12 @@
 // The certified error of a cell's final patch (issue 17): the bound of
 // QuadricCellError.h evaluated on the triangles and loop chords the cell
-// actually drew, after crack patching and apex placement.
+// actually drew, after crack patching and apex placement; or, where one mesh
+// is the surface, MeshCellError.h's distance between those triangles and the
+// mesh in the cell.
 #pragma once
 
 #include "CellPatches.h"
+#include "MeshCellError.h"
 #include "QuadricCellError.h"
 #include "TriangleMesh.h"
 
@@ -18,5 +21,10 @@ namespace tpc
 /// lies on a face without a monotone direction, or when E_C exceeds the
 /// margin (the argument's segments must stay in the grown cell).
 double CertifiedPatchError(const QuadricCellError& bound, const CellPatches& patches, const TriangleMesh& mesh);
+
+/// E(P) of MeshCellError.h for the cell's `patches` against `surface` (S in
+/// the cell): CertifiedMeshPatchError on the patch's triangles.
+HausdorffEstimate CertifiedMeshCellError(const std::vector<ConvexPolygon>& surface, const CellPatches& patches,
+  const TriangleMesh& mesh, const Box3& cell, double enough, double giveUp, std::size_t budget);
 
 } // namespace tpc

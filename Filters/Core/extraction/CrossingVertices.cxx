@@ -20,25 +20,6 @@ std::size_t BucketOf(const CrossingVertices::Record& r)
   return HashKey(r.Vertex.Key) >> 56;
 }
 
-/// A surface crossing on its lattice sub-edge, found on the exact field, then
-/// put exactly on the sub-edge's line and strictly inside it: crossings of
-/// different sub-edges never coincide and a loop's chords meet only at their
-/// ends (LoopTriangulation.h).
-Vec3 PlaceCrossing(const Crossing& c, const RootGrid& grid, const CsgExpression& expression,
-  const PrimitiveSet& prims)
-{
-  const int axis = AxisOf(c.Key);
-  LatticeIndex lo[3], hi[3];
-  SplitPointKey(PointOf(c.Key), lo);
-  std::copy(lo, lo + 3, hi);
-  hi[axis] = c.Upper;
-  const Vec3 a = grid.Point(lo), b = grid.Point(hi);
-  const Vec3 found = FindEdgeCrossing(expression, prims, a, b, c.LowerInside);
-  Vec3 p = a;
-  p[axis] = std::clamp(found[axis], std::nextafter(a[axis], b[axis]), std::nextafter(b[axis], a[axis]));
-  return p;
-}
-
 /// Bends (cells stopped by a limit only, BoundaryLoops.h): between the run's
 /// two crossings, nudged off their line into the bend's tile so that bends
 /// of different tiles around the line do not coincide.
@@ -115,7 +96,7 @@ bool PlaceCrossingVertices(const CrossingVertices& vertices, const AdaptiveOctre
         continue; // bend vertices are placed from their crossings (PlaceBendVertices)
       }
       const CsgExpression& e = *tree.Expressions[cells[records[i].CellIndex]];
-      mesh.Points[i] = c.Kind == CrossingKind::SubEdge ? PlaceCrossing(c, tree.Grid, e, prims)
+      mesh.Points[i] = c.Kind == CrossingKind::SubEdge ? PlaceSubEdgeCrossing(c, tree.Grid, e, prims)
                                                        : ExactCrossingPosition(c, prims, tree.Grid);
       mesh.Normals[i] = Normalized(e.Gradient(mesh.Points[i], prims));
     }

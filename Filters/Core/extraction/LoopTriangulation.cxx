@@ -364,9 +364,14 @@ std::vector<SeparatingPlane> ObliqueCuts(const std::vector<std::vector<Vec3>>& l
 
 LoopPatch TriangulateLoop(const std::vector<LoopPoint>& loop, const Box3& region, bool planeSection,
   const CsgExpression& expression, const PrimitiveSet& primitives, const std::vector<SeparatingPlane>& below,
-  const QuadricCellError* surface)
+  const QuadricCellError* surface, const Vec3* meshApex)
 {
   LoopPatch patch;
+  if (meshApex)
+  {
+    patch.Apex = ClampStrictlyInside(*meshApex, region);
+    return patch;
+  }
   if (loop.size() == 3 && CommonFace(loop) < 0)
   {
     patch.Kind = LoopPatchKind::Triangle;

@@ -110,9 +110,13 @@ std::vector<SeparatingPlane> ObliqueCuts(const std::vector<std::vector<Vec3>>& l
 /// `expression` (pruned to the cell) places apexes of caps over one face.
 /// `surface`: the cell's error is certified (QuadricCellError.h); the apex is
 /// then put on the surface where it can be, so that it adds no error.
+/// `meshApex`: the cell's error is certified where one mesh is the surface
+/// (MeshCellError.h): the patch is the fan around that apex (strictly inside
+/// the cell), whatever the loop, as the certificate requires.
 LoopPatch TriangulateLoop(const std::vector<LoopPoint>& loop, const Box3& region, bool planeSection,
   const CsgExpression& expression, const PrimitiveSet& primitives,
-  const std::vector<SeparatingPlane>& below = {}, const QuadricCellError* surface = nullptr);
+  const std::vector<SeparatingPlane>& below = {}, const QuadricCellError* surface = nullptr,
+  const Vec3* meshApex = nullptr);
 
 /// True when `p` lies strictly inside `box` on every axis (exact comparisons).
 bool StrictlyInside(const Vec3& p, const Box3& box);

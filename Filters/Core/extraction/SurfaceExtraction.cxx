@@ -4,6 +4,7 @@
 #include "CertifiedError.h"
 #include "CrackPatching.h"
 #include "CrossingVertices.h"
+#include "ExactCellCriterion.h"
 
 #include <algorithm>
 #include <cmath>
@@ -94,10 +95,23 @@ void CountDefects(const AdaptiveOctree& tree, const std::vector<std::uint32_t>& 
   }
 }
 
+/// What a surface leaf's patch is certified to (ExtractionResult): Error
+/// (+inf where the certificate failed, 0 on cells that are not
+/// error-bounded). Cells where one mesh is the surface also keep Bound, what
+/// their error cannot exceed (the subdivision's prediction or their
+/// diagonal), and Lower, a distance their patch attains (MeshCellError.h).
+struct CellCertificate
+{
+  double Error = 0.0;
+  double Bound = HUGE_VAL;
+  double Lower = 0.0;
+  bool Mesh = false;
+};
+
 /// The error-bounded cells' bound: each one's certified error, or its
 /// diagonal where that is smaller or the certificate failed (ExtractionResult).
 void GatherCertifiedBound(const AdaptiveOctree& tree, const std::vector<std::uint32_t>& cells,
-  const std::vector<double>& errors, ExtractionResult& result)
+  const std::vector<CellCertificate>& certificates, ExtractionResult& result)
 {
   for (std::size_t i = 0; i < cells.size(); ++i)
   {
@@ -105,19 +119,108 @@ void GatherCertifiedBound(const AdaptiveOctree& tree, const std::vector<std::uin
     if (node.State == CellState::Surface && node.ErrorBounded && tree.RoleOf(node) == TreeRole::Own)
     {
       const double diagonal = tree.Grid.CellDiagonal(node.Level);
+      const double error = certificates[i].Error;
       // (A cell no larger than the tolerance keeps its diagonal's bound.)
-      result.UncertifiedCells += errors[i] == HUGE_VAL && diagonal > tree.HausdorffTolerance ? 1 : 0;
-      result.CellErrors.emplace_back(cells[i], errors[i]);
-      result.CertifiedBound = std::max(result.CertifiedBound, std::min(errors[i], diagonal));
+      result.UncertifiedCells += error == HUGE_VAL && diagonal > tree.HausdorffTolerance ? 1 : 0;
+      result.CellErrors.emplace_back(cells[i], error);
+      result.CertifiedBound = std::max(result.CertifiedBound, std::min(error, diagonal));
     }
   }
+}
+
+/// S in leaf `n`, which is one mesh's (MeshCellError.h).
+std::vector<ConvexPolygon> MeshInCell(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& prims)
+{
+  const OctreeNode& node = tree.Nodes[n];
+  return SurfaceInCell(*LoneMeshLeaf(*tree.Expressions[n]), prims, tree.Grid.CellBox(node.Level, node.Ijk));
+}
+
+/// Surface leaf `n`'s patches (CellPatches.h) and what they are certified to.
+/// A mesh cell's error is first bounded without refinement (the pieces are
+/// its patch's and the mesh's triangles); RefineMeshCertificates refines the
+/// ones that matter.
+CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t n, const BoundaryLoopSet& loops,
+  const PrimitiveSet& prims, const CrossingVertices& vertices, const TriangleMesh& mesh, CellPatches& patches)
+{
+  const OctreeNode& node = tree.Nodes[n];
+  const CsgExpression& expression = *tree.Expressions[n];
+  const Box3 box = tree.Grid.CellBox(node.Level, node.Ijk);
+  const bool bounded = node.State == CellState::Surface && node.ErrorBounded;
+  CellCertificate certificate;
+  if (bounded && LoneMeshLeaf(expression))
+  {
+    const std::vector<ConvexPolygon> surface = MeshInCell(tree, n, prims);
+    const auto prediction = tree.MeshCellPredictions.find(n);
+    if (prediction != tree.MeshCellPredictions.end())
+    {
+      // Larger than the tolerance: the fan around the apex the prediction
+      // was made with. The prediction holds when the final loop refines the
+      // cell's own, its points on the surface (no bend of a neighbour
+      // stopped by a limit); the patch is certified on its own anyway.
+      const Vec3 apex = MeshCellApex(surface, box);
+      TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches, nullptr, &apex);
+      const bool refined = loops.Consistent && loops.LoopSizes.size() == 1 &&
+        std::none_of(loops.Crossings.begin(), loops.Crossings.end(),
+          [](const Crossing& c) { return c.Kind == CrossingKind::Bend; });
+      certificate.Bound = refined ? prediction->second : HUGE_VAL;
+    }
+    else
+    {
+      // Within the tolerance: its own patch, bounded by its diagonal.
+      TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches);
+      certificate.Bound = tree.Grid.CellDiagonal(node.Level);
+    }
+    const HausdorffEstimate e = CertifiedMeshCellError(
+      surface, patches, mesh, box, 0.0, std::min(certificate.Bound, tree.HausdorffTolerance), 0);
+    certificate.Error = std::min(certificate.Bound, e.Upper);
+    certificate.Lower = e.Lower;
+    certificate.Mesh = true;
+    return certificate;
+  }
+  const std::optional<QuadricCellError> quadric = bounded
+    ? BoundQuadricCell(tree.Expressions[n], tree.SceneExpression, prims, box, tree.HausdorffTolerance)
+    : std::nullopt;
+  TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches, quadric ? &*quadric : nullptr);
+  certificate.Error = !bounded ? 0.0 : quadric ? CertifiedPatchError(*quadric, patches, mesh) : HUGE_VAL;
+  return certificate;
+}
+
+/// Refines the mesh cells' certificates that may set the reported bound:
+/// those above 1.1 times the largest distance a patch was seen to attain
+/// (the others cannot raise the bound past it), each until within that, or
+/// within 10 % of its own attained distance (OneSidedHausdorff).
+bool RefineMeshCertificates(const AdaptiveOctree& tree, const std::vector<std::uint32_t>& cells,
+  const std::vector<std::uint8_t>& own, const std::vector<CellPatches>& patches, const TriangleMesh& mesh,
+  const PrimitiveSet& prims, std::vector<CellCertificate>& certificates, const ParallelFor& parallelFor,
+  const ProgressCallback& progress)
+{
+  double attained = 0.0;
+  for (std::size_t i = 0; i < cells.size(); ++i)
+  {
+    attained = std::max(attained, own[i] && certificates[i].Mesh ? certificates[i].Lower : 0.0);
+  }
+  const double enough = 1.1 * attained;
+  return ChunkedFor(cells.size(), Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+        {
+          CellCertificate& c = certificates[i];
+          if (own[i] && c.Mesh && c.Error > enough)
+          {
+            const OctreeNode& node = tree.Nodes[cells[i]];
+            const HausdorffEstimate e = CertifiedMeshCellError(MeshInCell(tree, cells[i], prims), patches[i], mesh,
+              tree.Grid.CellBox(node.Level, node.Ijk), enough, std::min(c.Bound, tree.HausdorffTolerance), 4096);
+            c.Error = std::min(c.Bound, e.Upper);
+          }
+        }
+      }, progress);
 }
 } // namespace
 
 ExtractionResult ExtractSurface(const AdaptiveOctree& tree, const ImplicitScene& scene,
   const ParallelFor& parallelFor, const ProgressCallback& progress)
 {
-  // Progress: loops 40 %, vertex numbering 10 %, vertices 20 %, patches 25 %, writing 5 %.
+  // Progress: loops 40 %, vertex numbering 10 %, vertices 20 %, patches 20 %, certificates 5 %,
+  // writing 5 %.
   ExtractionResult result;
   TriangleMesh& mesh = result.Mesh;
   const auto& prims = scene.Primitives;
@@ -161,7 +264,7 @@ ExtractionResult ExtractSurface(const AdaptiveOctree& tree, const ImplicitScene&
 
   // Pass 3: each own cell's patches, and the error-bounded cells' errors.
   std::vector<CellPatches> patches(cells.size());
-  std::vector<double> errors(cells.size(), 0.0);
+  std::vector<CellCertificate> certificates(cells.size());
   if (!ChunkedFor(cells.size(), Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i)
         {
@@ -171,24 +274,18 @@ ExtractionResult ExtractSurface(const AdaptiveOctree& tree, const ImplicitScene&
           }
           else if (own[i])
           {
-            const OctreeNode& node = tree.Nodes[cells[i]];
-            const bool bounded = node.State == CellState::Surface && node.ErrorBounded;
-            const std::optional<QuadricCellError> surface = bounded
-              ? BoundQuadricCell(tree.Expressions[cells[i]], tree.SceneExpression, prims,
-                  tree.Grid.CellBox(node.Level, node.Ijk), tree.HausdorffTolerance)
-              : std::nullopt;
-            TriangulateCell(loops[i], node, *tree.Expressions[cells[i]], prims, tree.Grid, vertices, mesh,
-              patches[i], surface ? &*surface : nullptr);
-            errors[i] = !bounded ? 0.0 : surface ? CertifiedPatchError(*surface, patches[i], mesh) : HUGE_VAL;
+            certificates[i] = TriangulateSurfaceCell(tree, cells[i], loops[i], prims, vertices, mesh, patches[i]);
           }
         }
-      }, ProgressRange(progress, 0.7, 0.95)))
+      }, ProgressRange(progress, 0.7, 0.9)) ||
+    !RefineMeshCertificates(
+      tree, cells, own, patches, mesh, prims, certificates, parallelFor, ProgressRange(progress, 0.9, 0.95)))
   {
     result.Aborted = true;
     return result;
   }
   CountDefects(tree, cells, own, loops, patches, result);
-  GatherCertifiedBound(tree, cells, errors, result);
+  GatherCertifiedBound(tree, cells, certificates, result);
 
   // Pass 4: the output, written once.
   if (!WritePatches(patches, cells, mesh, parallelFor, ProgressRange(progress, 0.95, 1.0)))

@@ -43,7 +43,7 @@ struct ExtractionResult
   /// bound holds.
   std::size_t CellsWithoutPatch = 0;
   /// The largest two-sided Hausdorff bound of the error-bounded cells
-  /// (QuadricCellError.h), each certified on its final patch
+  /// (QuadricCellError.h, MeshCellError.h), each certified on its final patch
   /// (CertifiedError.h), or its diagonal where that is smaller or the
   /// certificate failed.
   double CertifiedBound = 0.0;

@@ -30,9 +30,9 @@ struct OctreeNode
   /// is a union of plane sections (PlanarCell.h): its patches must stay in
   /// their planes.
   bool PlaneSection = false;
-  /// A Surface leaf where one quadric is the surface and its error is
-  /// certified on its patch (QuadricCellError.h); it may be larger than the
-  /// tolerance.
+  /// A Surface leaf where one quadric or one mesh is the surface and its
+  /// error is certified on its patch (QuadricCellError.h, MeshCellError.h);
+  /// it may be larger than the tolerance.
   bool ErrorBounded = false;
   /// Children are FirstChild + c, c = x + 2y + 4z (VTK's HyperTree order); -1 for leaves.
   std::int32_t FirstChild = -1;
@@ -94,6 +94,11 @@ public:
   std::vector<CsgExpressionPtr> Expressions;
   /// Exact inside/outside at lattice corners of cells that met the surface.
   LatticeSignTable Signs;
+
+  /// The subdivision's certified prediction for each error-bounded leaf
+  /// where one mesh is the surface (MeshCellError.h): it bounds the error of
+  /// the fan the extraction builds there, whatever crack patching adds.
+  std::unordered_map<std::uint32_t, double> MeshCellPredictions;
 
   /// Tiles of faces that were refined (FaceRefinement.h), for leaves that
   /// passed the tests; faces not listed are a single tile.

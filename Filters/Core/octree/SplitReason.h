@@ -20,7 +20,8 @@ enum class SplitReason : std::uint8_t
   NotStarShapedVoxel = 6, ///< no witness found for the solid restricted to the voxel
   NotStarShapedFace = 7,  ///< no witness found for the solid restricted to a face
   HausdorffSize = 8,      ///< cell on the surface larger than the tolerance, with no certified
-                          ///< error within it (QuadricCellError.h) and not a plane section
+                          ///< error within it (QuadricCellError.h, MeshCellError.h) and not
+                          ///< a plane section
   LimitReached = 9,       ///< leaf kept because of MaximumDepth/MaximumNumberOfCells
                           ///< while a criterion still failed
   SurfacesTooClose = 10,  ///< leaf kept while a criterion failed: two surfaces face

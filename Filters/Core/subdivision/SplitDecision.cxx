@@ -50,6 +50,10 @@ bool DecideCell(AdaptiveOctree& tree, std::uint32_t n, const CellTests& tests, c
     node.State = CellState::Surface;
     node.PlaneSection = v.Planar;
     node.ErrorBounded = v.ErrorBounded;
+    if (v.MeshSurface)
+    {
+      tree.MeshCellPredictions[n] = v.PredictedError;
+    }
     result.SurfaceCells += mine;
     result.PlanarSurfaceCells += v.Planar ? mine : 0;
     result.ErrorBoundedCells += v.ErrorBounded ? mine : 0;

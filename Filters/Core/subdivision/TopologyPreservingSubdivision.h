@@ -70,7 +70,8 @@ struct SubdivisionResult
   /// Cells whose patch is the input mesh clipped to them (ExactCell.h).
   std::size_t ExactCells = 0;
   /// Surface cells whose error is certified on their patch
-  /// (QuadricCellError.h), of any size; of those, larger than the tolerance.
+  /// (QuadricCellError.h, MeshCellError.h), of any size; of those, larger
+  /// than the tolerance.
   std::size_t ErrorBoundedCells = 0;
   std::size_t OversizedErrorBoundedCells = 0;
   /// The proven two-sided Hausdorff bound between the exact surface and the

@@ -1,0 +1,295 @@
+#include "MeshCellError.h"
+
+#include "EdgeCrossings.h"
+#include "ExactCellCriterion.h"
+#include "MeshSolid.h"
+#include "SymmetricEigen.h"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+
+namespace tpc
+{
+namespace
+{
+/// The part of the polygon `points` with x[axis] <= value (`below`) or >=
+/// value (Sutherland-Hodgman); new points get exactly x[axis] = value.
+std::vector<Vec3> ClipToHalfSpace(const std::vector<Vec3>& points, int axis, double value, bool below)
+{
+  std::vector<Vec3> out;
+  const std::size_t m = points.size();
+  const auto kept = [&](const Vec3& p) { return below ? p[axis] <= value : p[axis] >= value; };
+  for (std::size_t i = 0; i < m; ++i)
+  {
+    const Vec3& a = points[i];
+    const Vec3& b = points[(i + 1) % m];
+    if (kept(a))
+    {
+      out.push_back(a);
+    }
+    if (kept(a) != kept(b) && m > 1)
+    {
+      const double t = (value - a[axis]) / (b[axis] - a[axis]);
+      Vec3 p = a + (b - a) * t;
+      p[axis] = value;
+      out.push_back(p);
+    }
+  }
+  return out;
+}
+
+/// The polygon `points` clipped to the closed box (possibly degenerate).
+std::vector<Vec3> ClipToBox(std::vector<Vec3> points, const Box3& box)
+{
+  for (int axis = 0; axis < 3 && !points.empty(); ++axis)
+  {
+    points = ClipToHalfSpace(points, axis, box.hi[axis], true);
+    if (!points.empty())
+    {
+      points = ClipToHalfSpace(points, axis, box.lo[axis], false);
+    }
+  }
+  return points;
+}
+
+/// Twice the polygon's area (its Newell vector's length).
+double DoubleArea(const ConvexPolygon& q)
+{
+  Vec3 n;
+  for (std::size_t i = 0; i < q.Points.size(); ++i)
+  {
+    n += Cross(q.Points[i], q.Points[(i + 1) % q.Points.size()]);
+  }
+  return Norm(n);
+}
+
+/// Pieces the subdivision's prediction may examine per direction (a cell
+/// whose bound needs more is split instead: smaller cells are cheaper).
+constexpr std::size_t PredictionBudget = 1024;
+
+/// Floating-point slack of the cell's distances (header: Rounding).
+double RoundingSlack(const Box3& cell)
+{
+  double magnitude = 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    magnitude = std::max({ magnitude, std::fabs(cell.lo[a]), std::fabs(cell.hi[a]) });
+  }
+  return 4096.0 * DBL_EPSILON * magnitude + 1e-12 * cell.Diagonal();
+}
+
+/// The face of the cell (CubeTopology.h numbering) holding both sub-edge
+/// crossings, or -1.
+int CommonFace(const Crossing& p, const Crossing& q, const CellBoundary& boundary)
+{
+  unsigned mask[2] = { 0, 0 };
+  const Crossing* both[2] = { &p, &q };
+  for (int k = 0; k < 2; ++k)
+  {
+    LatticeIndex x[3];
+    SplitPointKey(PointOf(both[k]->Key), x);
+    const int along = AxisOf(both[k]->Key);
+    for (int a = 0; a < 3; ++a)
+    {
+      if (a != along)
+      {
+        mask[k] |= (x[a] == boundary.Base[a] ? 1u : 0u) << (2 * a);
+        mask[k] |= (x[a] == boundary.Base[a] + boundary.Size ? 1u : 0u) << (2 * a + 1);
+      }
+    }
+  }
+  const unsigned common = mask[0] & mask[1];
+  for (int f = 0; f < 6; ++f)
+  {
+    if (common & (1u << f))
+    {
+      return f;
+    }
+  }
+  return -1;
+}
+
+/// The box of tile t of face f.
+Box3 TileBox(const RootGrid& grid, const CellBoundary& boundary, int f, const FaceTile& t)
+{
+  const int axis = f / 2;
+  const LatticeIndex plane = boundary.Base[axis] + (f % 2 ? boundary.Size : 0);
+  return { grid.Point(TileCorner(axis, plane, t, 0)), grid.Point(TileCorner(axis, plane, t, 3)) };
+}
+} // namespace
+
+std::vector<ConvexPolygon> SurfaceInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives,
+  const Box3& cell)
+{
+  const MeshSolid& mesh = primitives.Meshes[leaf.Primitive];
+  std::vector<ConvexPolygon> surface;
+  for (const std::uint32_t t : *leaf.Triangles)
+  {
+    std::vector<Vec3> clipped = ClipToBox({ mesh.Vertex(t, 0), mesh.Vertex(t, 1), mesh.Vertex(t, 2) }, cell);
+    if (!clipped.empty())
+    {
+      surface.push_back(MakeConvexPolygon(std::move(clipped)));
+    }
+  }
+  return surface;
+}
+
+Vec3 MeshCellApex(const std::vector<ConvexPolygon>& surface, const Box3& cell)
+{
+  Vec3 centroid;
+  double weight = 0.0;
+  for (const ConvexPolygon& q : surface)
+  {
+    const double w = DoubleArea(q);
+    for (const Vec3& p : q.Points)
+    {
+      centroid += p * (w / q.Points.size());
+    }
+    weight += w;
+  }
+  centroid = weight > 0.0 ? centroid * (1.0 / weight) : cell.Center();
+  // Relative weights: the system does not depend on the scene's scale (the
+  // eigen-solver's thresholds are absolute).
+  double ata[3][3] = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } };
+  double atb[3] = { 0, 0, 0 };
+  for (const ConvexPolygon& q : surface)
+  {
+    const Vec3& n = q.Normal;
+    const double w = weight > 0.0 ? DoubleArea(q) / weight : 1.0, d = Dot(n, q.Points[0] - centroid);
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        ata[i][j] += w * n[i] * n[j];
+      }
+      atb[i] += w * n[i] * d;
+    }
+  }
+  Vec3 delta;
+  SolveTruncated(ata, atb, 0.05, delta.x);
+  Box3 inner = cell;
+  for (int a = 0; a < 3; ++a)
+  {
+    const double margin = cell.Width(a) / 32.0;
+    inner.lo[a] += margin;
+    inner.hi[a] -= margin;
+  }
+  return inner.Clamp(centroid + delta);
+}
+
+double ChordDeviation(const std::vector<ConvexPolygon>& surface, const Box3& tile, const Vec3& a, const Vec3& b)
+{
+  double deviation = 0.0;
+  for (const ConvexPolygon& q : surface)
+  {
+    if (q.Bounds.Overlaps(tile))
+    {
+      for (const Vec3& p : ClipToBox(q.Points, tile))
+      {
+        deviation = std::max(deviation, SegmentDistance(p, a, b));
+      }
+    }
+  }
+  return deviation;
+}
+
+HausdorffEstimate CertifiedMeshPatchError(const std::vector<ConvexPolygon>& surface,
+  const std::vector<SourceTriangle>& patch, const Box3& cell, double enough, double giveUp, std::size_t budget)
+{
+  HausdorffEstimate error{ HUGE_VAL, 0.0 };
+  if (surface.empty() || patch.empty())
+  {
+    return error;
+  }
+  const double slack = RoundingSlack(cell);
+  const HausdorffEstimate toSurface = OneSidedHausdorff(patch, surface, enough - slack, giveUp - slack, budget);
+  error.Lower = toSurface.Lower;
+  if (!(toSurface.Upper + slack <= giveUp))
+  {
+    return error;
+  }
+  std::vector<SourceTriangle> pieces;
+  for (const ConvexPolygon& q : surface)
+  {
+    for (std::size_t i = 1; i + 1 < q.Points.size(); ++i)
+    {
+      pieces.push_back({ q.Points[0], q.Points[i], q.Points[i + 1] });
+    }
+    if (q.Points.size() < 3)
+    {
+      pieces.push_back({ q.Points.front(), q.Points.back(), q.Points.back() });
+    }
+  }
+  std::vector<ConvexPolygon> targets;
+  for (const SourceTriangle& t : patch)
+  {
+    targets.push_back(MakeConvexPolygon({ t[0], t[1], t[2] }));
+  }
+  const HausdorffEstimate toPatch = OneSidedHausdorff(pieces, targets, enough - slack, giveUp - slack, budget);
+  error.Lower = std::max(error.Lower, toPatch.Lower);
+  const double upper = std::max(toSurface.Upper, toPatch.Upper) + slack;
+  error.Upper = upper <= giveUp ? upper : HUGE_VAL;
+  return error;
+}
+
+double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSet& primitives,
+  const RootGrid& grid, const Box3& cell, const CellBoundary& boundary, const BoundaryLoopSet& loops,
+  double tolerance)
+{
+  const CsgLeaf* leaf = LoneMeshLeaf(expression);
+  if (!leaf || loops.LoopSizes.size() != 1 || !loops.Consistent || loops.Crossings.size() < 3)
+  {
+    return HUGE_VAL;
+  }
+  const std::vector<ConvexPolygon> surface = SurfaceInCell(*leaf, primitives, cell);
+  const std::vector<Crossing>& loop = loops.Crossings;
+  const std::size_t m = loop.size();
+  std::vector<Vec3> points(m);
+  for (std::size_t k = 0; k < m; ++k)
+  {
+    if (loop[k].Kind != CrossingKind::SubEdge)
+    {
+      return HUGE_VAL;
+    }
+    points[k] = PlaceSubEdgeCrossing(loop[k], grid, expression, primitives);
+  }
+  // delta: each chord against the trace on the tile holding its midpoint.
+  double delta = 0.0;
+  for (std::size_t k = 0; k < m && delta <= tolerance; ++k)
+  {
+    const int f = CommonFace(loop[k], loop[(k + 1) % m], boundary);
+    if (f < 0)
+    {
+      return HUGE_VAL;
+    }
+    const Vec3 &a = points[k], &b = points[(k + 1) % m];
+    const Vec3 middle = (a + b) * 0.5;
+    double chord = HUGE_VAL;
+    for (const FaceTile& t : boundary.Tiles[f])
+    {
+      const Box3 tile = TileBox(grid, boundary, f, t);
+      if (tile.Contains(middle))
+      {
+        chord = ChordDeviation(surface, tile, a, b);
+        break;
+      }
+    }
+    delta = std::max(delta, chord);
+  }
+  if (!(delta < tolerance))
+  {
+    return HUGE_VAL;
+  }
+  const Vec3 apex = MeshCellApex(surface, cell);
+  std::vector<SourceTriangle> fan;
+  for (std::size_t k = 0; k < m; ++k)
+  {
+    fan.push_back({ points[k], points[(k + 1) % m], apex });
+  }
+  const double error =
+    CertifiedMeshPatchError(surface, fan, cell, tolerance - delta, tolerance - delta, PredictionBudget).Upper;
+  return error == HUGE_VAL ? HUGE_VAL : error + delta;
+}
+
+} // namespace tpc

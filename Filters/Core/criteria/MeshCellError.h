@@ -1,0 +1,100 @@
+// Certified per-cell error where one mesh is the surface (issue 17; replaces
+// the paper's 5.3.4 size criterion there, as QuadricCellError.h does for one
+// quadric).
+//
+// Setting. The scene's expression pruned to the cell C is a single mesh leaf,
+// so the exact surface in C is S_C = the union of the convex polygons tau ∩ C
+// over the leaf's listed triangles tau (a superset of those meeting C). C's
+// patch is a fan around an apex c that depends on S_C and C only (MeshCellApex
+// below): the triangles (p_k, p_k+1, c) over the cell's loop p_0 .. p_m-1,
+// whose points are surface crossings on lattice sub-edges in C's faces, each
+// on the crossed triangle's plane, i.e. on S up to rounding.
+//
+// The error. Both the patch P and S_C are unions of convex planar polygons, so
+// their two-sided Hausdorff distance
+//   E(P) = max( h(P, S_C), h(S_C, P) )
+// is bounded by branch and bound (PolygonHausdorff.h). It is the cell's
+// error: every point of the output in C (P) is within h(P, S_C) of S, and
+// every point of S in C within h(S_C, P) of the output; every point of S lies
+// in a cell, every point of the output in a patch.
+//
+// The subdivision's prediction, before crack patching. The cell's own loop L
+// has one chord ab per face tile it crosses. Crack patching (BoundaryLoops.h)
+// samples C's faces as their finer neighbours do; their tiles subdivide C's,
+// so in the final loop L' each chord ab of a tile t becomes a polyline
+// a = q_0, .., q_r = b of crossings on sub-edges inside t, all on S ∩ t. Let
+//   delta = max over chords ab of max over S ∩ t of d(., [a, b]),
+// computed exactly on S's polygons clipped to t (d(., [a, b]) is convex, so
+// its maximum over a polygon is at a vertex). The final patch P' is the fan
+// around the same c (the apex does not depend on the loop). Then
+//   E(P') <= E(P) + delta:
+// - P' to S. x in P' is c + s (w - c), 0 <= s <= 1, w on a sub-chord
+//   [q_i, q_i+1]; both ends are within delta of [a, b], hence so is w
+//   (convexity): |w - u| <= delta for some u in [a, b]. x' = c + s (u - c) is
+//   in P's triangle (a, b, c) and |x - x'| = s |w - u| <= delta, so
+//   d(x, S) <= d(x', S) + delta <= h(P, S_C) + delta.
+// - S to P'. For y in S_C take x' = c + s (u - c) in P with |y - x'| <=
+//   h(S_C, P), u in a chord [a, b]. The polyline from a to b is connected and
+//   its projection on the line ab runs from a to b, so some w on it projects
+//   onto u; then |w - u| is w's distance to the line, which is its distance
+//   to the segment (the projection u lies in it), <= delta. x = c + s (w - c)
+//   is in P' and |x - x'| <= delta.
+// So a cell is accepted when E(P) + delta <= the tolerance, and the final
+// patch is certified again on its own (usually tighter: its loop follows S
+// closer); the filter reports the smaller of the two.
+//
+// Cells no larger than the tolerance keep their usual patch
+// (LoopTriangulation.h), bounded by their diagonal; E of that patch is
+// computed too, and the smaller of the two reported, so that HausdorffBound
+// says what the patches need rather than what the cells' size allows.
+//
+// Rounding. The polygons, the crossings and the distances are computed in
+// floating point from coordinates of magnitude at most |C|_inf (the largest
+// coordinate of the cell): each is within a few hundred units in the last
+// place of it, RoundingSlack below covers them with a wide margin.
+#pragma once
+
+#include "BoundaryLoops.h"
+#include "CsgExpression.h"
+#include "PolygonHausdorff.h"
+
+#include <vector>
+
+namespace tpc
+{
+
+/// S_C: each listed triangle of the lone mesh leaf (LoneMeshLeaf,
+/// ExactCellCriterion.h) clipped to `cell` (the empty clips dropped).
+std::vector<ConvexPolygon> SurfaceInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives,
+  const Box3& cell);
+
+/// The fan's apex: the point nearest to S_C's planes (least squares, area
+/// weighted, as Dual Contouring places vertices: on a crease or corner of S it
+/// lands on it), flat directions left at S_C's area centroid; kept 1/32 of the
+/// cell's width inside it, so strictly inside (the fan is then embedded,
+/// LoopTriangulation.h).
+Vec3 MeshCellApex(const std::vector<ConvexPolygon>& surface, const Box3& cell);
+
+/// max over S ∩ tile of the distance to the chord [a, b] (`tile` is a face
+/// tile, degenerate along the face's axis).
+double ChordDeviation(const std::vector<ConvexPolygon>& surface, const Box3& tile, const Vec3& a, const Vec3& b);
+
+/// E(P) for the patch triangles `patch`: Upper (slack added) proven when <=
+/// `giveUp` (+inf beyond it, or when there is nothing to compare), Lower
+/// attained; pieces are refined until within `enough` or 10 % of Lower, at
+/// most `budget` of them per direction (OneSidedHausdorff).
+HausdorffEstimate CertifiedMeshPatchError(const std::vector<ConvexPolygon>& surface,
+  const std::vector<SourceTriangle>& patch, const Box3& cell, double enough, double giveUp,
+  std::size_t budget = 4096);
+
+/// The subdivision's prediction E(P) + delta for a cell whose tests passed
+/// with the single loop `loops` (sub-edge crossings) on its `boundary` tiles
+/// (`cell`: its box, as the extraction computes it, so that both find the
+/// same apex);
+/// +inf when it exceeds `tolerance` or the cell is not a lone mesh leaf with
+/// one loop.
+double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSet& primitives,
+  const RootGrid& grid, const Box3& cell, const CellBoundary& boundary, const BoundaryLoopSet& loops,
+  double tolerance);
+
+} // namespace tpc

@@ -1,0 +1,68 @@
+// A certified upper bound of the one-sided Hausdorff distance between two
+// sets of convex planar polygons (issue 17: the certified error of cells
+// where a mesh is the surface, MeshCellError.h).
+//
+// h(A, B) = max over a in A of d(a, B), B = union of convex polygons Q_j.
+// Branch and bound over A's triangles (sources), which rests on two facts:
+// - d(., Q) is convex for one convex Q, so over a triangle T its maximum is at
+//   T's vertices: max over T of d(., B) <= min_j max_i d(v_i, Q_j). (1)
+//   (d(., B) itself is a minimum of convex functions and is not convex: the
+//   bound must pick one Q_j for the whole piece.)
+// - d(., B) is 1-Lipschitz, and every x = sum l_i v_i of T is within R of a
+//   vertex, R = max_i |v_i - o| for o the centroid (sum l_i |v_i - x|^2 <=
+//   sum l_i |v_i - o|^2 <= R^2, and the smallest term is below the mean):
+//   max over T of d(., B) <= max_i d(v_i, B) + R. (2)
+// A piece's upper bound is the smaller of (1) and (2); the exact distances at
+// its vertices, max_i d(v_i, B), are lower bounds of h. The largest upper
+// bound is split into four (edge midpoints) until it is within `enough`, or
+// within 10 % of the best lower bound, or the lower bound exceeds `giveUp`, or
+// the budget of pieces is spent; the largest remaining upper bound is returned
+// (always an upper bound of h, however the loop ended). A polygon Q_j whose
+// box is farther from a piece's box than the piece's upper bound cannot be the
+// nearest to any of its points and is dropped for the piece's sub-pieces.
+//
+// Distances are computed in floating point; the caller adds the rounding
+// slack (MeshCellError.h).
+#pragma once
+
+#include "Vector3.h"
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace tpc
+{
+
+/// A convex polygon in a plane (vertices in order; a segment or a point when
+/// degenerate).
+struct ConvexPolygon
+{
+  std::vector<Vec3> Points;
+  Vec3 Normal; ///< unit, from the vertex order (Newell); zero when degenerate
+  Box3 Bounds;
+};
+
+/// The polygon with `points` (convex, planar, in order) and its normal and box.
+ConvexPolygon MakeConvexPolygon(std::vector<Vec3> points);
+
+/// Distance from `p` to the segment [a, b].
+double SegmentDistance(const Vec3& p, const Vec3& a, const Vec3& b);
+
+/// Distance from `p` to the polygon (its interior included).
+double PolygonDistance(const Vec3& p, const ConvexPolygon& polygon);
+
+using SourceTriangle = std::array<Vec3, 3>;
+
+struct HausdorffEstimate
+{
+  double Upper = 0.0; ///< proven: h(sources, targets) <= Upper
+  double Lower = 0.0; ///< attained at a point of the sources
+};
+
+/// Bounds h(sources, targets) as above; Upper is +inf when there are sources
+/// but no targets.
+HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
+  const std::vector<ConvexPolygon>& targets, double enough, double giveUp, std::size_t budget = 4096);
+
+} // namespace tpc

@@ -1,0 +1,315 @@
+// The certified per-cell error where one mesh is the surface
+// (PolygonHausdorff.h, MeshCellError.h): the branch and bound's bound is at
+// least the one-sided distance measured by dense sampling, and close to it;
+// in every error-bounded mesh cell of whole runs both the subdivision's
+// prediction (made before crack patching) and the final certificate are at
+// least the two-sided distance measured by brute force between the input mesh
+// in the cell and the output; cells grow past the tolerance, and the output
+// takes far fewer triangles than before.
+#include "CoreContour.h"
+#include "ExactCellCriterion.h"
+#include "MeshBuilders.h"
+#include "MeshCellError.h"
+#include "PolygonHausdorff.h"
+#include "SceneBuilder.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+using tpc::Box3;
+using tpc::ConvexPolygon;
+using tpc::SourceTriangle;
+using tpc::Vec3;
+using tpctest::SceneBuilder;
+
+namespace
+{
+/// max over dense samples of `sources` of the distance to the nearest target
+/// (a lower estimate of h; the distance to each target from MeshSolid's own
+/// closest-point routine, independent of PolygonDistance).
+double SampledHausdorff(const std::vector<SourceTriangle>& sources, const std::vector<SourceTriangle>& targets)
+{
+  std::vector<Vec3> points;
+  tpctest::Triangles faces;
+  for (const SourceTriangle& t : targets)
+  {
+    const std::uint32_t base = static_cast<std::uint32_t>(points.size());
+    points.insert(points.end(), t.begin(), t.end());
+    faces.push_back({ base, base + 1, base + 2 });
+  }
+  const tpc::MeshSolid target(points, faces);
+  tpc::TriangleList all(faces.size());
+  for (std::uint32_t k = 0; k < all.size(); ++k)
+  {
+    all[k] = k;
+  }
+  double worst = 0.0;
+  constexpr int Steps = 40;
+  for (const SourceTriangle& s : sources)
+  {
+    for (int i = 0; i <= Steps; ++i)
+    {
+      for (int j = 0; i + j <= Steps; ++j)
+      {
+        const double a = double(i) / Steps, b = double(j) / Steps;
+        const Vec3 x = s[0] * (1 - a - b) + s[1] * a + s[2] * b;
+        worst = std::max(worst, std::fabs(target.ApproximateSignedDistance(x, all)));
+      }
+    }
+  }
+  return worst;
+}
+
+std::vector<ConvexPolygon> AsPolygons(const std::vector<SourceTriangle>& triangles)
+{
+  std::vector<ConvexPolygon> polygons;
+  for (const SourceTriangle& t : triangles)
+  {
+    polygons.push_back(tpc::MakeConvexPolygon({ t[0], t[1], t[2] }));
+  }
+  return polygons;
+}
+
+struct Measured
+{
+  std::size_t Cells = 0;          ///< mesh cells with a certified error
+  std::size_t OversizedCells = 0; ///< of those, larger than the tolerance
+  std::size_t Predicted = 0;      ///< of those, fans whose error the subdivision predicted
+  double WorstRatio = 0.0;        ///< largest measured distance / certificate
+};
+
+/// In every mesh cell with a certified error: the distance from the cell's
+/// output triangles (sampled) to the input mesh, and from points of the input
+/// mesh in the cell (sampled) to the output, are at most the cell's
+/// certificate, which is at most the subdivision's prediction (cells larger
+/// than the tolerance) or the cell's diagonal.
+Measured CheckEveryMeshCertificate(const tpctest::ContourRun& r, const tpc::MeshSolid& input)
+{
+  Measured m;
+  const tpc::AdaptiveOctree& tree = r.Subdivision.Octree;
+  const tpc::TriangleMesh& mesh = r.Extraction.Mesh;
+  const tpc::MeshSolid output(mesh.Points.ToVector(), mesh.Triangles.ToVector());
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (const auto& [n, certificate] : r.Extraction.CellErrors)
+  {
+    const tpc::OctreeNode& node = tree.Nodes[n];
+    const Box3 cell = tree.Grid.CellBox(node.Level, node.Ijk);
+    // Fans of cells larger than the tolerance: within their prediction;
+    // smaller cells: within their diagonal.
+    const auto prediction = tree.MeshCellPredictions.find(n);
+    EXPECT_LE(certificate,
+      prediction != tree.MeshCellPredictions.end() ? prediction->second : tree.Grid.CellDiagonal(node.Level));
+    m.Predicted += prediction != tree.MeshCellPredictions.end() ? 1 : 0;
+    EXPECT_LE(certificate, r.HausdorffBound * (1 + 1e-12));
+    ++m.Cells;
+    m.OversizedCells += tree.Grid.CellDiagonal(node.Level) > r.Tolerance ? 1 : 0;
+    const double allowance = certificate * (1 + 1e-9) + 1e-14;
+    Box3 near = cell;
+    for (int a = 0; a < 3; ++a)
+    {
+      near.lo[a] -= 2 * certificate;
+      near.hi[a] += 2 * certificate;
+    }
+    // Patch to surface.
+    const tpc::TriangleList inputNear = input.Overlapping(near);
+    for (std::size_t t = 0; t < mesh.Triangles.size(); ++t)
+    {
+      if (mesh.TriangleCell[t] != n)
+      {
+        continue;
+      }
+      const tpc::Triangle& tri = mesh.Triangles[t];
+      constexpr int Steps = 12;
+      for (int i = 0; i <= Steps; ++i)
+      {
+        for (int j = 0; i + j <= Steps; ++j)
+        {
+          const double a = double(i) / Steps, b = double(j) / Steps;
+          const Vec3 x = mesh.Points[tri[0]] * (1 - a - b) + mesh.Points[tri[1]] * a + mesh.Points[tri[2]] * b;
+          const double d = std::fabs(input.ApproximateSignedDistance(x, inputNear));
+          EXPECT_LE(d, allowance) << "patch point of cell " << n;
+          m.WorstRatio = std::max(m.WorstRatio, d / std::max(certificate, 1e-300));
+        }
+      }
+    }
+    // Surface to patch: points of the input's triangles inside the cell.
+    const tpc::TriangleList outputNear = output.Overlapping(near);
+    for (const std::uint32_t t : input.Overlapping(cell))
+    {
+      for (int s = 0; s < 60; ++s)
+      {
+        double a = u(rng), b = u(rng);
+        if (a + b > 1)
+        {
+          a = 1 - a;
+          b = 1 - b;
+        }
+        const Vec3 y = input.Vertex(t, 0) * (1 - a - b) + input.Vertex(t, 1) * a + input.Vertex(t, 2) * b;
+        if (!cell.Contains(y))
+        {
+          continue;
+        }
+        const double d = std::fabs(output.ApproximateSignedDistance(y, outputNear));
+        EXPECT_LE(d, allowance) << "surface point of cell " << n;
+        m.WorstRatio = std::max(m.WorstRatio, d / std::max(certificate, 1e-300));
+      }
+    }
+  }
+  return m;
+}
+} // namespace
+
+TEST(PolygonHausdorff, DistanceToAPolygonMatchesTheClosestPoint)
+{
+  // A convex pentagon in a tilted plane against MeshSolid's closest point on
+  // its fan triangles.
+  const Vec3 u = tpc::Normalized(Vec3(1, 0.2, -0.3)), n = tpc::Normalized(tpc::Cross(u, Vec3(0, 1, 0.4)));
+  const Vec3 v = tpc::Cross(n, u);
+  std::vector<Vec3> pentagon;
+  for (int k = 0; k < 5; ++k)
+  {
+    const double angle = 2 * M_PI * k / 5;
+    pentagon.push_back(Vec3(0.1, -0.2, 0.3) + u * std::cos(angle) * 0.7 + v * std::sin(angle) * 0.5);
+  }
+  const ConvexPolygon polygon = tpc::MakeConvexPolygon(pentagon);
+  const tpc::MeshSolid fan(pentagon, { { 0, 1, 2 }, { 0, 2, 3 }, { 0, 3, 4 } });
+  std::mt19937_64 rng(1);
+  std::uniform_real_distribution<double> x(-1.5, 1.5);
+  for (int s = 0; s < 2000; ++s)
+  {
+    const Vec3 p(x(rng), x(rng), x(rng));
+    EXPECT_NEAR(tpc::PolygonDistance(p, polygon), std::fabs(fan.ApproximateSignedDistance(p, { 0, 1, 2 })), 1e-12);
+  }
+  // Degenerate polygons: a segment and a point.
+  const ConvexPolygon segment = tpc::MakeConvexPolygon({ Vec3(0, 0, 0), Vec3(1, 0, 0) });
+  EXPECT_NEAR(tpc::PolygonDistance(Vec3(0.5, 2, 0), segment), 2.0, 1e-15);
+  EXPECT_NEAR(tpc::PolygonDistance(Vec3(3, 0, 4), tpc::MakeConvexPolygon({ Vec3(0, 0, 0) })), 5.0, 1e-15);
+}
+
+TEST(PolygonHausdorff, BoundsTheSampledDistanceAndStaysCloseToIt)
+{
+  // A fan of large triangles over a fine bumpy target (a height field): the
+  // distance is not at a source vertex, and the target is not convex.
+  std::vector<SourceTriangle> target, sources;
+  const auto height = [](double x, double y) { return 0.05 * std::sin(7 * x) * std::cos(5 * y); };
+  constexpr int N = 24;
+  for (int i = 0; i < N; ++i)
+  {
+    for (int j = 0; j < N; ++j)
+    {
+      const double x0 = double(i) / N, x1 = double(i + 1) / N, y0 = double(j) / N, y1 = double(j + 1) / N;
+      const Vec3 a(x0, y0, height(x0, y0)), b(x1, y0, height(x1, y0)), c(x1, y1, height(x1, y1)),
+        d(x0, y1, height(x0, y1));
+      target.push_back({ a, b, c });
+      target.push_back({ a, c, d });
+    }
+  }
+  const Vec3 apex(0.5, 0.5, 0.01);
+  const Vec3 corners[4] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 } };
+  for (int k = 0; k < 4; ++k)
+  {
+    sources.push_back({ corners[k], corners[(k + 1) % 4], apex });
+  }
+  for (const bool reversed : { false, true })
+  {
+    const auto& from = reversed ? target : sources;
+    const auto& to = reversed ? sources : target;
+    const tpc::HausdorffEstimate e = tpc::OneSidedHausdorff(from, AsPolygons(to), 0.0, HUGE_VAL, 200000);
+    const double sampled = SampledHausdorff(from, to);
+    EXPECT_GE(e.Upper, sampled * (1 - 1e-12)) << reversed;
+    EXPECT_LE(e.Lower, sampled * (1 + 1e-12)) << reversed;
+    EXPECT_LE(e.Upper, 1.1 * e.Lower * (1 + 1e-12)) << reversed;
+    EXPECT_GT(sampled, 0.04) << reversed;
+  }
+  // Stops as soon as the bound is within `enough`, and gives up beyond `giveUp`.
+  const tpc::HausdorffEstimate loose = tpc::OneSidedHausdorff(sources, AsPolygons(target), 1.0, HUGE_VAL);
+  EXPECT_LE(loose.Upper, 1.0);
+  const tpc::HausdorffEstimate hopeless = tpc::OneSidedHausdorff(sources, AsPolygons(target), 0.0, 0.01);
+  EXPECT_GT(hopeless.Lower, 0.01);
+  EXPECT_GT(hopeless.Upper, 0.01);
+}
+
+TEST(MeshCellError, ChordDeviationIsTheTraceFarthestFromTheChord)
+{
+  // A roof (two planes meeting at x = 0.5) crosses the face z = 0 of the unit
+  // cell in a bent line; the chord joins its ends on the face's sides.
+  const std::vector<Vec3> points{ { 0, -1, -1 }, { 0.5, -1, 1 }, { 0, 2, -1 }, { 0.5, 2, 1 }, { 1, -1, -1 },
+    { 1, 2, -1 } };
+  const tpc::MeshSolid roof(points, { { 0, 1, 2 }, { 2, 1, 3 }, { 1, 4, 3 }, { 3, 4, 5 } });
+  std::vector<ConvexPolygon> surface;
+  for (std::uint32_t t = 0; t < 4; ++t)
+  {
+    surface.push_back(tpc::MakeConvexPolygon({ roof.Vertex(t, 0), roof.Vertex(t, 1), roof.Vertex(t, 2) }));
+  }
+  // On y = 0 (face tile [0,1] x [0,1] in x, z): the trace is z = 4x - 1 then
+  // z = 3 - 4x, i.e. (0.25, 0) .. (0.5, 1) .. (0.75, 0).
+  const Box3 face{ { 0, 0, 0 }, { 1, 0, 1 } };
+  EXPECT_NEAR(tpc::ChordDeviation(surface, face, { 0.25, 0, 0 }, { 0.75, 0, 0 }), 1.0, 1e-12);
+  // Against the chord of the first leg, the farthest trace point is the
+  // second leg's end (0.75, 0, 0): 2 / sqrt(17) from the line of (0.25, 0, 1).
+  EXPECT_NEAR(tpc::ChordDeviation(surface, face, { 0.25, 0, 0 }, { 0.5, 0, 1 }), 2 / std::sqrt(17.0), 1e-12);
+  // The surface in a cell holding the crease, and the apex on the crease.
+  const Box3 tall{ { 0, 0, -0.5 }, { 1, 1, 1.5 } };
+  SceneBuilder b;
+  b.Finish(b.Mesh(roof));
+  const auto pruned = tpc::CsgExpression::Prune(b.Scene.Expression, tall, b.Scene.Primitives);
+  const tpc::CsgLeaf* leaf = tpc::LoneMeshLeaf(*pruned.Expression);
+  ASSERT_NE(leaf, nullptr);
+  const std::vector<ConvexPolygon> clipped = tpc::SurfaceInCell(*leaf, b.Scene.Primitives, tall);
+  for (const ConvexPolygon& q : clipped)
+  {
+    for (const Vec3& p : q.Points)
+    {
+      EXPECT_TRUE(tall.Contains(p));
+      EXPECT_NEAR(p[2], p[0] <= 0.5 ? 4 * p[0] - 1 : 3 - 4 * p[0], 1e-12);
+    }
+  }
+  const Vec3 apex = tpc::MeshCellApex(clipped, tall);
+  EXPECT_NEAR(apex[0], 0.5, 1e-9);
+  EXPECT_NEAR(apex[2], 1.0, 1e-9);
+}
+
+TEST(MeshCellError, CertificatesBoundTheMeasuredDistanceOnMeshes)
+{
+  // A subdivided icosahedron and a UV torus as meshes: every certified cell's
+  // prediction and certificate bound the brute-force distance.
+  struct Case
+  {
+    const char* Name;
+    tpc::MeshSolid Mesh;
+    int Genus;
+    double Tolerance;
+    std::size_t Before; ///< triangles with every surface cell at most the tolerance (measured at 0ae9eef)
+    std::size_t Fewer;  ///< at least this many times fewer now
+  };
+  const std::vector<Case> cases{ { "sphere", tpctest::SphereMesh({ 0.02, -0.03, 0.01 }, 0.8, 4), 0, 1.0 / 32, 6336, 10 },
+    { "torus", tpctest::TorusMesh({ 0.01, 0.02, -0.01 }, 0.6, 0.25, 96, 48), 1, 1.0 / 64, 17940, 4 } };
+  for (const Case& c : cases)
+  {
+    SceneBuilder b;
+    b.Finish(b.Mesh(c.Mesh));
+    const tpctest::ContourRun r = tpctest::Contour(b.Scene, { { -1, -1, -1 }, { 1, 1, 1 } }, c.Tolerance);
+    EXPECT_TRUE(r.Guaranteed) << c.Name;
+    EXPECT_EQ(r.Report.Components, 1) << c.Name;
+    EXPECT_EQ(r.Report.Genus, c.Genus) << c.Name;
+    EXPECT_LE(r.HausdorffBound, r.Tolerance * (1 + 1e-9)) << c.Name;
+    const Measured m = CheckEveryMeshCertificate(r, b.Scene.Primitives.Meshes[0]);
+    EXPECT_GT(m.OversizedCells, 10u) << c.Name;
+    EXPECT_EQ(m.OversizedCells, m.Predicted) << c.Name;
+    // Every surface cell is certified, or a plane section (PlanarCell.h).
+    EXPECT_EQ(m.Cells, r.Subdivision.ErrorBoundedCells) << c.Name;
+    EXPECT_EQ(m.Cells + r.Subdivision.PlanarSurfaceCells, r.Subdivision.SurfaceCells) << c.Name;
+    // The reported bound is the certificates', well below the cells' size.
+    EXPECT_LT(r.HausdorffBound, 0.75 * r.Tolerance) << c.Name;
+    EXPECT_GT(m.WorstRatio, 0.2) << c.Name; // not vacuous
+    EXPECT_LT(r.Extraction.Mesh.Triangles.size() * c.Fewer, c.Before) << c.Name;
+    std::cout << c.Name << " 1/" << 1 / c.Tolerance << ": " << r.Extraction.Mesh.Triangles.size() << " triangles, "
+              << m.Cells << " certified mesh cells (" << m.OversizedCells
+              << " larger than the tolerance), bound " << r.HausdorffBound / r.Tolerance
+              << " tolerance, worst measured/certified " << m.WorstRatio << "\n";
+  }
+}
