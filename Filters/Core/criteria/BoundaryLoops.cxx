@@ -140,11 +140,51 @@ void FaceSegments(const CellBoundary& b, int f, std::vector<Segment>& segments)
     }
     if (polygon.size() >= 3)
     {
+      const std::size_t first = segments.size();
       TileSegments(polygon, axis, plane, t, segments);
+      // A crease tile's one chord runs through the crease (CreaseCrossing.h).
+      if (k < b.Creases[f].size() && b.Creases[f][k] && segments.size() == first + 1 &&
+        segments[first].first.Kind != CrossingKind::Bend && segments[first].second.Kind != CrossingKind::Bend)
+      {
+        const Crossing out = segments[first].second;
+        segments[first].second = *b.Creases[f][k];
+        segments.emplace_back(*b.Creases[f][k], out);
+      }
     }
   }
 }
 } // namespace
+
+unsigned CrossingFaces(const Crossing& c, const LatticeIndex base[3], LatticeIndex size)
+{
+  if (c.Kind == CrossingKind::Bend)
+  {
+    return 0x3F;
+  }
+  if (c.Kind == CrossingKind::MeshEdge)
+  {
+    const int axis = PlaneAxis(c.Key);
+    const LatticeIndex plane = PlaneCoordinate(c.Key);
+    return (plane == base[axis] ? 1u : 0u) << (2 * axis) | (plane == base[axis] + size ? 1u : 0u) << (2 * axis + 1);
+  }
+  if (c.Kind == CrossingKind::MeshVertex)
+  {
+    return 0; // inside an exact cell
+  }
+  LatticeIndex p[3];
+  SplitPointKey(PointOf(c.Key), p);
+  const int along = AxisOf(c.Key);
+  unsigned mask = 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    if (a != along)
+    {
+      mask |= (p[a] == base[a] ? 1u : 0u) << (2 * a);
+      mask |= (p[a] == base[a] + size ? 1u : 0u) << (2 * a + 1);
+    }
+  }
+  return mask;
+}
 
 BoundaryLoopSet TraceBoundaryLoops(CellBoundary& b)
 {

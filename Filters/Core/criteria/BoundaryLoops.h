@@ -18,6 +18,7 @@
 #include "RootGrid.h"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace tpc
@@ -108,6 +109,9 @@ struct CellBoundary
   /// 0 (or empty) where they come from the samples.
   std::vector<std::uint8_t> ExactTile[6];
   std::vector<std::pair<Crossing, Crossing>> ExactSegments;
+  /// Per tile of face f (or empty): the crossing of a mesh crease that the
+  /// tile's chord is drawn through (CreaseCrossing.h), where it has one.
+  std::vector<std::optional<Crossing>> Creases[6];
 };
 
 struct BoundaryLoopSet
@@ -118,5 +122,11 @@ struct BoundaryLoopSet
 };
 
 BoundaryLoopSet TraceBoundaryLoops(CellBoundary& boundary);
+
+/// Faces of the cell with low corner `base` and edge `size` (lattice units)
+/// that a loop's crossing lies on: bit f (CubeTopology.h numbering); all six
+/// for a bend (never a fan point), none for a mesh vertex inside an exact
+/// cell.
+unsigned CrossingFaces(const Crossing& c, const LatticeIndex base[3], LatticeIndex size);
 
 } // namespace tpc

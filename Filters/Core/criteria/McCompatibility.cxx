@@ -2,6 +2,7 @@
 
 #include "BoundaryLoops.h"
 #include "ComplexCellCriterion.h"
+#include "CreaseCrossing.h"
 #include "ExactCellCriterion.h"
 #include "FaceRefinement.h"
 #include "MeshCellError.h"
@@ -141,7 +142,16 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   }
   if (meshBounded)
   {
-    v.PredictedError = PredictedMeshCellError(*expression, prims, grid, box, boundary, loops, tolerance);
+    // In a scene of one mesh every cell draws crease tiles through their
+    // crease (CreaseCrossing.h), so the loop the prediction starts from may
+    // too: the final loop follows the same trace there.
+    const bool creases = IsOneMesh(*tree.SceneExpression);
+    if (creases)
+    {
+      MarkCreaseTiles(boundary, *LoneMeshLeaf(*expression), prims, grid, [](int, std::size_t) { return true; });
+    }
+    v.PredictedError = PredictedMeshCellError(*expression, prims, grid, box, boundary,
+      creases ? TraceBoundaryLoops(boundary) : loops, tolerance);
     v.ErrorBounded = v.MeshSurface = v.PredictedError <= tolerance;
     if (!v.ErrorBounded)
     {

@@ -1,7 +1,9 @@
 #include "MeshCellError.h"
 
+#include "CreaseCrossing.h"
 #include "EdgeCrossings.h"
 #include "ExactCellCriterion.h"
+#include "MeshArrangement.h"
 #include "MeshSolid.h"
 #include "SymmetricEigen.h"
 
@@ -79,27 +81,11 @@ double RoundingSlack(const Box3& cell)
   return 4096.0 * DBL_EPSILON * magnitude + 1e-12 * cell.Diagonal();
 }
 
-/// The face of the cell (CubeTopology.h numbering) holding both sub-edge
-/// crossings, or -1.
+/// The face of the cell holding both crossings, or -1.
 int CommonFace(const Crossing& p, const Crossing& q, const CellBoundary& boundary)
 {
-  unsigned mask[2] = { 0, 0 };
-  const Crossing* both[2] = { &p, &q };
-  for (int k = 0; k < 2; ++k)
-  {
-    LatticeIndex x[3];
-    SplitPointKey(PointOf(both[k]->Key), x);
-    const int along = AxisOf(both[k]->Key);
-    for (int a = 0; a < 3; ++a)
-    {
-      if (a != along)
-      {
-        mask[k] |= (x[a] == boundary.Base[a] ? 1u : 0u) << (2 * a);
-        mask[k] |= (x[a] == boundary.Base[a] + boundary.Size ? 1u : 0u) << (2 * a + 1);
-      }
-    }
-  }
-  const unsigned common = mask[0] & mask[1];
+  const unsigned common =
+    CrossingFaces(p, boundary.Base, boundary.Size) & CrossingFaces(q, boundary.Base, boundary.Size);
   for (int f = 0; f < 6; ++f)
   {
     if (common & (1u << f))
@@ -108,6 +94,33 @@ int CommonFace(const Crossing& p, const Crossing& q, const CellBoundary& boundar
     }
   }
   return -1;
+}
+
+/// delta of the chord from loop point `end` to the crease x of a crease
+/// tile: the farthest the trace's half ending at `end` strays from it (the
+/// final loop's points between them lie on that half, CreaseCrossing.h);
+/// +inf when it is not clear which half ends there (`end` lies on the last
+/// segment of its half, up to rounding, and far from the other's).
+double CreaseChordDeviation(const CreaseTile& crease, const Vec3& end)
+{
+  double exitDistance[2];
+  for (int s = 0; s < 2; ++s)
+  {
+    const std::vector<Vec3>& half = crease.Sides[s];
+    const Vec3& last = half.size() > 1 ? half[half.size() - 2] : crease.Position;
+    exitDistance[s] = SegmentDistance(end, last, half.back());
+  }
+  const int s = exitDistance[0] <= exitDistance[1] ? 0 : 1;
+  if (!(exitDistance[1 - s] > 1e3 * exitDistance[s]))
+  {
+    return HUGE_VAL;
+  }
+  double deviation = 0.0;
+  for (std::size_t k = 0; k + 1 < crease.Sides[s].size(); ++k)
+  {
+    deviation = std::max(deviation, SegmentDistance(crease.Sides[s][k], end, crease.Position));
+  }
+  return deviation;
 }
 
 /// The box of tile t of face f.
@@ -246,15 +259,26 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
   const std::vector<Crossing>& loop = loops.Crossings;
   const std::size_t m = loop.size();
   std::vector<Vec3> points(m);
+  const MeshArrangement arrangement(primitives.Meshes[leaf->Primitive], grid);
   for (std::size_t k = 0; k < m; ++k)
   {
-    if (loop[k].Kind != CrossingKind::SubEdge)
+    const Crossing& c = loop[k];
+    if (c.Kind == CrossingKind::MeshEdge)
+    {
+      points[k] = arrangement.Position(ArrangementPoint::EdgeOnPlane(static_cast<std::uint32_t>(c.Partner >> 32),
+        static_cast<std::uint32_t>(c.Partner & 0xFFFFFFFFu), PlaneAxis(c.Key), PlaneCoordinate(c.Key)));
+    }
+    else if (c.Kind == CrossingKind::SubEdge)
+    {
+      points[k] = PlaceSubEdgeCrossing(c, grid, expression, primitives);
+    }
+    else
     {
       return HUGE_VAL;
     }
-    points[k] = PlaceSubEdgeCrossing(loop[k], grid, expression, primitives);
   }
-  // delta: each chord against the trace on the tile holding its midpoint.
+  // delta: each chord against the trace on the tile holding its midpoint;
+  // none on a crease tile's two chords (the final loop follows its trace).
   double delta = 0.0;
   for (std::size_t k = 0; k < m && delta <= tolerance; ++k)
   {
@@ -269,11 +293,23 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
     for (const FaceTile& t : boundary.Tiles[f])
     {
       const Box3 tile = TileBox(grid, boundary, f, t);
-      if (tile.Contains(middle))
+      if (!tile.Contains(middle))
+      {
+        continue;
+      }
+      const bool fromCrease = loop[k].Kind == CrossingKind::MeshEdge;
+      if (fromCrease || loop[(k + 1) % m].Kind == CrossingKind::MeshEdge)
+      {
+        const int axis = f / 2;
+        const auto crease = CreaseOnTile(*leaf, primitives, grid, axis,
+          boundary.Base[axis] + (f % 2 ? boundary.Size : 0), t);
+        chord = crease ? CreaseChordDeviation(*crease, fromCrease ? b : a) : HUGE_VAL;
+      }
+      else
       {
         chord = ChordDeviation(surface, tile, a, b);
-        break;
       }
+      break;
     }
     delta = std::max(delta, chord);
   }

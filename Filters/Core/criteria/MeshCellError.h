@@ -39,6 +39,18 @@
 //   onto u; then |w - u| is w's distance to the line, which is its distance
 //   to the segment (the projection u lies in it), <= delta. x = c + s (w - c)
 //   is in P' and |x - x'| <= delta.
+// Crease tiles (CreaseCrossing.h). In a scene of one mesh every cell meeting
+// the surface is a cell of that mesh (or an exact cell, which draws the
+// whole trace), so a tile whose chord the cell's own loop draws through a
+// crease vertex x is drawn through x in the final loop too, and the final
+// points between a and x lie on the trace's half from x to a (every sub-tile
+// holding x is a crease tile, every other one holds none). The argument above
+// holds for the chord [a, x] with delta taken over that half only (walked
+// edge by edge; the largest distance of its vertices to [a, x], the half
+// being straight between them), and likewise for [x, b]. (In other scenes
+// the cell's own loop keeps the chord ab; a final loop through x is still a
+// polyline on S ∩ t, which delta covers.)
+//
 // So a cell is accepted when E(P) + delta <= the tolerance, and the final
 // patch is certified again on its own (usually tighter: its loop follows S
 // closer); the filter reports the smaller of the two.
@@ -88,7 +100,8 @@ HausdorffEstimate CertifiedMeshPatchError(const std::vector<ConvexPolygon>& surf
   std::size_t budget = 4096);
 
 /// The subdivision's prediction E(P) + delta for a cell whose tests passed
-/// with the single loop `loops` (sub-edge crossings) on its `boundary` tiles
+/// with the single loop `loops` (sub-edge crossings, and crease crossings in
+/// a scene of one mesh) on its `boundary` tiles
 /// (`cell`: its box, as the extraction computes it, so that both find the
 /// same apex);
 /// +inf when it exceeds `tolerance` or the cell is not a lone mesh leaf with

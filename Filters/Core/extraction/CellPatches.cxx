@@ -12,39 +12,6 @@ namespace
 /// The per-cell loop runs in chunks reporting progress.
 constexpr std::size_t Chunk = 8192;
 
-/// Faces of the cell (bit f, CubeTopology.h numbering) that a loop's crossing
-/// lies on; all six for a bend (never a fan point).
-unsigned FacesOf(const Crossing& c, const LatticeIndex base[3], LatticeIndex size)
-{
-  if (c.Kind == CrossingKind::Bend)
-  {
-    return 0x3F;
-  }
-  if (c.Kind == CrossingKind::MeshEdge)
-  {
-    const int axis = PlaneAxis(c.Key);
-    const LatticeIndex plane = PlaneCoordinate(c.Key);
-    return (plane == base[axis] ? 1u : 0u) << (2 * axis) | (plane == base[axis] + size ? 1u : 0u) << (2 * axis + 1);
-  }
-  if (c.Kind == CrossingKind::MeshVertex)
-  {
-    return 0; // inside an exact cell
-  }
-  LatticeIndex p[3];
-  SplitPointKey(PointOf(c.Key), p);
-  const int along = AxisOf(c.Key);
-  unsigned mask = 0;
-  for (int a = 0; a < 3; ++a)
-  {
-    if (a != along)
-    {
-      mask |= (p[a] == base[a] ? 1u : 0u) << (2 * a);
-      mask |= (p[a] == base[a] + size ? 1u : 0u) << (2 * a + 1);
-    }
-  }
-  return mask;
-}
-
 /// Cell i's apexes and triangles written at their offsets, apex normals
 /// summed over the cell's triangles in order (an apex is in its own cell's
 /// triangles only).
@@ -100,7 +67,7 @@ void TriangulateCell(const BoundaryLoopSet& loops, const OctreeNode& node, const
       const Crossing& c = loops.Crossings[offset + k];
       const std::uint32_t id = vertices.IdOf(c);
       ids.back().push_back(id);
-      points.back().push_back({ mesh.Points[id], mesh.Normals[id], FacesOf(c, base, size) });
+      points.back().push_back({ mesh.Points[id], mesh.Normals[id], CrossingFaces(c, base, size) });
       for (int a = 0; a < 3; ++a)
       {
         b.lo[a] = std::min(b.lo[a], mesh.Points[id][a]);

@@ -1,5 +1,7 @@
 #include "CrackPatching.h"
 
+#include "CreaseCrossing.h"
+
 #include "ExactCell.h"
 
 namespace tpc
@@ -247,6 +249,23 @@ BoundaryLoopSet CellLoops(const AdaptiveOctree& tree, std::uint32_t cell, const 
     }
   }
   AddExactTileSegments(boundary, exact, prims, tree.Grid);
+  // Crease tiles between two cells of the same lone mesh leaf, neither exact
+  // (CreaseCrossing.h): both sides decide alike.
+  if (const CsgLeaf* mine = LoneMeshLeaf(*tree.Expressions[cell]))
+  {
+    MarkCreaseTiles(boundary, *mine, prims, tree.Grid, [&](int f, std::size_t k) {
+      const std::int64_t across = boundary.Across[f][k];
+      if (across < 0 || (k < boundary.ExactTile[f].size() && boundary.ExactTile[f][k]))
+      {
+        return false;
+      }
+      const std::size_t other = static_cast<std::size_t>(across);
+      const CsgLeaf* theirs = tree.Nodes[other].State != CellState::Exact && tree.Expressions[other]
+        ? LoneMeshLeaf(*tree.Expressions[other])
+        : nullptr;
+      return theirs && theirs->Primitive == mine->Primitive;
+    });
+  }
   return TraceBoundaryLoops(boundary);
 }
 

@@ -12,7 +12,9 @@
 // lattice sub-edge holding it, so no crack can appear and every edge of the
 // output has exactly two triangles - whether or not the cell passed the
 // tests. A tile shared with an exact cell carries the mesh's exact trace
-// instead of its sampled chord (ExactCell.h).
+// instead of its sampled chord (ExactCell.h); a crease tile shared by two
+// cells of the same mesh, its chord bent through the crease's crossing
+// (CreaseCrossing.h).
 #pragma once
 
 #include "AdaptiveOctree.h"

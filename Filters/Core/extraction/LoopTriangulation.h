@@ -10,7 +10,11 @@
 // strictly inside its own lattice sub-edge (CrossingVertices.h places them so,
 // exactly on the sub-edge's line), a tile of a cell that passed the tests
 // holds one chord (MC-compatible tiles; BoundaryLoops.h), and a chord touches
-// its tile's boundary only at its ends. Three triangulations of a simple L
+// its tile's boundary only at its ends. (A crease tile, CreaseCrossing.h,
+// holds its chord bent at the crease's crossing x: segments a -> x -> b with
+// a and b on the tile's boundary and x strictly inside the tile, so they
+// meet only at x and touch the boundary at a and b only.) Three
+// triangulations of a simple L
 // are embedded discs that meet the boundary of C in L only:
 //
 // 1. ApexFan: the triangles (p_k, p_k+1, c) around an apex c strictly inside

@@ -140,7 +140,8 @@ std::vector<ConvexPolygon> MeshInCell(const AdaptiveOctree& tree, std::uint32_t 
 /// its patch's and the mesh's triangles); RefineMeshCertificates refines the
 /// ones that matter.
 CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t n, const BoundaryLoopSet& loops,
-  const PrimitiveSet& prims, const CrossingVertices& vertices, const TriangleMesh& mesh, CellPatches& patches)
+  const PrimitiveSet& prims, const CrossingVertices& vertices, const TriangleMesh& mesh, bool predictionsHold,
+  CellPatches& patches)
 {
   const OctreeNode& node = tree.Nodes[n];
   const CsgExpression& expression = *tree.Expressions[n];
@@ -155,13 +156,12 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
     {
       // Larger than the tolerance: the fan around the apex the prediction
       // was made with. The prediction holds when the final loop refines the
-      // cell's own, its points on the surface (no bend of a neighbour
-      // stopped by a limit); the patch is certified on its own anyway.
+      // cell's own, its points on the surface's trace in the same tiles
+      // (no cell was stopped by a limit: its tiles may hold bends or two
+      // chords); the patch is certified on its own anyway.
       const Vec3 apex = MeshCellApex(surface, box);
       TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches, nullptr, &apex);
-      const bool refined = loops.Consistent && loops.LoopSizes.size() == 1 &&
-        std::none_of(loops.Crossings.begin(), loops.Crossings.end(),
-          [](const Crossing& c) { return c.Kind == CrossingKind::Bend; });
+      const bool refined = predictionsHold && loops.Consistent && loops.LoopSizes.size() == 1;
       certificate.Bound = refined ? prediction->second : HUGE_VAL;
     }
     else
@@ -265,6 +265,8 @@ ExtractionResult ExtractSurface(const AdaptiveOctree& tree, const ImplicitScene&
   // Pass 3: each own cell's patches, and the error-bounded cells' errors.
   std::vector<CellPatches> patches(cells.size());
   std::vector<CellCertificate> certificates(cells.size());
+  const bool predictionsHold = std::none_of(cells.begin(), cells.end(),
+    [&](std::uint32_t n) { return tree.Nodes[n].State == CellState::Unresolved; });
   if (!ChunkedFor(cells.size(), Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i)
         {
@@ -274,7 +276,8 @@ ExtractionResult ExtractSurface(const AdaptiveOctree& tree, const ImplicitScene&
           }
           else if (own[i])
           {
-            certificates[i] = TriangulateSurfaceCell(tree, cells[i], loops[i], prims, vertices, mesh, patches[i]);
+            certificates[i] =
+              TriangulateSurfaceCell(tree, cells[i], loops[i], prims, vertices, mesh, predictionsHold, patches[i]);
           }
         }
       }, ProgressRange(progress, 0.7, 0.9)) ||

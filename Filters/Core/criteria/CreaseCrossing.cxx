@@ -1,0 +1,152 @@
+#include "CreaseCrossing.h"
+
+#include "MeshArrangement.h"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+#include <vector>
+
+namespace tpc
+{
+namespace
+{
+/// A triangle edge crossing the open tile: its vertices (smaller first), the
+/// triangle and the triangle's third vertex.
+struct EdgeUseOnTile
+{
+  std::uint32_t A = 0, B = 0, Triangle = 0, Opposite = 0;
+  bool operator<(const EdgeUseOnTile& o) const { return std::tie(A, B, Triangle) < std::tie(o.A, o.B, o.Triangle); }
+};
+
+/// Whether the mesh's crossing X of the plane x_axis = plane through edge
+/// (a, b) lies in the open tile (exact, MeshArrangement.h).
+bool InsideTile(const MeshArrangement& arrangement, const ArrangementPoint& x, int axis, const FaceTile& tile)
+{
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  return arrangement.Side(x, u, tile.U0) > 0 && arrangement.Side(x, u, tile.U1) < 0 &&
+    arrangement.Side(x, v, tile.V0) > 0 && arrangement.Side(x, v, tile.V1) < 0;
+}
+
+/// The edges of `triangles` crossing the open tile, each use once.
+std::vector<EdgeUseOnTile> EdgesOnTile(const MeshArrangement& arrangement, const TriangleList& triangles, int axis,
+  LatticeIndex plane, const FaceTile& tile)
+{
+  const MeshSolid& mesh = arrangement.Mesh();
+  std::vector<EdgeUseOnTile> uses;
+  for (const std::uint32_t t : triangles)
+  {
+    const auto& ids = mesh.Triangles()[t];
+    int side[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      side[k] = arrangement.Side(ArrangementPoint::Vertex(ids[k]), axis, plane);
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::uint32_t a = ids[k], b = ids[(k + 1) % 3];
+      if (side[k] != side[(k + 1) % 3] &&
+        InsideTile(arrangement, ArrangementPoint::EdgeOnPlane(a, b, axis, plane), axis, tile))
+      {
+        uses.push_back({ std::min(a, b), std::max(a, b), t, ids[(k + 2) % 3] });
+      }
+    }
+  }
+  std::sort(uses.begin(), uses.end());
+  return uses;
+}
+
+/// The two triangles of each edge crossing the tile, or empty when an edge
+/// has not exactly two there (then no crease tile).
+bool Paired(const std::vector<EdgeUseOnTile>& uses)
+{
+  for (std::size_t i = 0; i < uses.size(); i += 2)
+  {
+    if (i + 1 >= uses.size() || uses[i + 1].A != uses[i].A || uses[i + 1].B != uses[i].B ||
+      (i + 2 < uses.size() && uses[i + 2].A == uses[i].A && uses[i + 2].B == uses[i].B))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// The trace from the crease edge `start` through triangle `triangle`: the
+/// crossings of the edges it passes inside the tile, then the crossing of the
+/// edge where it leaves the tile (outside it).
+std::vector<Vec3> WalkTrace(const MeshArrangement& arrangement, const std::vector<EdgeUseOnTile>& uses,
+  std::uint32_t triangle, std::uint32_t a, std::uint32_t b, int axis, LatticeIndex plane)
+{
+  const MeshSolid& mesh = arrangement.Mesh();
+  std::vector<Vec3> trace;
+  for (std::size_t step = 0; step <= uses.size(); ++step)
+  {
+    // The triangle's other edge crossing the plane: from its third vertex
+    // to whichever of a, b lies on the other side.
+    const auto& ids = mesh.Triangles()[triangle];
+    std::uint32_t c = ids[0];
+    for (const std::uint32_t id : ids)
+    {
+      c = id != a && id != b ? id : c;
+    }
+    const int sideC = arrangement.Side(ArrangementPoint::Vertex(c), axis, plane);
+    const std::uint32_t d = arrangement.Side(ArrangementPoint::Vertex(a), axis, plane) != sideC ? a : b;
+    const std::uint32_t lo = std::min(c, d), hi = std::max(c, d);
+    trace.push_back(arrangement.Position(ArrangementPoint::EdgeOnPlane(lo, hi, axis, plane)));
+    const auto next = std::find_if(uses.begin(), uses.end(),
+      [&](const EdgeUseOnTile& u) { return u.A == lo && u.B == hi && u.Triangle != triangle; });
+    if (next == uses.end())
+    {
+      return trace; // left the tile
+    }
+    triangle = next->Triangle;
+    a = lo;
+    b = hi;
+  }
+  return {}; // (a cycle: not a tile's arc)
+}
+} // namespace
+
+std::optional<CreaseTile> CreaseOnTile(const CsgLeaf& leaf, const PrimitiveSet& primitives, const RootGrid& grid,
+  int axis, LatticeIndex plane, const FaceTile& tile)
+{
+  const MeshSolid& mesh = primitives.Meshes[leaf.Primitive];
+  const MeshArrangement arrangement(mesh, grid);
+  const std::vector<EdgeUseOnTile> uses = EdgesOnTile(arrangement, *leaf.Triangles, axis, plane, tile);
+  if (!Paired(uses))
+  {
+    return std::nullopt;
+  }
+  const double creaseCosine = std::cos(CreaseAngleDegrees * M_PI / 180.0);
+  const double gentleCosine = std::cos(GentleAngleDegrees * M_PI / 180.0);
+  std::optional<CreaseTile> crease;
+  for (std::size_t i = 0; i < uses.size(); i += 2)
+  {
+    const EdgeUseOnTile &p = uses[i], &q = uses[i + 1];
+    const double cosine = Dot(mesh.Normal(p.Triangle), mesh.Normal(q.Triangle));
+    if (cosine >= gentleCosine)
+    {
+      continue; // a gentle bend of the trace
+    }
+    if (cosine > creaseCosine || crease)
+    {
+      return std::nullopt; // a bend between gentle and a crease, or a second crease
+    }
+    CreaseTile found;
+    found.X.Kind = CrossingKind::MeshEdge;
+    found.X.Key = PlaneKey(axis, plane);
+    found.X.Tile = leaf.Primitive;
+    found.X.Partner = (static_cast<std::uint64_t>(p.A) << 32) | p.B;
+    found.Position = arrangement.Position(ArrangementPoint::EdgeOnPlane(p.A, p.B, axis, plane));
+    found.Sides[0] = WalkTrace(arrangement, uses, p.Triangle, p.A, p.B, axis, plane);
+    found.Sides[1] = WalkTrace(arrangement, uses, q.Triangle, p.A, p.B, axis, plane);
+    if (found.Sides[0].empty() || found.Sides[1].empty())
+    {
+      return std::nullopt;
+    }
+    crease = std::move(found);
+  }
+  return crease;
+}
+
+} // namespace tpc

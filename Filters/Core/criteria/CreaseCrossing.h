@@ -1,0 +1,91 @@
+// Creases of an input mesh as polylines of the output (issue 17).
+//
+// A loop draws one chord across each face tile, so where a crease of the
+// mesh (an edge between triangles meeting at 30 degrees or more) crosses a
+// tile the chord cuts the crease's corner, and the output's crease is a
+// saw-tooth of tilted triangles. A crease tile is drawn through the crease's
+// crossing instead: the chord a -> b becomes a -> x -> b, x where the crease
+// edge meets the tile's plane (named and placed as exact cells name and
+// place it, MeshArrangement.h), so the fans on both sides of the face have x
+// as a vertex and the crease runs through the output's edges.
+//
+// A tile is a crease tile when exactly one of the mesh's edges crossing the
+// open tile is a crease and the others are gentle (their triangles meet at
+// less than GentleAngleDegrees: a CAD part's faces, flat or finely
+// tessellated; a scanned surface's sharp-looking edges, which are noise,
+// seldom qualify). The trace ends at the chord's ends a and b (the tile passed the
+// face tests: one arc), so a -> x -> b follows it, within how far its two
+// halves stray from the two chords (MeshCellError.h bounds that from the
+// halves, which CreaseOnTile walks). Every sub-tile of a crease tile holding
+// x is a crease tile too (the same edges, fewer of them), and one without x
+// holds no crease: however crack patching refines a crease tile, the final
+// loop runs through x and stays on the trace's halves.
+//
+// Both cells sharing a tile must draw it alike: each decides from the tile
+// and the mesh alone, with exact side tests on the mesh's perturbed solid
+// (MeshArrangement.h); every triangle meeting the tile is in both cells'
+// triangle lists. The extraction draws crease tiles between two cells of
+// the same lone mesh leaf that are not exact (CrackPatching.h); an exact
+// neighbour draws the whole trace, a polyline through x on the same halves.
+#pragma once
+
+#include "BoundaryLoops.h"
+#include "CsgExpression.h"
+
+#include <optional>
+#include <vector>
+
+namespace tpc
+{
+
+/// The angle between two triangles' normals from which their common edge is
+/// a crease (the usual feature angle of vtkFeatureEdges and CAD viewers).
+constexpr double CreaseAngleDegrees = 30.0;
+/// The largest angle between two triangles' normals at the other edges a
+/// crease tile's trace crosses (flat or nearly: the faces of a CAD part, not
+/// a scanned surface, whose sharp-looking edges are noise).
+constexpr double GentleAngleDegrees = 10.0;
+
+/// A crease tile: the crease's crossing x (named as exact cells name it) and
+/// its position, and the trace's two halves from x: the mesh edges' crossings
+/// inside the tile, in order, then the crossing just outside it (the half's
+/// last segment leaves the tile through a or b).
+struct CreaseTile
+{
+  Crossing X;
+  Vec3 Position;
+  std::vector<Vec3> Sides[2];
+};
+
+/// Tile `tile` of the lattice plane x_axis = `plane` as a crease tile of the
+/// mesh of `leaf` (its triangle list holds every triangle meeting the tile);
+/// nothing when it is not one.
+std::optional<CreaseTile> CreaseOnTile(const CsgLeaf& leaf, const PrimitiveSet& primitives, const RootGrid& grid,
+  int axis, LatticeIndex plane, const FaceTile& tile);
+
+/// Marks the crease tiles of every face of `boundary` (a cell of the mesh of
+/// `leaf`) in boundary.Creases, where `draws(f, k)` says that tile k of face
+/// f may be drawn so (both cells sharing it agree).
+template <typename Draws>
+void MarkCreaseTiles(CellBoundary& boundary, const CsgLeaf& leaf, const PrimitiveSet& primitives,
+  const RootGrid& grid, const Draws& draws)
+{
+  for (int f = 0; f < 6; ++f)
+  {
+    const int axis = f / 2;
+    const LatticeIndex plane = boundary.Base[axis] + (f % 2 ? boundary.Size : 0);
+    boundary.Creases[f].assign(boundary.Tiles[f].size(), std::nullopt);
+    for (std::size_t k = 0; k < boundary.Tiles[f].size(); ++k)
+    {
+      if (draws(f, k))
+      {
+        if (const auto crease = CreaseOnTile(leaf, primitives, grid, axis, plane, boundary.Tiles[f][k]))
+        {
+          boundary.Creases[f][k] = crease->X;
+        }
+      }
+    }
+  }
+}
+
+} // namespace tpc

@@ -1,0 +1,215 @@
+// Creases of a mesh as polylines of the output (CreaseCrossing.h): which
+// face tiles are crease tiles, where their crossing lies, the trace's two
+// halves; and on a whole run, the creases of a tilted cube followed by
+// output edges lying on them.
+#include "CoreContour.h"
+#include "CreaseCrossing.h"
+#include "ExactCellCriterion.h"
+#include "MeshBuilders.h"
+#include "SceneBuilder.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+using tpc::Vec3;
+using tpctest::SceneBuilder;
+
+namespace
+{
+/// A closed "tent": a prism lying along y whose ridge (x = 0.5, z = `height`)
+/// is a crease; its left roof is gently bent by `bend` at x = 0.25; every
+/// quad is split by a diagonal (a flat edge).
+tpc::MeshSolid Tent(double height, double bend)
+{
+  // Cross-section (x, z): (-0.2, -0.3) -> (0.25, h/2 + bend) -> (0.5, h) ->
+  // (1.2, -0.3).
+  const std::vector<std::array<double, 2>> section{ { -0.2, -0.3 }, { 0.25, 0.5 * height + bend }, { 0.5, height },
+    { 1.2, -0.3 } };
+  std::vector<Vec3> p;
+  for (const double y : { -0.5, 1.5 })
+  {
+    for (const auto& s : section)
+    {
+      p.push_back({ s[0], y, s[1] });
+    }
+  }
+  // Vertices 0..3 at y = -0.5, 4..7 at y = 1.5; roof quads (k, k+1) and the
+  // bottom (3, 0), both ends capped.
+  tpctest::Triangles t;
+  for (std::uint32_t k = 0; k < 4; ++k)
+  {
+    const std::uint32_t a = k, b = (k + 1) % 4;
+    t.push_back({ a, b + 4, b });
+    t.push_back({ a, a + 4, b + 4 });
+  }
+  t.push_back({ 0, 1, 2 });
+  t.push_back({ 0, 2, 3 });
+  t.push_back({ 4, 6, 5 });
+  t.push_back({ 4, 7, 6 });
+  return tpc::MeshSolid(p, t);
+}
+
+struct Edge
+{
+  Vec3 A, B;
+};
+
+/// The output's edges whose two triangles' normals differ by at least the
+/// crease angle.
+std::vector<Edge> FeatureEdges(const tpc::TriangleMesh& mesh)
+{
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<Vec3>> normals;
+  for (const tpc::Triangle& t : mesh.Triangles)
+  {
+    const Vec3 n = tpc::Normalized(
+      tpc::Cross(mesh.Points[t[1]] - mesh.Points[t[0]], mesh.Points[t[2]] - mesh.Points[t[0]]));
+    for (int k = 0; k < 3; ++k)
+    {
+      normals[{ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) }].push_back(n);
+    }
+  }
+  std::vector<Edge> edges;
+  const double cosine = std::cos(tpc::CreaseAngleDegrees * M_PI / 180.0);
+  for (const auto& [e, n] : normals)
+  {
+    if (n.size() == 2 && tpc::Dot(n[0], n[1]) <= cosine)
+    {
+      edges.push_back({ mesh.Points[e.first], mesh.Points[e.second] });
+    }
+  }
+  return edges;
+}
+
+double SegmentDistance(const Vec3& p, const Vec3& a, const Vec3& b)
+{
+  const Vec3 ab = b - a;
+  const double t = std::clamp(tpc::Dot(p - a, ab) / tpc::Dot(ab, ab), 0.0, 1.0);
+  return tpc::Norm(p - (a + ab * t));
+}
+} // namespace
+
+TEST(CreaseCrossing, CreaseTilesAndTheirTraceHalves)
+{
+  SceneBuilder b;
+  b.Finish(b.Mesh(Tent(0.8, 0.02)));
+  // Lattice spacing 1/128 over [-1, 1]^3.
+  const tpc::RootGrid grid = tpctest::SingleRoot({ -1, -1, -1 }, 2.0, 8);
+  const auto leafOf = [&](const tpc::Box3& box) {
+    return tpc::CsgExpression::Prune(b.Scene.Expression, box, b.Scene.Primitives).Expression;
+  };
+  const auto lattice = [](double x) { return static_cast<tpc::LatticeIndex>(std::llround((x + 1) * 128)); };
+  // The face y = 0.5 (axis 1), tile x in [0.4375, 0.5625], z in [0.5,
+  // 0.875]: the ridge crosses it at (0.5, 0.5, 0.8), no other edge does.
+  const int axis = 1;
+  const tpc::LatticeIndex plane = lattice(0.5);
+  tpc::FaceTile tile; // (u = z, v = x for axis 1)
+  tile.U0 = lattice(0.5);
+  tile.U1 = lattice(0.875);
+  tile.V0 = lattice(0.4375);
+  tile.V1 = lattice(0.5625);
+  const auto pruned = leafOf({ { -1, -1, -1 }, { 1, 1, 1 } });
+  const tpc::CsgLeaf* leaf = tpc::LoneMeshLeaf(*pruned);
+  ASSERT_NE(leaf, nullptr);
+  const auto crease = tpc::CreaseOnTile(*leaf, b.Scene.Primitives, grid, axis, plane, tile);
+  ASSERT_TRUE(crease.has_value());
+  EXPECT_EQ(crease->X.Kind, tpc::CrossingKind::MeshEdge);
+  EXPECT_NEAR(crease->Position[0], 0.5, 1e-12);
+  EXPECT_NEAR(crease->Position[2], 0.8, 1e-12);
+  // Each half leaves the tile at once (no other edge inside): its only point
+  // is where the roof's quad diagonal next to the ridge meets the plane,
+  // outside the tile.
+  for (const auto& half : crease->Sides)
+  {
+    ASSERT_EQ(half.size(), 1u);
+    EXPECT_FALSE(half[0][0] > 0.4375 && half[0][0] < 0.5625 && half[0][2] > 0.5 && half[0][2] < 0.875);
+  }
+  // A wider tile, x in [0.125, 0.5625], z in [0, 0.875], also holds the
+  // flat diagonal at x = 0.375 and the gentle bend at x = 0.25: still a
+  // crease tile, its left half passing both before it leaves.
+  tile.V0 = lattice(0.125);
+  tile.U0 = lattice(0.0);
+  const auto wide = tpc::CreaseOnTile(*leaf, b.Scene.Primitives, grid, axis, plane, tile);
+  ASSERT_TRUE(wide.has_value());
+  EXPECT_EQ(std::max(wide->Sides[0].size(), wide->Sides[1].size()), 3u);
+  EXPECT_EQ(std::min(wide->Sides[0].size(), wide->Sides[1].size()), 1u);
+  // A tile away from the ridge holds no crease.
+  tile.V1 = lattice(0.375);
+  EXPECT_FALSE(tpc::CreaseOnTile(*leaf, b.Scene.Primitives, grid, axis, plane, tile).has_value());
+}
+
+TEST(CreaseCrossing, TiltedCubesEdgesRunAlongOutputEdges)
+{
+  // A cube tilted about two axes (its edges cross every lattice plane
+  // obliquely): each edge is a crease, and the output's creases should lie
+  // on them, not zig-zag around them.
+  const tpc::MeshSolid cube = tpctest::CubeMesh({ -0.6, -0.6, -0.6 }, { 0.6, 0.6, 0.6 });
+  const double c1 = std::cos(0.4), s1 = std::sin(0.4), c2 = std::cos(0.3), s2 = std::sin(0.3);
+  std::vector<Vec3> points;
+  for (const Vec3& p : cube.Points())
+  {
+    const Vec3 q(c1 * p[0] - s1 * p[1], s1 * p[0] + c1 * p[1], p[2]);
+    points.push_back({ q[0], c2 * q[1] - s2 * q[2], s2 * q[1] + c2 * q[2] });
+  }
+  const tpc::MeshSolid tilted(points, cube.Triangles());
+  SceneBuilder b;
+  b.Finish(b.Mesh(tilted));
+  const tpctest::ContourRun r = tpctest::Contour(b.Scene, { { -1.2, -1.2, -1.2 }, { 1.2, 1.2, 1.2 } }, 1.0 / 32);
+  EXPECT_TRUE(r.Guaranteed);
+  EXPECT_EQ(r.Report.Components, 1);
+  EXPECT_EQ(r.Report.Genus, 0);
+  // The cube's 12 edges.
+  std::vector<Edge> cubeEdges;
+  for (int a = 0; a < 8; ++a)
+  {
+    for (int bit = 0; bit < 3; ++bit)
+    {
+      if (!(a & (1 << bit)))
+      {
+        cubeEdges.push_back({ points[a], points[a | (1 << bit)] });
+      }
+    }
+  }
+  const std::vector<Edge> output = FeatureEdges(r.Extraction.Mesh);
+  // Every point of a cube edge within the tolerance of an output crease.
+  double worst = 0.0;
+  for (const Edge& e : cubeEdges)
+  {
+    for (int k = 0; k <= 50; ++k)
+    {
+      const Vec3 p = e.A + (e.B - e.A) * (k / 50.0);
+      double nearest = HUGE_VAL;
+      for (const Edge& o : output)
+      {
+        nearest = std::min(nearest, SegmentDistance(p, o.A, o.B));
+      }
+      worst = std::max(worst, nearest);
+    }
+  }
+  EXPECT_LE(worst, r.Tolerance);
+  // Every output crease lies on a cube edge (up to rounding): no saw-tooth.
+  std::size_t onEdges = 0;
+  for (const Edge& o : output)
+  {
+    for (const Edge& e : cubeEdges)
+    {
+      if (SegmentDistance(o.A, e.A, e.B) < 1e-9 && SegmentDistance(o.B, e.A, e.B) < 1e-9)
+      {
+        ++onEdges;
+        break;
+      }
+    }
+  }
+  std::cout << "tilted cube: " << r.Extraction.Mesh.Triangles.size() << " triangles, " << output.size()
+            << " output creases, " << onEdges << " on the cube's edges, worst distance " << worst / r.Tolerance
+            << " tolerance\n";
+  EXPECT_EQ(onEdges, output.size());
+  // Each cube edge is followed by at most two output edges (the input has
+  // one), and the cube takes few triangles: 3 658 with every surface cell at
+  // most the tolerance (measured at 0ae9eef).
+  EXPECT_GE(output.size(), 12u);
+  EXPECT_LE(output.size(), 24u);
+  EXPECT_LT(r.Extraction.Mesh.Triangles.size(), 3658u / 30);
+}
