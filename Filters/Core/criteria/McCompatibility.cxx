@@ -151,7 +151,7 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
       MarkCreaseTiles(boundary, *LoneMeshLeaf(*expression), prims, grid, [](int, std::size_t) { return true; });
     }
     v.PredictedError = PredictedMeshCellError(*expression, prims, grid, box, boundary,
-      creases ? TraceBoundaryLoops(boundary) : loops, tolerance);
+      creases ? TraceBoundaryLoops(boundary) : loops, tolerance, v.PredictedLoop);
     v.ErrorBounded = v.MeshSurface = v.PredictedError <= tolerance;
     if (!v.ErrorBounded)
     {

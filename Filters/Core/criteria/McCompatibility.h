@@ -42,6 +42,8 @@ struct McCompatibility
   /// tolerance are ErrorBounded too, predicted by their diagonal, with their
   /// own patch.)
   bool MeshSurface = false;
+  /// For MeshSurface: the loop the prediction was made on.
+  std::vector<Vec3> PredictedLoop;
   /// Larger than the tolerance (the Hausdorff size test's own comparison).
   bool Oversized = false;
   /// Faces this cell refined (only kept if it passes).

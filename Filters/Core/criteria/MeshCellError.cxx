@@ -70,17 +70,6 @@ double DoubleArea(const ConvexPolygon& q)
 /// whose bound needs more is split instead: smaller cells are cheaper).
 constexpr std::size_t PredictionBudget = 1024;
 
-/// Floating-point slack of the cell's distances (header: Rounding).
-double RoundingSlack(const Box3& cell)
-{
-  double magnitude = 0.0;
-  for (int a = 0; a < 3; ++a)
-  {
-    magnitude = std::max({ magnitude, std::fabs(cell.lo[a]), std::fabs(cell.hi[a]) });
-  }
-  return 4096.0 * DBL_EPSILON * magnitude + 1e-12 * cell.Diagonal();
-}
-
 /// The face of the cell holding both crossings, or -1.
 int CommonFace(const Crossing& p, const Crossing& q, const CellBoundary& boundary)
 {
@@ -121,6 +110,22 @@ double CreaseChordDeviation(const CreaseTile& crease, const Vec3& end)
     deviation = std::max(deviation, SegmentDistance(crease.Sides[s][k], end, crease.Position));
   }
   return deviation;
+}
+
+/// Whether tile t of a face normal to `axis` holds the sub-edge of crossing
+/// `c` (on its boundary): the tile of a chord, decided on lattice keys.
+bool HoldsSubEdge(const FaceTile& t, int axis, const Crossing& c)
+{
+  if (c.Kind != CrossingKind::SubEdge)
+  {
+    return false;
+  }
+  LatticeIndex lo[3];
+  SplitPointKey(PointOf(c.Key), lo);
+  LatticeIndex hi[3] = { lo[0], lo[1], lo[2] };
+  hi[AxisOf(c.Key)] = c.Upper;
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  return lo[u] >= t.U0 && hi[u] <= t.U1 && lo[v] >= t.V0 && hi[v] <= t.V1;
 }
 
 /// The box of tile t of face f.
@@ -207,15 +212,26 @@ double ChordDeviation(const std::vector<ConvexPolygon>& surface, const Box3& til
   return deviation;
 }
 
+double RoundingSlack(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell)
+{
+  const Box3& bounds = primitives.Meshes[leaf.Primitive].Bounds();
+  double magnitude = 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    magnitude = std::max({ magnitude, std::fabs(bounds.lo[a]), std::fabs(bounds.hi[a]), std::fabs(cell.lo[a]),
+      std::fabs(cell.hi[a]) });
+  }
+  return 4096.0 * DBL_EPSILON * magnitude + 1e-12 * cell.Diagonal();
+}
+
 HausdorffEstimate CertifiedMeshPatchError(const std::vector<ConvexPolygon>& surface,
-  const std::vector<SourceTriangle>& patch, const Box3& cell, double enough, double giveUp, std::size_t budget)
+  const std::vector<SourceTriangle>& patch, double slack, double enough, double giveUp, std::size_t budget)
 {
   HausdorffEstimate error{ HUGE_VAL, 0.0 };
   if (surface.empty() || patch.empty())
   {
     return error;
   }
-  const double slack = RoundingSlack(cell);
   const HausdorffEstimate toSurface = OneSidedHausdorff(patch, surface, enough - slack, giveUp - slack, budget);
   error.Lower = toSurface.Lower;
   if (!(toSurface.Upper + slack <= giveUp))
@@ -248,7 +264,7 @@ HausdorffEstimate CertifiedMeshPatchError(const std::vector<ConvexPolygon>& surf
 
 double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSet& primitives,
   const RootGrid& grid, const Box3& cell, const CellBoundary& boundary, const BoundaryLoopSet& loops,
-  double tolerance)
+  double tolerance, std::vector<Vec3>& loopPoints)
 {
   const CsgLeaf* leaf = LoneMeshLeaf(expression);
   if (!leaf || loops.LoopSizes.size() != 1 || !loops.Consistent || loops.Crossings.size() < 3)
@@ -287,32 +303,34 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
     {
       return HUGE_VAL;
     }
+    const Crossing &p = loop[k], &q = loop[(k + 1) % m];
     const Vec3 &a = points[k], &b = points[(k + 1) % m];
-    const Vec3 middle = (a + b) * 0.5;
+    const int axis = f / 2;
+    const LatticeIndex plane = boundary.Base[axis] + (f % 2 ? boundary.Size : 0);
     double chord = HUGE_VAL;
     for (const FaceTile& t : boundary.Tiles[f])
     {
-      const Box3 tile = TileBox(grid, boundary, f, t);
-      if (!tile.Contains(middle))
+      if (p.Kind == CrossingKind::MeshEdge || q.Kind == CrossingKind::MeshEdge)
       {
-        continue;
+        // The crease tile whose crease crossing this is.
+        const bool fromCrease = p.Kind == CrossingKind::MeshEdge;
+        const auto crease = CreaseOnTile(*leaf, primitives, grid, axis, plane, t);
+        if (crease && crease->X.SameVertex(fromCrease ? p : q))
+        {
+          chord = CreaseChordDeviation(*crease, fromCrease ? b : a);
+          break;
+        }
       }
-      const bool fromCrease = loop[k].Kind == CrossingKind::MeshEdge;
-      if (fromCrease || loop[(k + 1) % m].Kind == CrossingKind::MeshEdge)
+      else if (HoldsSubEdge(t, axis, p) && HoldsSubEdge(t, axis, q))
       {
-        const int axis = f / 2;
-        const auto crease = CreaseOnTile(*leaf, primitives, grid, axis,
-          boundary.Base[axis] + (f % 2 ? boundary.Size : 0), t);
-        chord = crease ? CreaseChordDeviation(*crease, fromCrease ? b : a) : HUGE_VAL;
+        chord = ChordDeviation(surface, TileBox(grid, boundary, f, t), a, b);
+        break;
       }
-      else
-      {
-        chord = ChordDeviation(surface, tile, a, b);
-      }
-      break;
     }
     delta = std::max(delta, chord);
   }
+  const double slack = RoundingSlack(*leaf, primitives, cell);
+  delta += slack; // (the final points lie on S up to rounding)
   if (!(delta < tolerance))
   {
     return HUGE_VAL;
@@ -324,8 +342,51 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
     fan.push_back({ points[k], points[(k + 1) % m], apex });
   }
   const double error =
-    CertifiedMeshPatchError(surface, fan, cell, tolerance - delta, tolerance - delta, PredictionBudget).Upper;
+    CertifiedMeshPatchError(surface, fan, slack, tolerance - delta, tolerance - delta, PredictionBudget).Upper;
+  loopPoints = points;
   return error == HUGE_VAL ? HUGE_VAL : error + delta;
+}
+
+bool FinalLoopRefines(const std::vector<Vec3>& own, const std::vector<Vec3>& final, const Box3& cell)
+{
+  if (own.empty() || final.size() < own.size())
+  {
+    return false;
+  }
+  // (Crossings named by a finer sub-edge are placed on the same triangle's
+  // plane, then kept strictly inside their sub-edge: equal up to an ulp.)
+  double magnitude = 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    magnitude = std::max({ magnitude, std::fabs(cell.lo[a]), std::fabs(cell.hi[a]) });
+  }
+  const double tolerance = 64.0 * DBL_EPSILON * magnitude;
+  const auto same = [&](const Vec3& x, const Vec3& y) {
+    for (int a = 0; a < 3; ++a)
+    {
+      if (!(std::fabs(x[a] - y[a]) <= tolerance))
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  const std::size_t n = final.size();
+  std::size_t start = 0;
+  while (start < n && !same(final[start], own[0]))
+  {
+    ++start;
+  }
+  if (start == n)
+  {
+    return false;
+  }
+  std::size_t next = 1;
+  for (std::size_t k = 1; k < n && next < own.size(); ++k)
+  {
+    next += same(final[(start + k) % n], own[next]) ? 1 : 0;
+  }
+  return next == own.size();
 }
 
 } // namespace tpc

@@ -61,9 +61,11 @@
 // says what the patches need rather than what the cells' size allows.
 //
 // Rounding. The polygons, the crossings and the distances are computed in
-// floating point from coordinates of magnitude at most |C|_inf (the largest
-// coordinate of the cell): each is within a few hundred units in the last
-// place of it, RoundingSlack below covers them with a wide margin.
+// floating point from the mesh's coordinates (clipped points interpolate
+// vertices that may lie far outside the cell): each is within a few hundred
+// units in the last place of the mesh's largest coordinate M; RoundingSlack
+// (4096 ulps of M, plus 1e-12 of the cell's diagonal) is added to E(P), to
+// delta and to the final certificate.
 #pragma once
 
 #include "BoundaryLoops.h"
@@ -91,13 +93,16 @@ Vec3 MeshCellApex(const std::vector<ConvexPolygon>& surface, const Box3& cell);
 /// tile, degenerate along the face's axis).
 double ChordDeviation(const std::vector<ConvexPolygon>& surface, const Box3& tile, const Vec3& a, const Vec3& b);
 
-/// E(P) for the patch triangles `patch`: Upper (slack added) proven when <=
+/// E(P) for the patch triangles `patch`: Upper (`slack` added) proven when <=
 /// `giveUp` (+inf beyond it, or when there is nothing to compare), Lower
 /// attained; pieces are refined until within `enough` or 10 % of Lower, at
 /// most `budget` of them per direction (OneSidedHausdorff).
 HausdorffEstimate CertifiedMeshPatchError(const std::vector<ConvexPolygon>& surface,
-  const std::vector<SourceTriangle>& patch, const Box3& cell, double enough, double giveUp,
+  const std::vector<SourceTriangle>& patch, double slack, double enough, double giveUp,
   std::size_t budget = 4096);
+
+/// The slack for rounding in a cell of the mesh of `leaf` (header: Rounding).
+double RoundingSlack(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell);
 
 /// The subdivision's prediction E(P) + delta for a cell whose tests passed
 /// with the single loop `loops` (sub-edge crossings, and crease crossings in
@@ -106,8 +111,19 @@ HausdorffEstimate CertifiedMeshPatchError(const std::vector<ConvexPolygon>& surf
 /// same apex);
 /// +inf when it exceeds `tolerance` or the cell is not a lone mesh leaf with
 /// one loop.
+/// `loop` receives the loop's points (what the final loop must hold in order
+/// for the prediction to apply, FinalLoopRefines).
 double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSet& primitives,
   const RootGrid& grid, const Box3& cell, const CellBoundary& boundary, const BoundaryLoopSet& loops,
-  double tolerance);
+  double tolerance, std::vector<Vec3>& loop);
+
+/// Whether the final loop `final` holds every point of the cell's own loop
+/// `own` in the same cyclic order (up to rounding): then each chord ab of
+/// the cell's loop is kept or replaced by final points on its tile's trace,
+/// which is what the prediction assumes. (Face tiles of two cells are
+/// quadtree tilings of the same face, so they nest: a final tile coarser
+/// than the cell's own tile t would drop a crossing of t's inner sides, or
+/// draw the same chord ab.)
+bool FinalLoopRefines(const std::vector<Vec3>& own, const std::vector<Vec3>& final, const Box3& cell);
 
 } // namespace tpc

@@ -222,6 +222,7 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
     {
       Piece piece{ child, {}, HUGE_VAL };
       Evaluate(piece, parent.Candidates, parent.Upper, targets, estimate.Lower, order);
+      piece.Upper = std::min(piece.Upper, parent.Upper); // (the child lies in its parent)
       pieces.push(std::move(piece));
     }
     evaluated += 4;

@@ -51,9 +51,9 @@ double CertifiedPatchError(const QuadricCellError& bound, const CellPatches& pat
 }
 
 HausdorffEstimate CertifiedMeshCellError(const std::vector<ConvexPolygon>& surface, const CellPatches& patches,
-  const TriangleMesh& mesh, const Box3& cell, double enough, double giveUp, std::size_t budget)
+  const TriangleMesh& mesh, double slack, double enough, double giveUp, std::size_t budget)
 {
-  return CertifiedMeshPatchError(surface, PatchTriangles(patches, mesh), cell, enough, giveUp, budget);
+  return CertifiedMeshPatchError(surface, PatchTriangles(patches, mesh), slack, enough, giveUp, budget);
 }
 
 } // namespace tpc

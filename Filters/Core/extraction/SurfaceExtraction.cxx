@@ -161,8 +161,14 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
       // chords); the patch is certified on its own anyway.
       const Vec3 apex = MeshCellApex(surface, box);
       TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches, nullptr, &apex);
-      const bool refined = predictionsHold && loops.Consistent && loops.LoopSizes.size() == 1;
-      certificate.Bound = refined ? prediction->second : HUGE_VAL;
+      std::vector<Vec3> final;
+      for (const Crossing& c : loops.Crossings)
+      {
+        final.push_back(mesh.Points[vertices.IdOf(c)]);
+      }
+      const bool refined = predictionsHold && loops.Consistent && loops.LoopSizes.size() == 1 &&
+        FinalLoopRefines(prediction->second.Loop, final, box);
+      certificate.Bound = refined ? prediction->second.Bound : HUGE_VAL;
     }
     else
     {
@@ -170,8 +176,8 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
       TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches);
       certificate.Bound = tree.Grid.CellDiagonal(node.Level);
     }
-    const HausdorffEstimate e = CertifiedMeshCellError(
-      surface, patches, mesh, box, 0.0, std::min(certificate.Bound, tree.HausdorffTolerance), 0);
+    const HausdorffEstimate e = CertifiedMeshCellError(surface, patches, mesh,
+      RoundingSlack(*LoneMeshLeaf(expression), prims, box), 0.0, std::min(certificate.Bound, tree.HausdorffTolerance), 0);
     certificate.Error = std::min(certificate.Bound, e.Upper);
     certificate.Lower = e.Lower;
     certificate.Mesh = true;
@@ -207,9 +213,11 @@ bool RefineMeshCertificates(const AdaptiveOctree& tree, const std::vector<std::u
           if (own[i] && c.Mesh && c.Error > enough)
           {
             const OctreeNode& node = tree.Nodes[cells[i]];
+            const double slack = RoundingSlack(
+              *LoneMeshLeaf(*tree.Expressions[cells[i]]), prims, tree.Grid.CellBox(node.Level, node.Ijk));
             const HausdorffEstimate e = CertifiedMeshCellError(MeshInCell(tree, cells[i], prims), patches[i], mesh,
-              tree.Grid.CellBox(node.Level, node.Ijk), enough, std::min(c.Bound, tree.HausdorffTolerance), 4096);
-            c.Error = std::min(c.Bound, e.Upper);
+              slack, enough, std::min(c.Bound, tree.HausdorffTolerance), 4096);
+            c.Error = std::min(c.Error, e.Upper);
           }
         }
       }, progress);

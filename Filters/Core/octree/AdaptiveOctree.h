@@ -96,9 +96,16 @@ public:
   LatticeSignTable Signs;
 
   /// The subdivision's certified prediction for each error-bounded leaf
-  /// where one mesh is the surface (MeshCellError.h): it bounds the error of
-  /// the fan the extraction builds there, whatever crack patching adds.
-  std::unordered_map<std::uint32_t, double> MeshCellPredictions;
+  /// larger than the tolerance where one mesh is the surface
+  /// (MeshCellError.h): Bound bounds the error of the fan the extraction
+  /// builds there when its final loop holds Loop's points in order (crack
+  /// patching only refines the cell's own loop, Loop).
+  struct MeshCellPrediction
+  {
+    double Bound = 0.0;
+    std::vector<Vec3> Loop;
+  };
+  std::unordered_map<std::uint32_t, MeshCellPrediction> MeshCellPredictions;
 
   /// Tiles of faces that were refined (FaceRefinement.h), for leaves that
   /// passed the tests; faces not listed are a single tile.

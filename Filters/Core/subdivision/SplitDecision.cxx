@@ -52,7 +52,7 @@ bool DecideCell(AdaptiveOctree& tree, std::uint32_t n, const CellTests& tests, c
     node.ErrorBounded = v.ErrorBounded;
     if (v.MeshSurface)
     {
-      tree.MeshCellPredictions[n] = v.PredictedError;
+      tree.MeshCellPredictions[n] = { v.PredictedError, v.PredictedLoop };
     }
     result.SurfaceCells += mine;
     result.PlanarSurfaceCells += v.Planar ? mine : 0;

@@ -102,7 +102,7 @@ Measured CheckEveryMeshCertificate(const tpctest::ContourRun& r, const tpc::Mesh
     // smaller cells: within their diagonal.
     const auto prediction = tree.MeshCellPredictions.find(n);
     EXPECT_LE(certificate,
-      prediction != tree.MeshCellPredictions.end() ? prediction->second : tree.Grid.CellDiagonal(node.Level));
+      prediction != tree.MeshCellPredictions.end() ? prediction->second.Bound : tree.Grid.CellDiagonal(node.Level));
     m.Predicted += prediction != tree.MeshCellPredictions.end() ? 1 : 0;
     EXPECT_LE(certificate, r.HausdorffBound * (1 + 1e-12));
     ++m.Cells;
@@ -312,4 +312,19 @@ TEST(MeshCellError, CertificatesBoundTheMeasuredDistanceOnMeshes)
               << " larger than the tolerance), bound " << r.HausdorffBound / r.Tolerance
               << " tolerance, worst measured/certified " << m.WorstRatio << "\n";
   }
+}
+
+TEST(MeshCellError, FinalLoopMustHoldTheCellsOwnLoopInOrder)
+{
+  // The prediction applies to a final loop that holds the cell's own loop's
+  // points in the same cyclic order (crack patching inserts points between
+  // them), and to no other.
+  const Box3 cell{ { 0, 0, 0 }, { 1, 1, 1 } };
+  const Vec3 a(0.5, 0, 0.2), b(1, 0.5, 0.3), c(0.5, 1, 0.4), d(0, 0.5, 0.5), x(0.75, 0.2, 0.25), y(0.2, 0.8, 0.45);
+  EXPECT_TRUE(tpc::FinalLoopRefines({ a, b, c, d }, { a, b, c, d }, cell));
+  EXPECT_TRUE(tpc::FinalLoopRefines({ a, b, c, d }, { c, y, d, a, x, b }, cell));
+  EXPECT_FALSE(tpc::FinalLoopRefines({ a, b, c, d }, { a, x, c, d }, cell)); // b dropped: a coarser tile
+  EXPECT_FALSE(tpc::FinalLoopRefines({ a, b, c, d }, { a, c, b, d }, cell)); // another order
+  EXPECT_FALSE(tpc::FinalLoopRefines({ a, b, c, d }, { a, b, c, d + Vec3(1e-9, 0, 0) }, cell));
+  EXPECT_TRUE(tpc::FinalLoopRefines({ a, b, c, d }, { a, b, c, d + Vec3(1e-17, 0, 0) }, cell)); // rounding
 }
