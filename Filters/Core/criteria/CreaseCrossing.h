@@ -24,7 +24,11 @@
 // Both cells sharing a tile must draw it alike: each decides from the tile
 // and the mesh alone, with exact side tests on the mesh's perturbed solid
 // (MeshArrangement.h); every triangle meeting the tile is in both cells'
-// triangle lists. The extraction draws crease tiles between two cells of
+// triangle lists. x's computed position must be strictly inside the tile
+// too (the exact test is on the perturbed mesh: a crease crossing within
+// rounding of a tile side would put the chords along the side, where the
+// output is not embedded - a fuzzer found it); the same computation on both
+// sides. The extraction draws crease tiles between two cells of
 // the same lone mesh leaf that are not exact (CrackPatching.h); an exact
 // neighbour draws the whole trace, a polyline through x on the same halves.
 #pragma once

@@ -2,7 +2,6 @@
 
 #include "BoundaryLoops.h"
 #include "ComplexCellCriterion.h"
-#include "CreaseCrossing.h"
 #include "ExactCellCriterion.h"
 #include "FaceRefinement.h"
 #include "MeshCellError.h"
@@ -142,16 +141,13 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   }
   if (meshBounded)
   {
-    // In a scene of one mesh every cell draws crease tiles through their
-    // crease (CreaseCrossing.h), so the loop the prediction starts from may
-    // too: the final loop follows the same trace there.
-    const bool creases = IsOneMesh(*tree.SceneExpression);
-    if (creases)
-    {
-      MarkCreaseTiles(boundary, *LoneMeshLeaf(*expression), prims, grid, [](int, std::size_t) { return true; });
-    }
-    v.PredictedError = PredictedMeshCellError(*expression, prims, grid, box, boundary,
-      creases ? TraceBoundaryLoops(boundary) : loops, tolerance, v.PredictedLoop);
+    // (The prediction starts from the cell's own chords: a crease vertex the
+    // extraction inserts lies on the tile's trace, which delta covers. Starting
+    // from the bent chord would need every sub-tile holding the crease to draw
+    // it too, and the position test of CreaseOnTile is not monotone under
+    // refinement: see the note on issue 17.)
+    v.PredictedError =
+      PredictedMeshCellError(*expression, prims, grid, box, boundary, loops, tolerance, v.PredictedLoop);
     v.ErrorBounded = v.MeshSurface = v.PredictedError <= tolerance;
     if (!v.ErrorBounded)
     {

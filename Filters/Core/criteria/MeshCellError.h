@@ -39,17 +39,13 @@
 //   onto u; then |w - u| is w's distance to the line, which is its distance
 //   to the segment (the projection u lies in it), <= delta. x = c + s (w - c)
 //   is in P' and |x - x'| <= delta.
-// Crease tiles (CreaseCrossing.h). In a scene of one mesh every cell meeting
-// the surface is a cell of that mesh (or an exact cell, which draws the
-// whole trace), so a tile whose chord the cell's own loop draws through a
-// crease vertex x is drawn through x in the final loop too, and the final
-// points between a and x lie on the trace's half from x to a (every sub-tile
-// holding x is a crease tile, every other one holds none). The argument above
-// holds for the chord [a, x] with delta taken over that half only (walked
-// edge by edge; the largest distance of its vertices to [a, x], the half
-// being straight between them), and likewise for [x, b]. (In other scenes
-// the cell's own loop keeps the chord ab; a final loop through x is still a
-// polyline on S ∩ t, which delta covers.)
+// Crease tiles (CreaseCrossing.h). The subdivision's loop keeps the chord
+// ab of a tile the extraction may draw through a crease vertex x: x is a
+// point of S ∩ t, which delta covers. (PredictedMeshCellError also takes a
+// loop drawn through x, with delta over each half of the trace, which would
+// let crease cells grow; the subdivision does not pass one yet, because the
+// final loop must then hold x on every sub-tile too - see the note on
+// issue 17.)
 //
 // So a cell is accepted when E(P) + delta <= the tolerance, and the final
 // patch is certified again on its own (usually tighter: its loop follows S
