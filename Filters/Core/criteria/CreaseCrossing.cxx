@@ -138,9 +138,12 @@ std::optional<CreaseTile> CreaseOnTile(const CsgLeaf& leaf, const PrimitiveSet& 
     found.X.Tile = leaf.Primitive;
     found.X.Partner = (static_cast<std::uint64_t>(p.A) << 32) | p.B;
     found.Position = arrangement.Position(ArrangementPoint::EdgeOnPlane(p.A, p.B, axis, plane));
-    // Strictly inside the tile as computed too (the exact test is on the
-    // perturbed mesh; a position rounded onto a tile side would put the two
-    // chords along it): both cells compute the same position.
+    // Strictly inside the tile as computed too (a position rounded onto a
+    // tile side would put the two chords along it). MeshArrangement::Position
+    // keeps an edge's crossing inside the finest lattice interval the exact
+    // tests put it in, so this holds for every tile holding x (the decision
+    // is the same for a tile and its sub-tiles); it is checked here for the
+    // rare crossing Position could not place so.
     const int u = (axis + 1) % 3, v = (axis + 2) % 3;
     if (!(found.Position[u] > grid.Coordinate(u, tile.U0) && found.Position[u] < grid.Coordinate(u, tile.U1) &&
           found.Position[v] > grid.Coordinate(v, tile.V0) && found.Position[v] < grid.Coordinate(v, tile.V1)))

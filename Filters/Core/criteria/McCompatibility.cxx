@@ -2,6 +2,7 @@
 
 #include "BoundaryLoops.h"
 #include "ComplexCellCriterion.h"
+#include "CreaseCrossing.h"
 #include "ExactCellCriterion.h"
 #include "FaceRefinement.h"
 #include "MeshCellError.h"
@@ -141,13 +142,18 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   }
   if (meshBounded)
   {
-    // (The prediction starts from the cell's own chords: a crease vertex the
-    // extraction inserts lies on the tile's trace, which delta covers. Starting
-    // from the bent chord would need every sub-tile holding the crease to draw
-    // it too, and the position test of CreaseOnTile is not monotone under
-    // refinement: see the note on issue 17.)
-    v.PredictedError =
-      PredictedMeshCellError(*expression, prims, grid, box, boundary, loops, tolerance, v.PredictedLoop);
+    // In a scene of one mesh every cell draws crease tiles through their
+    // crease (CreaseCrossing.h: every non-exact neighbour is a cell of the
+    // same mesh, and the decision is the same for a tile and its sub-tiles),
+    // so the loop the prediction starts from may too: the final loop follows
+    // the same halves of the trace there.
+    const bool creases = IsOneMesh(*tree.SceneExpression);
+    if (creases)
+    {
+      MarkCreaseTiles(boundary, *LoneMeshLeaf(*expression), prims, grid, [](int, std::size_t) { return true; });
+    }
+    v.PredictedError = PredictedMeshCellError(*expression, prims, grid, box, boundary,
+      creases ? TraceBoundaryLoops(boundary) : loops, tolerance, v.PredictedLoop);
     v.ErrorBounded = v.MeshSurface = v.PredictedError <= tolerance;
     if (!v.ErrorBounded)
     {

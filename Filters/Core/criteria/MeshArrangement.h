@@ -28,7 +28,13 @@
 // Positions are computed once per point from the mesh and the lattice alone
 // (an edge's crossing from its lower-numbered vertex), so every cell that
 // meets a point places it at the same coordinates, exactly on its lattice
-// plane or line.
+// plane or line. An edge's crossing is moved, where rounding put it on or
+// past a lattice plane its side tests put it before, to the nearest double
+// strictly inside the finest lattice interval that holds it (a move of the
+// order of the rounding, within RoundingSlack, MeshCellError.h): its
+// position is then strictly inside every tile the exact tests put it in, at
+// every level, which makes "x is inside the tile" the same decision for a
+// tile and its sub-tiles (CreaseCrossing.h).
 #pragma once
 
 #include "MeshSolid.h"
@@ -104,6 +110,9 @@ public:
   const MeshSolid& Mesh() const { return this->Solid; }
 
 private:
+  /// Coordinate x of `p` on `axis`, within the finest lattice interval its
+  /// side tests put it in (the nearest double strictly inside).
+  double WithinLatticeInterval(const ArrangementPoint& p, int axis, double x) const;
   int VertexSide(const Vec3& p, int axis, double c) const;
   int EdgeSide(const ArrangementPoint& p, int axis, double c) const;
   int TriangleSide(const ArrangementPoint& p, int axis, double c) const;

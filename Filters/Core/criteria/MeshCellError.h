@@ -39,13 +39,20 @@
 //   onto u; then |w - u| is w's distance to the line, which is its distance
 //   to the segment (the projection u lies in it), <= delta. x = c + s (w - c)
 //   is in P' and |x - x'| <= delta.
-// Crease tiles (CreaseCrossing.h). The subdivision's loop keeps the chord
-// ab of a tile the extraction may draw through a crease vertex x: x is a
-// point of S ∩ t, which delta covers. (PredictedMeshCellError also takes a
-// loop drawn through x, with delta over each half of the trace, which would
-// let crease cells grow; the subdivision does not pass one yet, because the
-// final loop must then hold x on every sub-tile too - see the note on
-// issue 17.)
+// Crease tiles (CreaseCrossing.h). In a scene of one mesh the subdivision's
+// loop draws a crease tile t as the extraction will, a -> x -> b through the
+// crease's crossing x, and delta is taken for each half: the trace S ∩ t is
+// one arc from a through x to b, the polyline through the mesh edges'
+// crossings, so its largest distance from [a, x] over the half from a to x is
+// at those crossings (CreaseChordDeviation). Every sub-tile of t holding x is
+// a crease tile through x (the same edges, fewer of them, and x's position is
+// inside every tile the exact tests put it in, MeshArrangement.h), and every
+// other sub-tile holds pieces of one half; so the final loop replaces a -> x
+// and x -> b by points of the half each spans, and the argument above holds
+// half by half. Where the extraction draws t straight after all (a neighbour
+// holding another leaf, or a coarser face tiling from crack patching), the
+// final loop lacks x or another point of the cell's loop: FinalLoopRefines
+// refuses the prediction and the final patch is certified on its own.
 //
 // So a cell is accepted when E(P) + delta <= the tolerance, and the final
 // patch is certified again on its own (usually tighter: its loop follows S

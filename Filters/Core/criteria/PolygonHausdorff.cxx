@@ -208,7 +208,9 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
   while (evaluated < budget && estimate.Lower <= giveUp)
   {
     const double top = pieces.top().Upper;
-    if (top <= enough || top <= 1.1 * estimate.Lower || top == HUGE_VAL)
+    // (Within 10 % of the lower bound is close enough only below giveUp: the
+    // caller needs a proof under it.)
+    if (top <= std::min(enough, giveUp) || (top <= 1.1 * estimate.Lower && top <= giveUp) || top == HUGE_VAL)
     {
       break;
     }

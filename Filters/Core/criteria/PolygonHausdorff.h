@@ -14,9 +14,9 @@
 //   max over T of d(., B) <= max_i d(v_i, B) + R. (2)
 // A piece's upper bound is the smaller of (1) and (2); the exact distances at
 // its vertices, max_i d(v_i, B), are lower bounds of h. The largest upper
-// bound is split into four (edge midpoints) until it is within `enough`, or
-// within 10 % of the best lower bound, or the lower bound exceeds `giveUp`, or
-// the budget of pieces is spent; the largest remaining upper bound is returned
+// bound is split into four (edge midpoints) until it is within `enough` (and
+// `giveUp`), or within 10 % of the best lower bound and `giveUp`, or the lower
+// bound exceeds `giveUp`, or the budget of pieces is spent; the largest remaining upper bound is returned
 // (always an upper bound of h, however the loop ended). A polygon Q_j whose
 // box is farther from a piece's box than the piece's upper bound cannot be the
 // nearest to any of its points and is dropped for the piece's sub-pieces.

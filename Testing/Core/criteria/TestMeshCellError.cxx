@@ -231,6 +231,14 @@ TEST(PolygonHausdorff, BoundsTheSampledDistanceAndStaysCloseToIt)
   const tpc::HausdorffEstimate hopeless = tpc::OneSidedHausdorff(sources, AsPolygons(target), 0.0, 0.01);
   EXPECT_GT(hopeless.Lower, 0.01);
   EXPECT_GT(hopeless.Upper, 0.01);
+  // A caller that needs a proof under giveUp gets one when the distance is
+  // below it, however loose `enough` is and however close the lower bound
+  // came (both once stopped the search above giveUp: the extraction then
+  // failed to certify cells within the tolerance).
+  const double giveUp = 1.03 * SampledHausdorff(sources, target);
+  const tpc::HausdorffEstimate proven = tpc::OneSidedHausdorff(sources, AsPolygons(target), HUGE_VAL, giveUp, 200000);
+  EXPECT_LE(proven.Upper, giveUp);
+  EXPECT_LT(giveUp, 1.1 * proven.Lower); // (within the 10 % that used to stop it)
 }
 
 TEST(MeshCellError, ChordDeviationIsTheTraceFarthestFromTheChord)

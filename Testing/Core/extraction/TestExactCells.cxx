@@ -115,6 +115,58 @@ TEST(MeshArrangement, TriangleOnALineAgreesWithMeshSolidCrossings)
   EXPECT_GT(ties, 15); // the perturbation decided some
 }
 
+TEST(MeshArrangement, EdgeCrossingsArePlacedWhereTheSideTestsPutThem)
+{
+  // An edge's crossing of a lattice plane is placed strictly on the side of
+  // every lattice plane that its exact side test says - also where it lies
+  // exactly on a lattice line and the perturbation decides (rounded as
+  // computed, it would sit on the line): so "inside a tile" means the same
+  // for the position and the exact tests, for a tile and its sub-tiles
+  // (CreaseCrossing.h).
+  std::mt19937 rng(5);
+  const tpc::RootGrid grid = QuarterLattice();
+  const tpc::MeshSolid mesh = RandomTriangles(rng, 300);
+  const tpc::MeshArrangement arrangement(mesh, grid);
+  int crossings = 0, ties = 0;
+  for (std::uint32_t t = 0; t < mesh.TriangleCount(); ++t)
+  {
+    const auto& ids = mesh.Triangles()[t];
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::uint32_t a = ids[k], b = ids[(k + 1) % 3];
+      for (int axis = 0; axis < 3; ++axis)
+      {
+        for (tpc::LatticeIndex plane = 0; plane <= 16; ++plane)
+        {
+          if (arrangement.Side(ArrangementPoint::Vertex(a), axis, plane) ==
+            arrangement.Side(ArrangementPoint::Vertex(b), axis, plane))
+          {
+            continue;
+          }
+          const ArrangementPoint x = ArrangementPoint::EdgeOnPlane(a, b, axis, plane);
+          const Vec3 position = arrangement.Position(x);
+          ++crossings;
+          for (const int u : { (axis + 1) % 3, (axis + 2) % 3 })
+          {
+            // (Exactly on a line of the lattice: the perturbation decides.)
+            ties += position[u] * 4.0 == std::round(position[u] * 4.0) ||
+                std::fabs(position[u] * 4.0 - std::round(position[u] * 4.0)) < 1e-12
+              ? 1
+              : 0;
+            for (tpc::LatticeIndex line = 0; line <= 16; ++line)
+            {
+              EXPECT_EQ(arrangement.Side(x, u, line) > 0, position[u] > grid.Coordinate(u, line))
+                << "edge " << a << "-" << b << " on plane " << axis << "=" << plane << ", line " << u << "=" << line;
+            }
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(crossings, 1000);
+  EXPECT_GT(ties, 50); // crossings on lattice lines, placed off them
+}
+
 TEST(MeshArrangement, ClippedPiecesTileTheTriangle)
 {
   // Each triangle clipped to the 64 boxes of a 4 x 4 x 4 block of lattice
