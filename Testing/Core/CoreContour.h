@@ -23,6 +23,7 @@ struct ContourRun
   double HausdorffBound = 0.0; ///< the report's proven two-sided bound
   bool Guaranteed = false;
   bool Contoured = false; ///< contoured, or the solid is empty (else Messages say why)
+  bool Aborted = false;   ///< `progress` asked to stop
   std::vector<tpc::ContourMessage> Messages;
 };
 
@@ -67,7 +68,8 @@ inline tpc::Box3 GrownDomain(const tpc::Box3& bounds) { return bounds.Grown(0.05
 /// placements, refining at most to `maxDepth` (the product's default, the
 /// lattice's end). The test scenes' meshes meet the paper's assumptions.
 inline ContourRun Contour(const Scene& scene, const tpc::Box3& bounds, double relativeTolerance,
-  int maxDepth = tpc::DeepestMaximumDepth, int placements = tpc::LatticePlacements, std::size_t maxCells = 10000000)
+  int maxDepth = tpc::DeepestMaximumDepth, int placements = tpc::LatticePlacements, std::size_t maxCells = 10000000,
+  const tpc::ProgressCallback& progress = nullptr)
 {
   tpc::ContourScene input;
   input.Primitives = scene.Primitives;
@@ -81,7 +83,7 @@ inline ContourRun Contour(const Scene& scene, const tpc::Box3& bounds, double re
   p.MaximumDepth = maxDepth;
   p.MaximumNumberOfCells = maxCells;
   p.LatticePlacements = placements;
-  tpc::ContourResult result = tpc::Contour(std::move(input), p);
+  tpc::ContourResult result = tpc::Contour(std::move(input), p, tpc::SequentialFor, progress);
   ContourRun r;
   r.Messages = std::move(result.Messages);
   r.Subdivision = std::move(result.Placed.Result);
@@ -93,6 +95,11 @@ inline ContourRun Contour(const Scene& scene, const tpc::Box3& bounds, double re
   r.Guaranteed = result.Report.Guaranteed;
   r.Contoured = result.Status == tpc::ContourResult::Outcome::Contoured ||
     result.Status == tpc::ContourResult::Outcome::Empty;
+  r.Aborted = result.Status == tpc::ContourResult::Outcome::Aborted;
+  if (r.Aborted)
+  {
+    return r;
+  }
 #ifndef TPC_TESTS_WITHOUT_GTEST
   EXPECT_TRUE(r.Contoured) << (r.Messages.empty() ? std::string() : r.Messages.front().Text);
   ExpectEmbeddingCheckAgreesWithCgal(r.Embedding, r.Extraction.Mesh);

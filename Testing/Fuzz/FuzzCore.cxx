@@ -27,6 +27,7 @@
 
 #include <fuzzer/FuzzedDataProvider.h>
 
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 
@@ -35,21 +36,24 @@ using tpctest::SceneBuilder;
 
 namespace
 {
+/// Wall-clock seconds one scene may take (libFuzzer's -timeout is 60).
+constexpr int SceneSeconds = 10;
+
 /// What the campaign exercised, printed at exit (to document coverage).
 struct Tally
 {
   long Scenes[4] = { 0, 0, 0, 0 };
   long Contoured = 0, NonEmpty = 0, Guaranteed = 0, TopologyChecked = 0, MeshesRefused = 0, TightLimits = 0;
-  long NotEmbedded = 0, WithExactCells = 0;
+  long NotEmbedded = 0, WithExactCells = 0, OverTime = 0;
   ~Tally()
   {
     std::fprintf(stderr,
       "FuzzCore: %ld random CSG, %ld known topology, %ld meshes, %ld meshes with primitives; "
       "%ld contoured (%ld non-empty, %ld guaranteed, %ld not embedded where a limit stopped cells, %ld with "
       "exact cells), %ld topologies checked against the reference, %ld broken meshes refused; %ld inputs with "
-      "tight limits\n",
+      "tight limits; %ld stopped after %d s\n",
       Scenes[0], Scenes[1], Scenes[2], Scenes[3], Contoured, NonEmpty, Guaranteed, NotEmbedded, WithExactCells,
-      TopologyChecked, MeshesRefused, TightLimits);
+      TopologyChecked, MeshesRefused, TightLimits, OverTime, SceneSeconds);
   }
 } tally;
 
@@ -150,7 +154,19 @@ tpctest::ContourRun RunAndCheck(FuzzedDataProvider& in, const tpctest::Scene& sc
   {
     Describe(scene, tolerance * bounds.Diagonal(), depth, cells, tpctest::GrownDomain(bounds));
   }
-  r = tpctest::Contour(scene, bounds, tolerance, depth, 1, cells);
+  // A scene the filter cannot settle within SceneSeconds is stopped and
+  // dropped: the campaign checks properties of results, and one slow scene
+  // would end it as a timeout. (Known: two quadrics meeting at a grazing
+  // angle fail the face tests in every tile at every level; see the note on
+  // issue 17. The count is printed at exit.)
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(SceneSeconds);
+  r = tpctest::Contour(scene, bounds, tolerance, depth, 1, cells,
+    [deadline](double) { return std::chrono::steady_clock::now() > deadline; });
+  if (r.Aborted)
+  {
+    ++tally.OverTime;
+    return r;
+  }
   if (std::getenv("TPC_FUZZ_VERBOSE"))
   {
     std::size_t tiles = 0;

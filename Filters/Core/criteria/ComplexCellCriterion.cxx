@@ -436,7 +436,7 @@ bool LoopsSeparated(const BoundaryLoopSet& loops, const CsgExpressionPtr& expres
   for (int a = 0; a < 3; ++a)
   {
     // Lattice size of the cell from its world size (exact enough for a bound).
-    size = std::max(size, static_cast<LatticeIndex>(std::llround(cell.Width(a) / std::ldexp(grid.RootSize, -grid.MaxDepth))));
+    size = std::max(size, static_cast<LatticeIndex>(std::llround(cell.Width(a) / grid.Spacing())));
   }
   // A sixteenth of the cell separates loops of surfaces that are apart by
   // more than that (most cells, cheaply); surfaces passing closer - a near

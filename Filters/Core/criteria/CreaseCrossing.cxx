@@ -33,9 +33,30 @@ std::vector<EdgeUseOnTile> EdgesOnTile(const MeshArrangement& arrangement, const
   LatticeIndex plane, const FaceTile& tile)
 {
   const MeshSolid& mesh = arrangement.Mesh();
+  const RootGrid& grid = arrangement.Lattice();
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  Box3 tileBox;
+  tileBox.lo[axis] = tileBox.hi[axis] = grid.Coordinate(axis, plane);
+  tileBox.lo[u] = grid.Coordinate(u, tile.U0);
+  tileBox.hi[u] = grid.Coordinate(u, tile.U1);
+  tileBox.lo[v] = grid.Coordinate(v, tile.V0);
+  tileBox.hi[v] = grid.Coordinate(v, tile.V1);
   std::vector<EdgeUseOnTile> uses;
   for (const std::uint32_t t : triangles)
   {
+    // (A triangle strictly apart from the tile's closed box, in doubles,
+    // stays apart from it under the infinitesimal perturbation: skipped
+    // before the exact tests.)
+    const Box3& bounds = mesh.TriangleBounds(t);
+    bool apart = false;
+    for (int a = 0; a < 3; ++a)
+    {
+      apart = apart || bounds.hi[a] < tileBox.lo[a] || bounds.lo[a] > tileBox.hi[a];
+    }
+    if (apart)
+    {
+      continue;
+    }
     const auto& ids = mesh.Triangles()[t];
     int side[3];
     for (int k = 0; k < 3; ++k)
@@ -139,14 +160,10 @@ std::optional<CreaseTile> CreaseOnTile(const CsgLeaf& leaf, const PrimitiveSet& 
     found.X.Partner = (static_cast<std::uint64_t>(p.A) << 32) | p.B;
     found.Position = arrangement.Position(ArrangementPoint::EdgeOnPlane(p.A, p.B, axis, plane));
     // Strictly inside the tile as computed too (a position rounded onto a
-    // tile side would put the two chords along it). MeshArrangement::Position
-    // keeps an edge's crossing inside the finest lattice interval the exact
-    // tests put it in, so this holds for every tile holding x (the decision
-    // is the same for a tile and its sub-tiles); it is checked here for the
-    // rare crossing Position could not place so.
-    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-    if (!(found.Position[u] > grid.Coordinate(u, tile.U0) && found.Position[u] < grid.Coordinate(u, tile.U1) &&
-          found.Position[v] > grid.Coordinate(v, tile.V0) && found.Position[v] < grid.Coordinate(v, tile.V1)))
+    // tile side would put the two chords along it): decided for x alone -
+    // its position is on the side of every lattice plane the exact tests
+    // say - so that a tile and its sub-tiles decide alike.
+    if (!arrangement.PlacedAsDecided(ArrangementPoint::EdgeOnPlane(p.A, p.B, axis, plane), found.Position))
     {
       return std::nullopt;
     }

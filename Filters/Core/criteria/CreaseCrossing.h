@@ -27,9 +27,10 @@
 // triangle lists. x's computed position must be strictly inside the tile
 // too (the exact test is on the perturbed mesh: a crease crossing within
 // rounding of a tile side would put the chords along the side, where the
-// output is not embedded - a fuzzer found it); MeshArrangement::Position
-// keeps x inside the finest lattice interval holding it, so that too is
-// decided alike by both sides and for a tile and its sub-tiles. The extraction draws crease tiles between two cells of
+// output is not embedded - a fuzzer found it); it is required as a property
+// of x alone, on the side of every lattice plane the exact tests say
+// (MeshArrangement::PlacedAsDecided), so that too is decided alike by both
+// sides and for a tile and its sub-tiles. The extraction draws crease tiles between two cells of
 // the same lone mesh leaf that are not exact (CrackPatching.h); an exact
 // neighbour draws the whole trace, a polyline through x on the same halves.
 #pragma once

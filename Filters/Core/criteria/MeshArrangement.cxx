@@ -143,10 +143,6 @@ Vec3 MeshArrangement::Position(const ArrangementPoint& p) const
     const double e = this->Grid.Coordinate(b, p.Lattice[b]);
     Vec3 x = P + (Q - P) * ((e - P[b]) / (Q[b] - P[b]));
     x[b] = e;
-    for (const int a : { (b + 1) % 3, (b + 2) % 3 })
-    {
-      x[a] = this->WithinLatticeInterval(p, a, x[a]);
-    }
     return x;
   }
   const int a = p.Axis;
@@ -167,40 +163,31 @@ Vec3 MeshArrangement::Position(const ArrangementPoint& p) const
   return y;
 }
 
-double MeshArrangement::WithinLatticeInterval(const ArrangementPoint& p, int axis, double x) const
+bool MeshArrangement::PlacedAsDecided(const ArrangementPoint& p, const Vec3& position) const
 {
-  const double spacing = std::ldexp(this->Grid.RootSize, -this->Grid.MaxDepth);
-  const LatticeIndex extent = static_cast<LatticeIndex>(this->Grid.Dims[axis]) << this->Grid.MaxDepth;
-  const double guess = std::floor((x - this->Grid.Origin[axis]) / spacing);
-  if (!(guess >= 0.0 && guess < static_cast<double>(extent)))
+  for (int axis = 0; axis < 3; ++axis)
   {
-    return x; // outside the lattice: no tile holds it
-  }
-  // The interval [i, i + 1] whose planes p lies between, found from the
-  // rounded guess by exact side tests (a few steps at most: the rounding is
-  // far below the spacing, DoublePrecisionDepth).
-  LatticeIndex i = static_cast<LatticeIndex>(guess);
-  for (int step = 0; step < 4; ++step)
-  {
-    if (i > 0 && this->Side(p, axis, i) < 0)
+    if (p.FixedCoordinate(axis) >= 0)
     {
-      --i;
+      continue; // (on its lattice plane or line exactly)
     }
-    else if (i + 1 < extent && this->Side(p, axis, i + 1) > 0)
+    const double x = position[axis];
+    const LatticeIndex extent = static_cast<LatticeIndex>(this->Grid.Dims[axis]) << this->Grid.MaxDepth;
+    const double guess = std::floor((x - this->Grid.Origin[axis]) / this->Grid.Spacing());
+    if (!(guess >= 0.0 && guess < static_cast<double>(extent)))
     {
-      ++i;
+      return false; // outside the lattice
     }
-    else
+    // The lattice planes i and i + 1 around x, as rounded, must have p
+    // between them by the exact tests too (then every lattice plane does).
+    const LatticeIndex i = static_cast<LatticeIndex>(guess);
+    const double lo = this->Grid.Coordinate(axis, i), hi = this->Grid.Coordinate(axis, i + 1);
+    if (!(lo < x && x < hi && this->Side(p, axis, i) > 0 && this->Side(p, axis, i + 1) < 0))
     {
-      break;
+      return false;
     }
   }
-  if (this->Side(p, axis, i) < 0 || (i + 1 < extent && this->Side(p, axis, i + 1) > 0))
-  {
-    return x; // (not found: left as computed)
-  }
-  const double lo = this->Grid.Coordinate(axis, i), hi = this->Grid.Coordinate(axis, i + 1);
-  return std::clamp(x, std::nextafter(lo, hi), std::nextafter(hi, lo));
+  return true;
 }
 
 std::vector<ClippedVertex> MeshArrangement::ClipTriangle(

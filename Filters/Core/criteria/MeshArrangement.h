@@ -28,13 +28,10 @@
 // Positions are computed once per point from the mesh and the lattice alone
 // (an edge's crossing from its lower-numbered vertex), so every cell that
 // meets a point places it at the same coordinates, exactly on its lattice
-// plane or line. An edge's crossing is moved, where rounding put it on or
-// past a lattice plane its side tests put it before, to the nearest double
-// strictly inside the finest lattice interval that holds it (a move of the
-// order of the rounding, within RoundingSlack, MeshCellError.h): its
-// position is then strictly inside every tile the exact tests put it in, at
-// every level, which makes "x is inside the tile" the same decision for a
-// tile and its sub-tiles (CreaseCrossing.h).
+// plane or line. PlacedAsDecided says whether a position lies strictly on
+// the side of every lattice plane that the exact tests say (rounding may put
+// a point on or past a plane it is before): a property of the point alone,
+// the same for every tile and sub-tile holding it (CreaseCrossing.h).
 #pragma once
 
 #include "MeshSolid.h"
@@ -87,6 +84,11 @@ public:
   /// (never on it; not asked of a point lying on that very plane).
   int Side(const ArrangementPoint& p, int axis, LatticeIndex coordinate) const;
   Vec3 Position(const ArrangementPoint& p) const;
+  /// Whether `position` (p's, as computed) lies strictly between the two
+  /// lattice planes of the finest level that p lies between by the exact
+  /// side tests, on every axis p is not fixed on; then it is on the decided
+  /// side of every lattice plane.
+  bool PlacedAsDecided(const ArrangementPoint& p, const Vec3& position) const;
 
   /// Triangle t clipped to the closed lattice box [lo, hi] (Sutherland and
   /// Hodgman, with the exact side tests), in t's orientation; empty when
@@ -108,11 +110,9 @@ public:
   bool Before(const ArrangementPoint& from, const ArrangementPoint& a, int axisB, LatticeIndex coordinateB) const;
 
   const MeshSolid& Mesh() const { return this->Solid; }
+  const RootGrid& Lattice() const { return this->Grid; }
 
 private:
-  /// Coordinate x of `p` on `axis`, within the finest lattice interval its
-  /// side tests put it in (the nearest double strictly inside).
-  double WithinLatticeInterval(const ArrangementPoint& p, int axis, double x) const;
   int VertexSide(const Vec3& p, int axis, double c) const;
   int EdgeSide(const ArrangementPoint& p, int axis, double c) const;
   int TriangleSide(const ArrangementPoint& p, int axis, double c) const;

@@ -21,6 +21,7 @@ std::vector<Vec3> ClipToHalfSpace(const std::vector<Vec3>& points, int axis, dou
 {
   std::vector<Vec3> out;
   const std::size_t m = points.size();
+  out.reserve(m + 1); // (a convex polygon gains at most one vertex)
   const auto kept = [&](const Vec3& p) { return below ? p[axis] <= value : p[axis] >= value; };
   for (std::size_t i = 0; i < m; ++i)
   {
@@ -308,14 +309,19 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
     const int axis = f / 2;
     const LatticeIndex plane = boundary.Base[axis] + (f % 2 ? boundary.Size : 0);
     double chord = HUGE_VAL;
-    for (const FaceTile& t : boundary.Tiles[f])
+    for (std::size_t k = 0; k < boundary.Tiles[f].size(); ++k)
     {
+      const FaceTile& t = boundary.Tiles[f][k];
       if (p.Kind == CrossingKind::MeshEdge || q.Kind == CrossingKind::MeshEdge)
       {
-        // The crease tile whose crease crossing this is.
+        // The crease tile whose crease crossing this is (marked in
+        // boundary.Creases; its halves walked again here).
         const bool fromCrease = p.Kind == CrossingKind::MeshEdge;
-        const auto crease = CreaseOnTile(*leaf, primitives, grid, axis, plane, t);
-        if (crease && crease->X.SameVertex(fromCrease ? p : q))
+        const Crossing& x = fromCrease ? p : q;
+        const bool marked = k < boundary.Creases[f].size() && boundary.Creases[f][k] &&
+          boundary.Creases[f][k]->SameVertex(x);
+        const auto crease = marked ? CreaseOnTile(*leaf, primitives, grid, axis, plane, t) : std::nullopt;
+        if (crease && crease->X.SameVertex(x))
         {
           chord = CreaseChordDeviation(*crease, fromCrease ? b : a);
           break;

@@ -10,8 +10,8 @@ namespace tpc
 {
 namespace
 {
-/// Distance between two boxes (0 when they overlap).
-double BoxDistance(const Box3& a, const Box3& b)
+/// Squared distance between two boxes (0 when they overlap).
+double BoxDistance2(const Box3& a, const Box3& b)
 {
   double sum = 0.0;
   for (int k = 0; k < 3; ++k)
@@ -19,7 +19,7 @@ double BoxDistance(const Box3& a, const Box3& b)
     const double gap = std::max({ 0.0, a.lo[k] - b.hi[k], b.lo[k] - a.hi[k] });
     sum += gap * gap;
   }
-  return std::sqrt(sum);
+  return sum;
 }
 
 Box3 BoundsOf(const Vec3* points, std::size_t count)
@@ -44,8 +44,8 @@ struct Piece
   bool operator<(const Piece& o) const { return this->Upper < o.Upper; }
 };
 
-/// Distance from a point to a box (0 inside).
-double PointBoxDistance(const Vec3& p, const Box3& b)
+/// Squared distance from a point to a box (0 inside).
+double PointBoxDistance2(const Vec3& p, const Box3& b)
 {
   double sum = 0.0;
   for (int k = 0; k < 3; ++k)
@@ -53,7 +53,7 @@ double PointBoxDistance(const Vec3& p, const Box3& b)
     const double gap = std::max({ 0.0, b.lo[k] - p[k], p[k] - b.hi[k] });
     sum += gap * gap;
   }
-  return std::sqrt(sum);
+  return sum;
 }
 
 /// The piece's bound ((1) and (2) of the header) from the targets among
@@ -65,34 +65,36 @@ double PointBoxDistance(const Vec3& p, const Box3& b)
 void Evaluate(Piece& piece, const std::vector<std::uint32_t>& candidates, double parentUpper,
   const std::vector<ConvexPolygon>& targets, double& lower, std::vector<std::pair<double, std::uint32_t>>& order)
 {
+  // (Box distances are compared squared: no square root per target.)
   const Box3 box = BoundsOf(piece.Vertices.data(), 3);
+  const double parentUpper2 = parentUpper * parentUpper;
   order.clear();
   for (const std::uint32_t t : candidates)
   {
-    const double d = BoxDistance(box, targets[t].Bounds);
-    if (d <= parentUpper)
+    const double d2 = BoxDistance2(box, targets[t].Bounds);
+    if (d2 <= parentUpper2)
     {
-      order.emplace_back(d, t);
+      order.emplace_back(d2, t);
     }
   }
   std::sort(order.begin(), order.end());
   double nearest[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL };
   double single = HUGE_VAL;
-  for (const auto& [boxDistance, t] : order)
+  for (const auto& [boxDistance2, t] : order)
   {
-    if (boxDistance >= single && boxDistance >= nearest[0] && boxDistance >= nearest[1] &&
-      boxDistance >= nearest[2])
+    const double largest = std::max({ single, nearest[0], nearest[1], nearest[2] });
+    if (boxDistance2 >= largest * largest)
     {
       break; // (sorted: no later target can lower either)
     }
     const ConvexPolygon& target = targets[t];
     // Whether this target may give a smaller single-target bound: then all
     // three distances are needed, until one reaches the current bound.
-    bool improvesSingle = boxDistance < single;
+    bool improvesSingle = boxDistance2 < single * single;
     double farthest = 0.0;
     for (int i = 0; i < 3; ++i)
     {
-      const bool improvesNearest = PointBoxDistance(piece.Vertices[i], target.Bounds) < nearest[i];
+      const bool improvesNearest = PointBoxDistance2(piece.Vertices[i], target.Bounds) < nearest[i] * nearest[i];
       if (!improvesNearest && !improvesSingle)
       {
         continue;
@@ -116,10 +118,12 @@ void Evaluate(Piece& piece, const std::vector<std::uint32_t>& candidates, double
   }
   piece.Upper = std::min(single, vertexMax + radius);
   lower = std::max(lower, vertexMax == HUGE_VAL ? 0.0 : vertexMax);
+  const double upper2 = piece.Upper * piece.Upper;
   piece.Candidates.clear();
-  for (const auto& [boxDistance, t] : order)
+  piece.Candidates.reserve(order.size());
+  for (const auto& [boxDistance2, t] : order)
   {
-    if (boxDistance <= piece.Upper)
+    if (boxDistance2 <= upper2)
     {
       piece.Candidates.push_back(t);
     }
@@ -140,15 +144,33 @@ ConvexPolygon MakeConvexPolygon(std::vector<Vec3> points)
   const double length = Norm(normal);
   polygon.Normal = length > 0.0 ? normal * (1.0 / length) : Vec3();
   polygon.Bounds = m ? BoundsOf(polygon.Points.data(), m) : Box3{};
+  if (m >= 3 && length > 0.0)
+  {
+    polygon.Inward.resize(m);
+    for (std::size_t i = 0; i < m; ++i)
+    {
+      polygon.Inward[i] = Cross(polygon.Normal, polygon.Points[(i + 1) % m] - polygon.Points[i]);
+    }
+  }
   return polygon;
 }
 
-double SegmentDistance(const Vec3& p, const Vec3& a, const Vec3& b)
+namespace
+{
+/// Squared distance from `p` to the segment [a, b].
+double SegmentDistance2(const Vec3& p, const Vec3& a, const Vec3& b)
 {
   const Vec3 ab = b - a;
   const double length2 = Dot(ab, ab);
   const double t = length2 > 0.0 ? std::clamp(Dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
-  return Norm(p - (a + ab * t));
+  const Vec3 d = p - (a + ab * t);
+  return Dot(d, d);
+}
+} // namespace
+
+double SegmentDistance(const Vec3& p, const Vec3& a, const Vec3& b)
+{
+  return std::sqrt(SegmentDistance2(p, a, b));
 }
 
 double PolygonDistance(const Vec3& p, const ConvexPolygon& polygon)
@@ -159,28 +181,29 @@ double PolygonDistance(const Vec3& p, const ConvexPolygon& polygon)
   {
     return Norm(p - v[0]);
   }
-  const Vec3& n = polygon.Normal;
-  if (m >= 3 && Dot(n, n) > 0.0)
+  if (!polygon.Inward.empty())
   {
-    // Inside the polygon's prism: the distance to its plane.
-    const double height = Dot(p - v[0], n);
-    const Vec3 q = p - n * height;
-    bool inside = true;
-    for (std::size_t i = 0; i < m && inside; ++i)
+    // Inside the polygon's prism: the distance to its plane. Outside it, the
+    // nearest point of a convex polygon lies on an edge whose line has p's
+    // projection on its outer side (a nearest vertex has such an edge too):
+    // only those edges are measured. (Inward is normal to the polygon's
+    // normal, so p's side of an edge is its projection's.)
+    double d2 = HUGE_VAL;
+    for (std::size_t i = 0; i < m; ++i)
     {
-      inside = Dot(Cross(v[(i + 1) % m] - v[i], q - v[i]), n) >= 0.0;
+      if (Dot(p - v[i], polygon.Inward[i]) < 0.0)
+      {
+        d2 = std::min(d2, SegmentDistance2(p, v[i], v[(i + 1) % m]));
+      }
     }
-    if (inside)
-    {
-      return std::fabs(height);
-    }
+    return d2 == HUGE_VAL ? std::fabs(Dot(p - v[0], polygon.Normal)) : std::sqrt(d2);
   }
-  double d = HUGE_VAL;
+  double d2 = HUGE_VAL;
   for (std::size_t i = 0; i < m; ++i)
   {
-    d = std::min(d, SegmentDistance(p, v[i], v[(i + 1) % m]));
+    d2 = std::min(d2, SegmentDistance2(p, v[i], v[(i + 1) % m]));
   }
-  return d;
+  return std::sqrt(d2);
 }
 
 HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
@@ -214,7 +237,9 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
     {
       break;
     }
-    const Piece parent = pieces.top();
+    // (Moved out before pop: the top is not read again, and its candidate
+    // list need not be copied.)
+    const Piece parent = std::move(const_cast<Piece&>(pieces.top()));
     pieces.pop();
     const SourceTriangle& v = parent.Vertices;
     const Vec3 m01 = (v[0] + v[1]) * 0.5, m12 = (v[1] + v[2]) * 0.5, m20 = (v[2] + v[0]) * 0.5;

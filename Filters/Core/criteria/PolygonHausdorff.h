@@ -41,6 +41,9 @@ struct ConvexPolygon
   std::vector<Vec3> Points;
   Vec3 Normal; ///< unit, from the vertex order (Newell); zero when degenerate
   Box3 Bounds;
+  /// Normal x (edge from Points[i] to Points[i + 1]): points into the polygon
+  /// within its plane (empty when degenerate).
+  std::vector<Vec3> Inward;
 };
 
 /// The polygon with `points` (convex, planar, in order) and its normal and box.

@@ -6,7 +6,9 @@
 
 #include "Vector3.h"
 
+#include <cmath>
 #include <cstdint>
+#include <cstring>
 
 namespace tpc
 {
@@ -112,7 +114,21 @@ struct RootGrid
   /// predicates then decide on these doubles as given.
   double Coordinate(int axis, LatticeIndex i) const
   {
-    return Origin[axis] + static_cast<double>(i) * std::ldexp(RootSize, -MaxDepth);
+    return Origin[axis] + static_cast<double>(i) * Spacing();
+  }
+  /// The lattice spacing RootSize / 2^MaxDepth, exactly (a product by a
+  /// power of two), built from the exponent's bits: Coordinate is on every
+  /// hot path, and std::ldexp is a library call.
+  double Spacing() const
+  {
+    if (MaxDepth > 1022 || MaxDepth < -1022)
+    {
+      return std::ldexp(RootSize, -MaxDepth);
+    }
+    const std::uint64_t bits = static_cast<std::uint64_t>(1023 - MaxDepth) << 52;
+    double scale;
+    std::memcpy(&scale, &bits, sizeof scale);
+    return RootSize * scale;
   }
   Vec3 Point(const LatticeIndex p[3]) const
   {

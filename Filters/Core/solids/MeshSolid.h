@@ -60,6 +60,8 @@ public:
   /// Signed distance to the nearest of `triangles` (sign from that triangle's
   /// side; for placing vertices only - topology never uses it).
   double ApproximateSignedDistance(const Vec3& p, const TriangleList& triangles, std::uint32_t* nearest = nullptr) const;
+  /// The box of triangle t's vertices (their exact minima and maxima).
+  const Box3& TriangleBounds(std::uint32_t t) const { return this->FaceBoxes[t]; }
   /// Vertex k (0..2) of triangle t.
   const Vec3& Vertex(std::uint32_t t, int k) const { return this->Vertices[this->Faces[t][k]]; }
 

@@ -13,8 +13,10 @@ namespace tpc
 namespace
 {
 /// Long loops run in chunks reporting progress, so that an abort request
-/// stops them within a chunk (Parallel.h).
-constexpr std::size_t Chunk = 4096;
+/// stops them within a chunk (Parallel.h). (256 cells: a cell's tests can
+/// take milliseconds - 4096 kept an abort waiting half a minute on a scene of
+/// two quadrics meeting at a grazing angle.)
+constexpr std::size_t Chunk = 256;
 
 CellState StateOf(RegionSign s)
 {

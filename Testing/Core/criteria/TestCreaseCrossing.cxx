@@ -95,12 +95,17 @@ TEST(CreaseCrossing, CreaseTilesAndTheirTraceHalves)
 {
   SceneBuilder b;
   b.Finish(b.Mesh(Tent(0.8, 0.02)));
-  // Lattice spacing 1/128 over [-1, 1]^3.
-  const tpc::RootGrid grid = tpctest::SingleRoot({ -1, -1, -1 }, 2.0, 8);
+  // Lattice spacing 1/128 over [-1, 1]^3, its x planes shifted by 0.3 of a
+  // spacing: the ridge (x = 0.5) is off every lattice plane (as the filter's
+  // lattice placement keeps creases; on one, its crossing's position would
+  // sit on the plane and no tile holding it is a crease tile).
+  const double shift = 0.3 / 128;
+  const tpc::RootGrid grid = tpctest::SingleRoot({ -1 - shift, -1, -1 }, 2.0, 8);
   const auto leafOf = [&](const tpc::Box3& box) {
     return tpc::CsgExpression::Prune(b.Scene.Expression, box, b.Scene.Primitives).Expression;
   };
   const auto lattice = [](double x) { return static_cast<tpc::LatticeIndex>(std::llround((x + 1) * 128)); };
+  const auto latticeX = [&](double x) { return static_cast<tpc::LatticeIndex>(std::llround((x + 1 + shift) * 128)); };
   // The face y = 0.5 (axis 1), tile x in [0.4375, 0.5625], z in [0.5,
   // 0.875]: the ridge crosses it at (0.5, 0.5, 0.8), no other edge does.
   const int axis = 1;
@@ -108,8 +113,8 @@ TEST(CreaseCrossing, CreaseTilesAndTheirTraceHalves)
   tpc::FaceTile tile; // (u = z, v = x for axis 1)
   tile.U0 = lattice(0.5);
   tile.U1 = lattice(0.875);
-  tile.V0 = lattice(0.4375);
-  tile.V1 = lattice(0.5625);
+  tile.V0 = latticeX(0.4375);
+  tile.V1 = latticeX(0.5625);
   const auto pruned = leafOf({ { -1, -1, -1 }, { 1, 1, 1 } });
   const tpc::CsgLeaf* leaf = tpc::LoneMeshLeaf(*pruned);
   ASSERT_NE(leaf, nullptr);
@@ -124,19 +129,19 @@ TEST(CreaseCrossing, CreaseTilesAndTheirTraceHalves)
   for (const auto& half : crease->Sides)
   {
     ASSERT_EQ(half.size(), 1u);
-    EXPECT_FALSE(half[0][0] > 0.4375 && half[0][0] < 0.5625 && half[0][2] > 0.5 && half[0][2] < 0.875);
+    EXPECT_FALSE(half[0][0] > 0.4375 - shift && half[0][0] < 0.5625 - shift && half[0][2] > 0.5 && half[0][2] < 0.875);
   }
   // A wider tile, x in [0.125, 0.5625], z in [0, 0.875], also holds the
   // flat diagonal at x = 0.375 and the gentle bend at x = 0.25: still a
   // crease tile, its left half passing both before it leaves.
-  tile.V0 = lattice(0.125);
+  tile.V0 = latticeX(0.125);
   tile.U0 = lattice(0.0);
   const auto wide = tpc::CreaseOnTile(*leaf, b.Scene.Primitives, grid, axis, plane, tile);
   ASSERT_TRUE(wide.has_value());
   EXPECT_EQ(std::max(wide->Sides[0].size(), wide->Sides[1].size()), 3u);
   EXPECT_EQ(std::min(wide->Sides[0].size(), wide->Sides[1].size()), 1u);
   // A tile away from the ridge holds no crease.
-  tile.V1 = lattice(0.375);
+  tile.V1 = latticeX(0.375);
   EXPECT_FALSE(tpc::CreaseOnTile(*leaf, b.Scene.Primitives, grid, axis, plane, tile).has_value());
 }
 
