@@ -28,9 +28,11 @@
 #include "vtkTypeInt32Array.h"
 
 #include "Contour.h"
+#include "CreaseSplit.h"
 
 #include <algorithm>
 #include <functional>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -146,12 +148,25 @@ vtkSmartPointer<ArrayT> TakeOver(tpc::ReleasableArray<T>& values, int components
   return array;
 }
 
-/// The surface with its normals, each triangle's grid cell and solid. The
-/// core's points, normals, triangles and solids become the output's arrays
-/// without a copy (ReleasableArray.h); the result's mesh is left empty.
-void MoveSurface(tpc::ContourResult& result, const std::vector<vtkIdType>& nodeToCell, vtkPolyData* out)
+/// The surface with its normals, each triangle's grid cell and solid, its
+/// points split along creases first when `creaseAngle` is set (CreaseSplit.h;
+/// "SurfacePointId" then maps them back). The core's points, normals,
+/// triangles and solids become the output's arrays without a copy
+/// (ReleasableArray.h); the result's mesh is left empty.
+void MoveSurface(tpc::ContourResult& result, const std::vector<vtkIdType>& nodeToCell,
+  std::optional<double> creaseAngle, vtkPolyData* out)
 {
   tpc::TriangleMesh& mesh = result.Extraction.Mesh;
+  if (creaseAngle)
+  {
+    std::vector<std::uint32_t> surfacePoint;
+    tpc::SplitAtCreases(mesh, *creaseAngle, surfacePoint);
+    vtkNew<vtkIdTypeArray> surfacePointId;
+    surfacePointId->SetName("SurfacePointId");
+    surfacePointId->SetNumberOfValues(static_cast<vtkIdType>(surfacePoint.size()));
+    std::copy(surfacePoint.begin(), surfacePoint.end(), surfacePointId->GetPointer(0));
+    out->GetPointData()->AddArray(surfacePointId);
+  }
   auto solidId = TakeOver<vtkIntArray, 1>(result.TriangleSolid, 1);
   solidId->SetName("SolidId");
   vtkNew<vtkIdTypeArray> gridCell;
@@ -467,7 +482,8 @@ int vtkTopologyPreservingContour::RequestData(
     return aborted();
   }
   tpc::vtkadapter::AddCertifiedErrors(gridOut, nodeToCell, result.Extraction.CellErrors);
-  MoveSurface(result, nodeToCell, surfaceOut);
+  MoveSurface(result, nodeToCell,
+    this->SplitCreases ? std::optional<double>(this->CreaseAngle) : std::nullopt, surfaceOut);
   surfaceOut->GetFieldData()->Initialize(); // (ConvertOctree initialized the grid)
   AddReport(gridOut, result.Report);
   AddReport(surfaceOut, result.Report);
@@ -489,4 +505,6 @@ void vtkTopologyPreservingContour::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ToleranceIsRelative: " << this->ToleranceIsRelative << "\n";
   os << indent << "MaximumDepth: " << this->MaximumDepth << "\n";
   os << indent << "MaximumNumberOfCells: " << this->MaximumNumberOfCells << "\n";
+  os << indent << "SplitCreases: " << this->SplitCreases << "\n";
+  os << indent << "CreaseAngle: " << this->CreaseAngle << "\n";
 }

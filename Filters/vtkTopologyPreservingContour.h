@@ -35,7 +35,8 @@
  *   cell data "GridCell" (the hyper tree grid cell each triangle was
  *   extracted from) and "SolidId" (the solid whose surface the triangle lies
  *   on: its input connection index, the number of input connections for the
- *   ImplicitFunction, -1 on a cap of Bounds).
+ *   ImplicitFunction, -1 on a cap of Bounds). With SplitCreases, points along
+ *   creases are split for shading and "SurfacePointId" maps them back.
  * - Port 1, vtkHyperTreeGrid: the adaptive grid. Cell data: "Depth" (level),
  *   "SplitReason" (why the cell was split, see SplitReasons; NOT_SPLIT on
  *   leaves), "SizeReason" (the parent's SplitReason: why the cell is as small
@@ -225,6 +226,29 @@ public:
   vtkGetMacro(MaximumNumberOfCells, vtkIdType);
   ///@}
 
+  ///@{
+  /**
+   * Shade creases crisply: give each point of the surface where two or more
+   * creases meet (edges whose triangles' normals differ by CreaseAngle
+   * degrees or more) one point per wedge of triangles between them, each
+   * with its wedge's normal, as vtkPolyDataNormals' Splitting does. The
+   * copies keep their original's coordinates, so the surface is the same
+   * closed, embedded point set and the topology report stands, but its
+   * triangles no longer share points across creases: an edge-based check of
+   * closedness then sees boundaries there. The point array "SurfacePointId"
+   * maps every point to the point of the unsplit surface (of this piece,
+   * in a distributed run); merging by it, or merging points at equal
+   * coordinates (vtkStaticCleanPolyData, tolerance 0), recovers it. Default: off in VTK (the
+   * output is the closed indexed surface), on in the ParaView plugin (its
+   * default rendering). CreaseAngle: 30 degrees, clamped to [0, 180].
+   */
+  vtkSetMacro(SplitCreases, bool);
+  vtkGetMacro(SplitCreases, bool);
+  vtkBooleanMacro(SplitCreases, bool);
+  vtkSetClampMacro(CreaseAngle, double, 0.0, 180.0);
+  vtkGetMacro(CreaseAngle, double);
+  ///@}
+
   /// Outputs: the surface (port 0) and the adaptive grid (port 1).
   vtkPolyData* GetSurfaceOutput();
   vtkHyperTreeGrid* GetGridOutput();
@@ -251,6 +275,8 @@ protected:
   bool ToleranceIsRelative = true;
   int MaximumDepth = 40;
   vtkIdType MaximumNumberOfCells = 10000000;
+  bool SplitCreases = false;
+  double CreaseAngle = 30.0;
 
 private:
   vtkTopologyPreservingContour(const vtkTopologyPreservingContour&) = delete;

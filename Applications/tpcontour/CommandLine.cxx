@@ -47,6 +47,11 @@ Options:
       --fill-holes       close the holes of open inputs (the filter's FillHoles,
                          vtkFillHolesFilter; reported as a repair) instead of
                          refusing them
+      --split-creases    split the surface's points along its creases (edges
+                         of 30 degrees or more) for crisp shading: each copy
+                         has its side's normal, SurfacePointId maps it back
+                         (the .vtp is then no longer closed by shared points:
+                         leave it off for CAD or mesh Booleans)
       --json             print the report as JSON on standard output (with
                          --batch: an array, one report per input)
   -q, --quiet            no progress bar, no warnings
@@ -170,11 +175,12 @@ std::string ParseOption(const std::string& a, const std::vector<std::string>& ar
     }
     o.MaxCells = static_cast<long long>(x);
   }
-  else if (a == "--batch" || a == "--grids" || a == "--fill-holes" || a == "--json" || a == "-q" || a == "--quiet")
+  else if (a == "--batch" || a == "--grids" || a == "--fill-holes" || a == "--split-creases" || a == "--json" || a == "-q" || a == "--quiet")
   {
     bool& flag = a == "--batch" ? o.Batch
       : a == "--grids"          ? o.Grids
       : a == "--fill-holes"     ? o.FillHoles
+      : a == "--split-creases"  ? o.SplitCreases
       : a == "--json"           ? o.Json
                                 : o.Quiet;
     flag = true;

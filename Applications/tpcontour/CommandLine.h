@@ -27,6 +27,7 @@ struct Options
   int MaxDepth = 40;
   long long MaxCells = 10000000;
   bool FillHoles = false;
+  bool SplitCreases = false; ///< the filter's SplitCreases (crisp shading)
   bool Json = false, Quiet = false, Help = false;
 };
 

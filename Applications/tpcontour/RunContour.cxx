@@ -48,6 +48,7 @@ void Configure(vtkTopologyPreservingContour* filter, const Options& o)
   filter->SetMaximumDepth(o.MaxDepth);
   filter->SetMaximumNumberOfCells(o.MaxCells);
   filter->SetFillHoles(o.FillHoles);
+  filter->SetSplitCreases(o.SplitCreases);
 }
 
 /// Writes the surface (.stl or .vtp) and the grid (.htg, if asked for);

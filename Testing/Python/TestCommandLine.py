@@ -238,6 +238,21 @@ code, out, err = run("textured-cube.obj", "-t", "1/16", "--json", "-o", "texture
 report = json.loads(out) if code == 0 else {}
 check(code == 0 and report.get("components") == 1 and report.get("genus") == 0 and report.get("guaranteed"),
       f"vtkOBJWriter's textured cube: read, one component, genus 0, guaranteed ({code}, {err.strip()[:200]})")
+# --split-creases (the filter's SplitCreases): the same cube, its points split
+# along its edges (more points, SurfacePointId mapping them back to the
+# unsplit surface's), the same triangles.
+code, out, err = run("textured-cube.obj", "-t", "1/16", "--split-creases", "-q", "-o", "split-cube.vtp")
+plain, split = vtkXMLPolyDataReader(), vtkXMLPolyDataReader()
+plain.SetFileName("textured-cube.vtp")
+split.SetFileName("split-cube.vtp")
+plain.Update()
+split.Update()
+ids = split.GetOutput().GetPointData().GetArray("SurfacePointId") if code == 0 else None
+check(ids is not None and plain.GetOutput().GetPointData().GetArray("SurfacePointId") is None
+      and split.GetOutput().GetNumberOfPolys() == plain.GetOutput().GetNumberOfPolys()
+      and split.GetOutput().GetNumberOfPoints() > plain.GetOutput().GetNumberOfPoints()
+      and max(ids.GetValue(i) for i in range(ids.GetNumberOfTuples())) + 1 == plain.GetOutput().GetNumberOfPoints(),
+      f"--split-creases: the cube's points split along its edges ({code}, {err.strip()[:200]})")
 with open("bad-reference.obj", "w") as f:
     f.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\nf 1/1 3/1 9/1\nf 2 3 4\n")
 code, _, err = run("bad-reference.obj")

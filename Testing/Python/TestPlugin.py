@@ -46,6 +46,7 @@ sphere.SetRadius(0.5)
 f = vtkTopologyPreservingContour()
 f.SetImplicitFunction(sphere)
 f.SetTolerance(0.02)
+f.SplitCreasesOn()  # the plugin's default (VTK's is off)
 f.Update()
 direct = f.GetOutputDataObject(0)
 check(direct.GetNumberOfPolys() == surface.GetNumberOfPolys()
@@ -72,6 +73,46 @@ for name, setup, genus in (("Plane", lambda fn: setattr(fn, "Offset", 0.3), 0),
         expected = fn.Origin[0] + fn.Offset * fn.Normal[0]
         check(list(fn.Normal) == [1, 0, 0] and abs(out.GetBounds()[1] - expected) < 1e-6,
               f"the plane's Offset is honoured ({out.GetBounds()[1]} vs {expected})", failures)
+
+# Issue 17: the plugin splits points along creases (SplitCreases, on by
+# default here, off in VTK), so a cube's every point carries its face's
+# normals and the edges shade crisply (no crease has its two triangles sharing
+# points, 184 do unsplit). The cube is tilted off the lattice's axes, its
+# edges rebuilt as output edges (crease tiles).
+def shared_creases(mesh):
+    """Edges of 30 degrees or more whose two triangles share both points: where point
+    normals are averaged across a crease."""
+    from vtkmodules.vtkFiltersCore import vtkFeatureEdges
+    edges = vtkFeatureEdges()
+    edges.SetInputData(mesh)
+    edges.BoundaryEdgesOff()
+    edges.NonManifoldEdgesOff()
+    edges.ManifoldEdgesOff()
+    edges.FeatureEdgesOn()
+    edges.SetFeatureAngle(30.0)
+    edges.Update()
+    return edges.GetOutput().GetNumberOfCells()
+
+
+from paraview.simple import Box, Transform  # noqa: E402
+tilted = Transform(Input=Box(XLength=1.0, YLength=1.0, ZLength=1.0))
+tilted.Transform.Rotate = [17.0, 29.0, 41.0]
+crisp = TopologyPreservingContour(Input=tilted)  # noqa: F821
+crisp.Tolerance = 1.0 / 64
+crisp.UpdatePipeline()
+split = servermanager.Fetch(crisp)
+crisp.SplitCreases = 0
+crisp.UpdatePipeline()
+closed = servermanager.Fetch(crisp)
+m = measure(split)  # through SurfacePointId
+check(field(split, "TopologyGuaranteed") == 1 and m["boundary"] == 0 and m["genus"] == 0
+      and split.GetPointData().GetArray("SurfacePointId") is not None
+      and closed.GetPointData().GetArray("SurfacePointId") is None
+      and split.GetNumberOfPoints() > closed.GetNumberOfPoints()
+      and shared_creases(split) == 0 and shared_creases(closed) > 100,
+      f"SplitCreases gives each face of a tilted cube its own points ({split.GetNumberOfPoints()} points,"
+      f" {closed.GetNumberOfPoints()} unsplit; creases across shared points {shared_creases(split)}, unsplit"
+      f" {shared_creases(closed)})", failures)
 
 # Issue 18: the surface is port 0, so what paraview.simple does with a proxy's
 # first port - SaveData, Fetch, a filter's Input - takes the surface.
