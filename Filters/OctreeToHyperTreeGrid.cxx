@@ -10,7 +10,9 @@
 #include "vtkStringArray.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <cmath>
+#include <deque>
 
 namespace tpc
 {
@@ -45,34 +47,44 @@ struct VisitProgress
   }
 };
 
-/// `sizeReason`: why the parent was split, i.e. why this cell is this small.
-void Visit(const AdaptiveOctree& tree, std::size_t node, SplitReason sizeReason,
-  vtkHyperTreeGridNonOrientedCursor* cursor, const Arrays& arrays, std::vector<vtkIdType>& nodeToCell,
-  VisitProgress& progress)
+/// One tree's cells numbered breadth first, as vtkXMLHyperTreeGridReader
+/// numbers them: written and read back, a cell keeps its index, so the
+/// surface's GridCell names the same cell in the files as in memory (a
+/// depth-first numbering did not survive the round trip).
+void VisitBreadthFirst(const AdaptiveOctree& tree, std::size_t root, vtkHyperTree* vtkTree, vtkIdType start,
+  const Arrays& arrays, std::vector<vtkIdType>& nodeToCell, VisitProgress& progress)
 {
-  if (progress.Stop())
+  struct Queued
   {
-    return;
-  }
-  const OctreeNode& n = tree.Nodes[node];
-  const vtkIdType id = cursor->GetGlobalNodeIndex();
-  nodeToCell[node] = id;
-  arrays.Depth->InsertValue(id, n.Level);
-  arrays.Reason->InsertValue(id, static_cast<unsigned char>(n.Reason));
-  arrays.SizeReason->InsertValue(id, static_cast<unsigned char>(sizeReason));
-  arrays.State->InsertValue(id, static_cast<unsigned char>(n.State));
-  arrays.Failed->InsertValue(id, static_cast<unsigned char>(n.FailedTest));
-  if (n.IsLeaf())
+    std::size_t Node;
+    vtkIdType Vertex;       ///< the vtkHyperTree's own index
+    SplitReason SizeReason; ///< why the parent was split: why this cell is this small
+  };
+  std::deque<Queued> queue{ { root, 0, SplitReason::None } };
+  while (!queue.empty() && !progress.Stop())
   {
-    return;
-  }
-  cursor->SubdivideLeaf();
-  for (int c = 0; c < 8; ++c)
-  {
-    // Our child c = x + 2y + 4z is also vtkHyperTree's child order.
-    cursor->ToChild(static_cast<unsigned char>(c));
-    Visit(tree, static_cast<std::size_t>(n.FirstChild + c), n.Reason, cursor, arrays, nodeToCell, progress);
-    cursor->ToParent();
+    const Queued q = queue.front();
+    queue.pop_front();
+    const OctreeNode& n = tree.Nodes[q.Node];
+    const vtkIdType id = start + q.Vertex;
+    nodeToCell[q.Node] = id;
+    arrays.Depth->InsertValue(id, n.Level);
+    arrays.Reason->InsertValue(id, static_cast<unsigned char>(n.Reason));
+    arrays.SizeReason->InsertValue(id, static_cast<unsigned char>(q.SizeReason));
+    arrays.State->InsertValue(id, static_cast<unsigned char>(n.State));
+    arrays.Failed->InsertValue(id, static_cast<unsigned char>(n.FailedTest));
+    if (n.IsLeaf())
+    {
+      continue;
+    }
+    // Children are appended in the order leaves are subdivided: breadth first.
+    vtkTree->SubdivideLeaf(q.Vertex, static_cast<unsigned int>(n.Level - tree.Nodes[root].Level));
+    const vtkIdType elder = vtkTree->GetElderChildIndex(static_cast<unsigned int>(q.Vertex));
+    for (int c = 0; c < 8; ++c)
+    {
+      // Our child c = x + 2y + 4z is also vtkHyperTree's child order.
+      queue.push_back({ static_cast<std::size_t>(n.FirstChild + c), elder + c, n.Reason });
+    }
   }
 }
 } // namespace
@@ -106,21 +118,32 @@ bool ConvertOctree(const AdaptiveOctree& tree, vtkHyperTreeGrid* grid, std::vect
   const Arrays arrays{ depth, reason, sizeReason, state, failed };
   nodeToCell.assign(tree.Nodes.size(), -1);
 
+  // Trees in the grid's index order, as the writer writes them and the
+  // reader numbers them.
+  std::vector<std::pair<vtkIdType, int>> trees;
+  for (int t = 0; t < g.TreeCount(); ++t)
+  {
+    const OctreeNode& root = tree.Nodes[static_cast<std::size_t>(t)];
+    if (tree.RoleOf(root) == TreeRole::Own) // else another piece's tree: absent here (a distributed grid)
+    {
+      vtkIdType index = 0;
+      grid->GetIndexFromLevelZeroCoordinates(index, root.Ijk[0], root.Ijk[1], root.Ijk[2]);
+      trees.emplace_back(index, t);
+    }
+  }
+  std::sort(trees.begin(), trees.end());
   vtkNew<vtkHyperTreeGridNonOrientedCursor> cursor;
   vtkIdType offset = 0;
   VisitProgress visits{ progress, tree.Nodes.size() };
-  for (int t = 0; t < g.TreeCount() && !visits.Aborted; ++t)
+  for (const auto& [index, t] : trees)
   {
-    const OctreeNode& root = tree.Nodes[static_cast<std::size_t>(t)];
-    if (tree.RoleOf(root) != TreeRole::Own)
+    if (visits.Aborted)
     {
-      continue; // another piece's tree: absent here (a distributed grid)
+      break;
     }
-    vtkIdType index = 0;
-    grid->GetIndexFromLevelZeroCoordinates(index, root.Ijk[0], root.Ijk[1], root.Ijk[2]);
     grid->InitializeNonOrientedCursor(cursor, index, true);
     cursor->SetGlobalIndexStart(offset);
-    Visit(tree, static_cast<std::size_t>(t), SplitReason::None, cursor, arrays, nodeToCell, visits);
+    VisitBreadthFirst(tree, static_cast<std::size_t>(t), cursor->GetTree(), offset, arrays, nodeToCell, visits);
     offset += cursor->GetTree()->GetNumberOfVertices();
   }
   grid->GetCellData()->AddArray(depth);

@@ -229,8 +229,7 @@ TEST(HyperTreeGrid, TrianglesLieInTheSurfaceLeavesTheyName)
 
 TEST(HyperTreeGrid, RoundTripsThroughTheXmlWriter)
 {
-  vtkNew<vtkSphere> sphere;
-  const tpctest::FilterResult r = tpctest::Contour(sphere, 0.05);
+  const tpctest::FilterResult r = tpctest::Contour(DrilledSphere(), 0.04);
   const std::string path = std::string(::testing::TempDir()) + "/tpc_roundtrip.htg";
   vtkNew<vtkXMLHyperTreeGridWriter> writer;
   // VTK 9.2's appended mode (the default) writes a corrupt file for hyper
@@ -245,7 +244,46 @@ TEST(HyperTreeGrid, RoundTripsThroughTheXmlWriter)
   vtkHyperTreeGrid* back = vtkHyperTreeGrid::SafeDownCast(reader->GetOutputDataObject(0));
   ASSERT_NE(back, nullptr);
   EXPECT_EQ(back->GetNumberOfCells(), r.Grid->GetNumberOfCells());
-  EXPECT_NE(back->GetCellData()->GetArray("SplitReason"), nullptr);
+  // Cells keep their indices through the file (the reader numbers each tree
+  // breadth first, trees in index order: so does the filter), so the
+  // surface's GridCell names the same cell in the files as in memory: 1 968
+  // of 3 249 depths differed when cells were numbered depth first.
+  for (const char* name : { "Depth", "SplitReason", "SizeReason", "CellState", "FailedTest" })
+  {
+    vtkDataArray* before = r.Grid->GetCellData()->GetArray(name);
+    vtkDataArray* after = back->GetCellData()->GetArray(name);
+    ASSERT_TRUE(before && after) << name;
+    ASSERT_EQ(before->GetNumberOfTuples(), after->GetNumberOfTuples());
+    vtkIdType differ = 0;
+    for (vtkIdType i = 0; i < before->GetNumberOfTuples(); ++i)
+    {
+      differ += before->GetTuple1(i) != after->GetTuple1(i);
+    }
+    EXPECT_EQ(differ, 0) << name << " of " << before->GetNumberOfTuples() << " cells";
+  }
+  auto* gridCell = vtkIdTypeArray::SafeDownCast(r.Surface->GetCellData()->GetArray("GridCell"));
+  ASSERT_NE(gridCell, nullptr);
+  vtkIdType outside = 0;
+  for (vtkIdType t = 0; t < r.Surface->GetNumberOfCells(); t += 5)
+  {
+    double c[3] = { 0, 0, 0 };
+    for (int k = 0; k < 3; ++k)
+    {
+      double p[3];
+      r.Surface->GetPoint(r.Surface->GetCell(t)->GetPointId(k), p);
+      for (int a = 0; a < 3; ++a)
+      {
+        c[a] += p[a] / 3.0;
+      }
+    }
+    bool found = false;
+    for (const auto& candidate : LeavesContaining(back, c))
+    {
+      found = found || candidate.first == gridCell->GetValue(t);
+    }
+    outside += !found;
+  }
+  EXPECT_EQ(outside, 0) << "triangles not in the leaf their GridCell names in the file's grid";
   std::remove(path.c_str());
 }
 
