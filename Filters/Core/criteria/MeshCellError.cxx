@@ -42,13 +42,29 @@ std::vector<Vec3> ClipToHalfSpace(const std::vector<Vec3>& points, int axis, dou
   return out;
 }
 
-/// The polygon `points` clipped to the closed box (possibly degenerate).
+/// The polygon `points` clipped to the closed box (possibly degenerate). A
+/// side the polygon lies within is skipped, one it lies beyond empties it:
+/// what clipping would give, without building it (most triangles of a cell
+/// cross no side or one).
 std::vector<Vec3> ClipToBox(std::vector<Vec3> points, const Box3& box)
 {
   for (int axis = 0; axis < 3 && !points.empty(); ++axis)
   {
-    points = ClipToHalfSpace(points, axis, box.hi[axis], true);
-    if (!points.empty())
+    double lo = points[0][axis], hi = lo;
+    for (const Vec3& p : points)
+    {
+      lo = std::min(lo, p[axis]);
+      hi = std::max(hi, p[axis]);
+    }
+    if (lo > box.hi[axis] || hi < box.lo[axis])
+    {
+      return {};
+    }
+    if (hi > box.hi[axis])
+    {
+      points = ClipToHalfSpace(points, axis, box.hi[axis], true);
+    }
+    if (lo < box.lo[axis] && !points.empty())
     {
       points = ClipToHalfSpace(points, axis, box.lo[axis], false);
     }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <queue>
 #include <utility>
 
@@ -77,15 +78,20 @@ void Evaluate(Piece& piece, const std::vector<std::uint32_t>& candidates, double
       order.emplace_back(d2, t);
     }
   }
-  std::sort(order.begin(), order.end());
+  // Nearest box first from a heap, not a sort: the walk usually stops after
+  // a few targets.
+  const auto nearer = std::greater<std::pair<double, std::uint32_t>>();
+  std::make_heap(order.begin(), order.end(), nearer);
   double nearest[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL };
   double single = HUGE_VAL;
-  for (const auto& [boxDistance2, t] : order)
+  for (auto heapEnd = order.end(); heapEnd != order.begin(); --heapEnd)
   {
+    std::pop_heap(order.begin(), heapEnd, nearer);
+    const auto [boxDistance2, t] = *(heapEnd - 1);
     const double largest = std::max({ single, nearest[0], nearest[1], nearest[2] });
     if (boxDistance2 >= largest * largest)
     {
-      break; // (sorted: no later target can lower either)
+      break; // (nearest first: no later target can lower either)
     }
     const ConvexPolygon& target = targets[t];
     // Whether this target may give a smaller single-target bound: then all
