@@ -55,6 +55,7 @@ solid.AddFunction(holes)
 contour = vtkTopologyPreservingContour()
 contour.SetImplicitFunction(solid)
 contour.SetTolerance(0.01)  # two-sided Hausdorff bound: 1 % of the domain diagonal
+contour.SplitCreasesOn()  # crisp edges where the primitives meet, as in ParaView
 
 # --- A real mesh: CGAL's couplingdown.off (genus 9), remeshed at 1/64 ----------
 CGAL_DATA = "/usr/share/doc/libcgal-dev/data.tar.gz"  # Debian package libcgal-demo

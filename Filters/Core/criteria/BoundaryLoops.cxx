@@ -142,7 +142,8 @@ void FaceSegments(const CellBoundary& b, int f, std::vector<Segment>& segments)
     {
       const std::size_t first = segments.size();
       TileSegments(polygon, axis, plane, t, segments);
-      // A crease tile's one chord runs through the crease (CreaseCrossing.h).
+      // A crease tile's one chord runs through the crease (CreaseCrossing.h,
+      // CsgCreaseCrossing.h).
       if (k < b.Creases[f].size() && b.Creases[f][k] && segments.size() == first + 1 &&
         segments[first].first.Kind != CrossingKind::Bend && segments[first].second.Kind != CrossingKind::Bend)
       {
@@ -170,6 +171,14 @@ unsigned CrossingFaces(const Crossing& c, const LatticeIndex base[3], LatticeInd
   if (c.Kind == CrossingKind::MeshVertex)
   {
     return 0; // inside an exact cell
+  }
+  if (c.Kind == CrossingKind::CsgCrease)
+  {
+    const int axis = AxisOf(c.Tile - 1);
+    LatticeIndex corner[3];
+    SplitPointKey(PointOf(c.Tile - 1), corner);
+    return (corner[axis] == base[axis] ? 1u : 0u) << (2 * axis) |
+      (corner[axis] == base[axis] + size ? 1u : 0u) << (2 * axis + 1);
   }
   LatticeIndex p[3];
   SplitPointKey(PointOf(c.Key), p);

@@ -46,7 +46,11 @@ enum class CrossingKind : std::uint8_t
   /// high half) of mesh Tile meets the lattice plane Key (PlaneKey).
   MeshEdge = 3,
   /// Exact cells: vertex Key of mesh Tile, inside the cell.
-  MeshVertex = 4
+  MeshVertex = 4,
+  /// Where two quadric leaves' crease crosses a face tile (CsgCreaseCrossing.h):
+  /// Tile names the tile as for a bend, Key and Partner its far corner's
+  /// coordinates along the plane's two axes.
+  CsgCrease = 5
 };
 
 /// A lattice plane as a key: axis in the top bits, lattice coordinate below.
@@ -109,8 +113,9 @@ struct CellBoundary
   /// 0 (or empty) where they come from the samples.
   std::vector<std::uint8_t> ExactTile[6];
   std::vector<std::pair<Crossing, Crossing>> ExactSegments;
-  /// Per tile of face f (or empty): the crossing of a mesh crease that the
-  /// tile's chord is drawn through (CreaseCrossing.h), where it has one.
+  /// Per tile of face f (or empty): the crossing of a crease that the tile's
+  /// chord is drawn through, where it has one: a mesh's (CreaseCrossing.h)
+  /// or two quadric leaves' (CsgCreaseCrossing.h).
   std::vector<std::optional<Crossing>> Creases[6];
 };
 
@@ -126,7 +131,7 @@ BoundaryLoopSet TraceBoundaryLoops(CellBoundary& boundary);
 /// Faces of the cell with low corner `base` and edge `size` (lattice units)
 /// that a loop's crossing lies on: bit f (CubeTopology.h numbering); all six
 /// for a bend (never a fan point), none for a mesh vertex inside an exact
-/// cell.
+/// cell, its tile's face for a CSG crease.
 unsigned CrossingFaces(const Crossing& c, const LatticeIndex base[3], LatticeIndex size);
 
 } // namespace tpc

@@ -1,6 +1,7 @@
 #include "CrackPatching.h"
 
 #include "CreaseCrossing.h"
+#include "CsgCreaseCrossing.h"
 
 #include "ExactCell.h"
 
@@ -264,6 +265,14 @@ BoundaryLoopSet CellLoops(const AdaptiveOctree& tree, std::uint32_t cell, const 
         ? LoneMeshLeaf(*tree.Expressions[other])
         : nullptr;
       return theirs && theirs->Primitive == mine->Primitive;
+    });
+  }
+  else
+  {
+    // CSG crease tiles (CsgCreaseCrossing.h): decided from the tile alone, by
+    // every cell on both sides, except where an exact cell draws the tile.
+    MarkCsgCreaseTiles(boundary, tree.Expressions[cell], prims, tree.Grid, [&](int f, std::size_t k) {
+      return !(k < boundary.ExactTile[f].size() && boundary.ExactTile[f][k]);
     });
   }
   return TraceBoundaryLoops(boundary);

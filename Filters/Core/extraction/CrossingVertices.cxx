@@ -1,5 +1,6 @@
 #include "CrossingVertices.h"
 
+#include "CsgCreaseCrossing.h"
 #include "EdgeCrossings.h"
 #include "ExactCell.h"
 
@@ -95,10 +96,19 @@ bool PlaceCrossingVertices(const CrossingVertices& vertices, const AdaptiveOctre
       {
         continue; // bend vertices are placed from their crossings (PlaceBendVertices)
       }
-      const CsgExpression& e = *tree.Expressions[cells[records[i].CellIndex]];
-      mesh.Points[i] = c.Kind == CrossingKind::SubEdge ? PlaceSubEdgeCrossing(c, tree.Grid, e, prims)
+      const CsgExpressionPtr& e = tree.Expressions[cells[records[i].CellIndex]];
+      if (c.Kind == CrossingKind::CsgCrease)
+      {
+        // Recomputed as the tile was decided (CsgCreaseCrossing.h): normal
+        // halfway between the two surfaces'.
+        const auto vertex = CsgCreaseVertex(c, e, prims, tree.Grid);
+        mesh.Points[i] = vertex ? vertex->first : Vec3();
+        mesh.Normals[i] = vertex ? vertex->second : Vec3();
+        continue;
+      }
+      mesh.Points[i] = c.Kind == CrossingKind::SubEdge ? PlaceSubEdgeCrossing(c, tree.Grid, *e, prims)
                                                        : ExactCrossingPosition(c, prims, tree.Grid);
-      mesh.Normals[i] = Normalized(e.Gradient(mesh.Points[i], prims));
+      mesh.Normals[i] = Normalized(e->Gradient(mesh.Points[i], prims));
     }
   }, progress))
   {

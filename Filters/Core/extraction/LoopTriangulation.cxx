@@ -14,6 +14,11 @@ namespace
 /// most this much (the patch still lies in the cell, so the Hausdorff bound
 /// is unchanged), and its triangles stay away from the neighbours' patches.
 constexpr double ApexMargin = 1.0 / 32.0;
+/// The same for an apex on a CSG crease: the crease often passes close to a
+/// side of the cell, and an apex off it makes the output's crease zig-zag.
+/// (Any margin keeps the fan embedded: the argument of the header needs the
+/// apex strictly inside the cell only.)
+constexpr double CreaseApexMargin = 1.0 / 1024.0;
 
 Vec3 Centroid(const std::vector<LoopPoint>& loop)
 {
@@ -223,6 +228,80 @@ std::optional<Vec3> ApexOnSurface(const std::vector<LoopPoint>& loop, const Box3
   return std::nullopt;
 }
 
+/// `start` moved onto the crease of two quadric leaves by Gauss-Newton steps
+/// (the least change of position that zeroes both); nothing when they do
+/// not settle within `scale` of it.
+std::optional<Vec3> OntoCrease(const CsgLeaf& p, const CsgLeaf& q, const PrimitiveSet& primitives, Vec3 x,
+  double scale)
+{
+  for (int step = 0; step < 30; ++step)
+  {
+    const double f = LeafValue(p, primitives, x), g = LeafValue(q, primitives, x);
+    const Vec3 df = LeafGradient(p, primitives, x), dg = LeafGradient(q, primitives, x);
+    // J J^T for J's rows df, dg; the step is -J^T (J J^T)^-1 (f, g).
+    const double a = Dot(df, df), b = Dot(df, dg), d = Dot(dg, dg), det = a * d - b * b;
+    if (!(det > 1e-6 * a * d))
+    {
+      return std::nullopt; // (nearly) tangent surfaces: no crease to follow
+    }
+    const double lf = (d * f - b * g) / det, lg = (a * g - b * f) / det;
+    const Vec3 move = df * lf + dg * lg;
+    x = x - move;
+    if (!(Norm(move) <= scale))
+    {
+      return std::nullopt;
+    }
+    if (Norm(move) <= 1e-14 * scale)
+    {
+      return x;
+    }
+  }
+  return std::nullopt;
+}
+
+/// Where two quadric leaves are the surface in the cell (a CSG crease,
+/// CsgCreaseCrossing.h), an apex on their crease: projected from the feature
+/// point, or else from the middle of the loop's two points on the crease
+/// (the crease vertices where it enters and leaves the cell), if it lands
+/// inside `inner` with the fan consistent. The output's crease then runs from
+/// crease vertex to apex to crease vertex, on the crease.
+std::optional<Vec3> ApexOnCrease(const std::vector<LoopPoint>& loop, const Box3& region,
+  const CsgExpression& expression, const PrimitiveSet& primitives, const Vec3& feature)
+{
+  const Box3 inner = Shrunk(region, CreaseApexMargin);
+  const std::vector<CsgLeaf> leaves = expression.Leaves();
+  if (leaves.size() != 2 || leaves[0].Kind != PrimitiveKind::Quadric || leaves[1].Kind != PrimitiveKind::Quadric)
+  {
+    return std::nullopt;
+  }
+  const double scale = Norm(inner.hi - inner.lo);
+  std::vector<Vec3> onBoth;
+  for (const LoopPoint& p : loop)
+  {
+    const auto distance = [&](const CsgLeaf& leaf) {
+      return std::fabs(LeafValue(leaf, primitives, p.Position)) / Norm(LeafGradient(leaf, primitives, p.Position));
+    };
+    if (distance(leaves[0]) <= 1e-9 * scale && distance(leaves[1]) <= 1e-9 * scale)
+    {
+      onBoth.push_back(p.Position);
+    }
+  }
+  std::vector<Vec3> starts{ feature };
+  if (onBoth.size() == 2)
+  {
+    starts.push_back((onBoth[0] + onBoth[1]) * 0.5);
+  }
+  for (const Vec3& start : starts)
+  {
+    const std::optional<Vec3> x = OntoCrease(leaves[0], leaves[1], primitives, start, scale);
+    if (x && StrictlyInside(*x, inner) && FanIsConsistent(loop, *x))
+    {
+      return x;
+    }
+  }
+  return std::nullopt;
+}
+
 Vec3 PlaceApex(const std::vector<LoopPoint>& loop, const Box3& region, bool planeSection,
   const CsgExpression& expression, const PrimitiveSet& primitives, const QuadricCellError* surface)
 {
@@ -234,6 +313,10 @@ Vec3 PlaceApex(const std::vector<LoopPoint>& loop, const Box3& region, bool plan
   }
   const Box3 inner = Shrunk(region, ApexMargin);
   const Vec3 feature = inner.Clamp(TangentPlanesPoint(loop, centroid));
+  if (const std::optional<Vec3> onCrease = ApexOnCrease(loop, region, expression, primitives, feature))
+  {
+    return ClampStrictlyInside(*onCrease, region);
+  }
   if (surface)
   {
     if (const std::optional<Vec3> onSurface = ApexOnSurface(loop, inner, *surface, feature, centroid))

@@ -1,0 +1,131 @@
+#include "CsgCreaseCrossing.h"
+
+#include <cmath>
+
+namespace tpc
+{
+namespace
+{
+/// The two quadric leaves of `expression` pruned to the tile, if that is
+/// what it has.
+std::optional<std::pair<CsgLeaf, CsgLeaf>> TwoQuadricLeaves(
+  const CsgExpressionPtr& expression, const PrimitiveSet& primitives, const Box3& tileBox)
+{
+  const CsgExpression::Pruned pruned = CsgExpression::Prune(expression, tileBox, primitives);
+  if (pruned.Sign != RegionSign::Mixed)
+  {
+    return std::nullopt;
+  }
+  const std::vector<CsgLeaf> leaves = pruned.Expression->Leaves();
+  if (leaves.size() != 2 || leaves[0].Kind != PrimitiveKind::Quadric || leaves[1].Kind != PrimitiveKind::Quadric ||
+    leaves[0].Primitive == leaves[1].Primitive)
+  {
+    return std::nullopt;
+  }
+  return std::make_pair(leaves[0], leaves[1]);
+}
+
+/// Newton's iterations at most; the step it converges at, relative to the
+/// tile's width.
+constexpr int NewtonSteps = 40;
+constexpr double Converged = 1e-13;
+/// The fraction of the tile's width x keeps from its sides.
+constexpr double SideMargin = 0.01;
+/// The smallest sine of the angle between the two zero curves at x (below:
+/// nearly tangent, x is ill-conditioned and the crease too shallow to miss).
+constexpr double Transversal = 0.05;
+
+/// x solving both leaves' equations on the plane x_axis = c, from the tile's
+/// centre; nothing when the iteration does not settle inside the tile with
+/// the curves crossing transversally.
+std::optional<Vec3> CrossingOfZeroCurves(const std::pair<CsgLeaf, CsgLeaf>& leaves, const PrimitiveSet& primitives,
+  int axis, const Box3& tileBox)
+{
+  const int U = (axis + 1) % 3, V = (axis + 2) % 3;
+  const double width = tileBox.Width(U), height = tileBox.Width(V);
+  Vec3 x = tileBox.Center();
+  x[axis] = tileBox.lo[axis];
+  for (int step = 0; step < NewtonSteps; ++step)
+  {
+    const double f = LeafValue(leaves.first, primitives, x), g = LeafValue(leaves.second, primitives, x);
+    const Vec3 df = LeafGradient(leaves.first, primitives, x), dg = LeafGradient(leaves.second, primitives, x);
+    const double det = df[U] * dg[V] - df[V] * dg[U];
+    if (!(std::fabs(det) > 0.0))
+    {
+      return std::nullopt;
+    }
+    const double du = (-f * dg[V] + df[V] * g) / det, dv = (-df[U] * g + dg[U] * f) / det;
+    x[U] += du;
+    x[V] += dv;
+    if (!std::isfinite(x[U]) || !std::isfinite(x[V]) || std::fabs(x[U] - tileBox.Center()[U]) > 2.0 * width ||
+      std::fabs(x[V] - tileBox.Center()[V]) > 2.0 * height)
+    {
+      return std::nullopt; // wandered off: no crossing near this tile
+    }
+    if (std::fabs(du) <= Converged * width && std::fabs(dv) <= Converged * height)
+    {
+      const double sine = std::fabs(det) /
+        (std::hypot(df[U], df[V]) * std::hypot(dg[U], dg[V]));
+      const bool inside = x[U] > tileBox.lo[U] + SideMargin * width && x[U] < tileBox.hi[U] - SideMargin * width &&
+        x[V] > tileBox.lo[V] + SideMargin * height && x[V] < tileBox.hi[V] - SideMargin * height;
+      return sine >= Transversal && inside ? std::optional<Vec3>(x) : std::nullopt;
+    }
+  }
+  return std::nullopt;
+}
+
+Box3 TileBox(const RootGrid& grid, int axis, LatticeIndex plane, const FaceTile& tile)
+{
+  const int U = (axis + 1) % 3, V = (axis + 2) % 3;
+  Box3 box;
+  box.lo[axis] = box.hi[axis] = grid.Coordinate(axis, plane);
+  box.lo[U] = grid.Coordinate(U, tile.U0);
+  box.hi[U] = grid.Coordinate(U, tile.U1);
+  box.lo[V] = grid.Coordinate(V, tile.V0);
+  box.hi[V] = grid.Coordinate(V, tile.V1);
+  return box;
+}
+} // namespace
+
+Crossing CsgCreaseCrossing(int axis, LatticeIndex plane, const FaceTile& tile)
+{
+  Crossing x;
+  x.Kind = CrossingKind::CsgCrease;
+  x.Tile = WithAxis(TileCorner(axis, plane, tile, 0), axis) + 1;
+  x.Key = tile.U1;
+  x.Partner = tile.V1;
+  return x;
+}
+
+std::optional<Vec3> CsgCreaseOnTile(const CsgExpressionPtr& expression, const PrimitiveSet& primitives,
+  const RootGrid& grid, int axis, LatticeIndex plane, const FaceTile& tile)
+{
+  const Box3 box = TileBox(grid, axis, plane, tile);
+  const auto leaves = TwoQuadricLeaves(expression, primitives, box);
+  return leaves ? CrossingOfZeroCurves(*leaves, primitives, axis, box) : std::nullopt;
+}
+
+std::optional<std::pair<Vec3, Vec3>> CsgCreaseVertex(
+  const Crossing& x, const CsgExpressionPtr& expression, const PrimitiveSet& primitives, const RootGrid& grid)
+{
+  const int axis = AxisOf(x.Tile - 1);
+  LatticeIndex corner[3];
+  SplitPointKey(PointOf(x.Tile - 1), corner);
+  FaceTile tile;
+  tile.U0 = corner[(axis + 1) % 3];
+  tile.V0 = corner[(axis + 2) % 3];
+  tile.U1 = static_cast<LatticeIndex>(x.Key);
+  tile.V1 = static_cast<LatticeIndex>(x.Partner);
+  const Box3 box = TileBox(grid, axis, corner[axis], tile);
+  const auto leaves = TwoQuadricLeaves(expression, primitives, box);
+  const auto position = leaves ? CrossingOfZeroCurves(*leaves, primitives, axis, box) : std::nullopt;
+  if (!position)
+  {
+    return std::nullopt;
+  }
+  const Vec3 normal = Normalized(Normalized(LeafGradient(leaves->first, primitives, *position)) +
+    Normalized(LeafGradient(leaves->second, primitives, *position)));
+  return std::make_pair(*position, normal);
+}
+
+} // namespace tpc

@@ -1,0 +1,82 @@
+// Creases of a CSG solid as polylines of the output (issue 17).
+//
+// Where two primitives of a CSG scene meet (a box's edge, a drilled hole's
+// rim, a sphere clipping a cube) the surface has a crease, and a loop's chord
+// across a face tile the crease crosses cuts its corner: the output's crease
+// is a saw-tooth of chamfers, as a mesh's was before CreaseCrossing.h. A CSG
+// crease tile is drawn through the crease's crossing of the tile instead
+// (a -> x -> b), so the fans on both sides of the face have x as a vertex,
+// and with their apexes at the tangent planes' point (Extended Marching
+// Cubes, LoopTriangulation.h), on the crease, the crease runs through the
+// output's edges.
+//
+// A tile is a CSG crease tile when the cell's expression pruned to the tile
+// has exactly two leaves, both quadrics (planes, spheres, cylinders, a box's
+// faces), whose zero curves on the tile's plane cross transversally at a
+// point x that Newton's method (from the tile's centre, on the two leaves'
+// values) finds strictly inside the tile, at least 1 % of its width from
+// every side. x is on the surface (both leaves vanish there, and only they
+// are left), so the trace of the surface on the tile - one arc from a to b
+// where the tile holds one chord - runs through it.
+//
+// Why the output stays what the guarantee says. Embedded: a and b lie on the
+// tile's boundary and x strictly inside it, so the segments a -> x -> b lie
+// in the convex tile and meet its boundary at a and b only - the argument of
+// LoopTriangulation.h for crease tiles; the loop stays simple and the fans
+// embedded. Closed: both cells sharing the tile decide alike - the decision
+// is a function of the tile and of the leaves that pruning to the tile keeps,
+// and pruning is decided leaf by leaf on the tile's own box, so both cells'
+// expressions keep the same two leaves there; x is named by its tile and
+// placed by recomputing it, so both loops hold one vertex. Hausdorff: a CSG
+// crease cell is no larger than the tolerance (no certified bound covers two
+// leaves), x lies in it, and its patch stays in it. The result is checked
+// exactly anyway (SurfaceEmbedding.h).
+#pragma once
+
+#include "BoundaryLoops.h"
+#include "CsgExpression.h"
+
+#include <optional>
+
+namespace tpc
+{
+
+/// The vertex a CSG crease tile's chord is bent through, named by its tile:
+/// Tile its low corner and plane axis (as a bend's), Key and Partner its far
+/// corner's coordinates along the plane's two axes.
+Crossing CsgCreaseCrossing(int axis, LatticeIndex plane, const FaceTile& tile);
+
+/// Where the crease of `expression` crosses tile `tile` of the lattice plane
+/// x_axis = `plane`, when it is a CSG crease tile (header); nothing otherwise.
+std::optional<Vec3> CsgCreaseOnTile(const CsgExpressionPtr& expression, const PrimitiveSet& primitives,
+  const RootGrid& grid, int axis, LatticeIndex plane, const FaceTile& tile);
+
+/// The position of a CsgCrease crossing `x` (its tile decoded) and the
+/// bisector of the two leaves' outward normals there; nothing when its tile
+/// is not a crease tile of `expression`.
+std::optional<std::pair<Vec3, Vec3>> CsgCreaseVertex(
+  const Crossing& x, const CsgExpressionPtr& expression, const PrimitiveSet& primitives, const RootGrid& grid);
+
+/// Marks in boundary.Creases the CSG crease tiles of every face, where
+/// `draws(f, k)` and no mesh crease is marked.
+template <typename Draws>
+void MarkCsgCreaseTiles(CellBoundary& boundary, const CsgExpressionPtr& expression, const PrimitiveSet& primitives,
+  const RootGrid& grid, const Draws& draws)
+{
+  for (int f = 0; f < 6; ++f)
+  {
+    const int axis = f / 2;
+    const LatticeIndex plane = boundary.Base[axis] + (f % 2 ? boundary.Size : 0);
+    boundary.Creases[f].resize(boundary.Tiles[f].size());
+    for (std::size_t k = 0; k < boundary.Tiles[f].size(); ++k)
+    {
+      if (!boundary.Creases[f][k] && draws(f, k) &&
+        CsgCreaseOnTile(expression, primitives, grid, axis, plane, boundary.Tiles[f][k]))
+      {
+        boundary.Creases[f][k] = CsgCreaseCrossing(axis, plane, boundary.Tiles[f][k]);
+      }
+    }
+  }
+}
+
+} // namespace tpc

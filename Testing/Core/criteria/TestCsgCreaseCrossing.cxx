@@ -1,0 +1,155 @@
+// CSG crease tiles (CsgCreaseCrossing.h): the crossing of two primitives'
+// crease with a face tile is found where it is, named and placed alike by the
+// two cells sharing the tile, and refused where the tile holds no crease of
+// two leaves or the crossing is within 1 % of a side.
+#include "CsgCreaseCrossing.h"
+#include "SceneBuilder.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace
+{
+using tpc::FaceTile;
+using tpc::LatticeIndex;
+using tpctest::SceneBuilder;
+using tpctest::Vec3;
+
+/// A wedge: the intersection of two half-spaces whose planes meet along a
+/// line oblique to every axis.
+struct Wedge
+{
+  SceneBuilder B;
+  tpc::RootGrid Grid = tpctest::SingleRoot({ -1, -1, -1 }, 2.0, 10);
+  Vec3 N1{ 1.0, 0.0, 0.3 }, N2{ 0.0, 1.0, -0.2 };
+  Wedge()
+  {
+    B.Finish(SceneBuilder::Intersection(
+      { B.Add(tpc::Quadric::Plane({ 0.1, 0.0, 0.0 }, N1)), B.Add(tpc::Quadric::Plane({ 0.0, -0.05, 0.0 }, N2)) }));
+  }
+  /// Where the crease meets the plane z = z: n1.(p - (0.1, 0, 0)) = 0 and
+  /// n2.(p - (0, -0.05, 0)) = 0.
+  Vec3 CreaseAt(double z) const { return { 0.1 - 0.3 * z, -0.05 + 0.2 * z, z }; }
+};
+
+FaceTile TileAround(const tpc::RootGrid& grid, const Vec3& p, LatticeIndex size)
+{
+  const auto lattice = [&](int a) {
+    return static_cast<LatticeIndex>(std::floor((p[a] - grid.Origin[a]) / grid.Spacing())) / size * size;
+  };
+  FaceTile t;
+  t.U0 = lattice(0);
+  t.V0 = lattice(1);
+  t.U1 = t.U0 + size;
+  t.V1 = t.V0 + size;
+  return t;
+}
+} // namespace
+
+TEST(CsgCreaseCrossing, TwoPlanesCreaseIsFoundWhereItCrossesTheTile)
+{
+  const Wedge w;
+  const LatticeIndex plane = 600; // z = -1 + 2 * 600 / 1024
+  const double z = w.Grid.Coordinate(2, plane);
+  const Vec3 expected = w.CreaseAt(z);
+  const FaceTile tile = TileAround(w.Grid, expected, 16);
+  const auto x = tpc::CsgCreaseOnTile(w.B.Scene.Expression, w.B.Scene.Primitives, w.Grid, 2, plane, tile);
+  ASSERT_TRUE(x.has_value());
+  for (int a = 0; a < 3; ++a)
+  {
+    EXPECT_NEAR((*x)[a], expected[a], 1e-14);
+  }
+  // Named by its tile; placed by recomputing it, with the normal halfway
+  // between the two planes'.
+  const tpc::Crossing c = tpc::CsgCreaseCrossing(2, plane, tile);
+  EXPECT_EQ(c.Kind, tpc::CrossingKind::CsgCrease);
+  const auto vertex = tpc::CsgCreaseVertex(c, w.B.Scene.Expression, w.B.Scene.Primitives, w.Grid);
+  ASSERT_TRUE(vertex.has_value());
+  EXPECT_EQ(vertex->first[0], (*x)[0]);
+  EXPECT_EQ(vertex->first[1], (*x)[1]);
+  const Vec3 bisector = tpc::Normalized(tpc::Normalized(w.N1) + tpc::Normalized(w.N2));
+  EXPECT_NEAR(tpc::Dot(vertex->second, bisector), 1.0, 1e-12);
+  // The crossing lies on the tile's face of a cell above and of one below.
+  LatticeIndex base[3] = { tile.U0, tile.V0, plane };
+  EXPECT_EQ(tpc::CrossingFaces(c, base, 16), 1u << 4);
+  base[2] = plane - 16;
+  EXPECT_EQ(tpc::CrossingFaces(c, base, 16), 1u << 5);
+}
+
+TEST(CsgCreaseCrossing, BothCellsSharingATileDecideAlike)
+{
+  // Each cell prunes the scene to its own box; the decision must not depend
+  // on which: every tile of a face between two cells, in a sweep across the
+  // crease, is a crease tile for both or for neither, at the same point.
+  const Wedge w;
+  int creaseTiles = 0;
+  for (LatticeIndex plane = 400; plane < 700; plane += 16)
+  {
+    for (LatticeIndex i = 0; i < 1024; i += 16)
+    {
+      for (LatticeIndex j = 0; j < 1024; j += 16)
+      {
+        const FaceTile tile{ i, j, i + 16, j + 16 };
+        const LatticeIndex above[3] = { i / 16, j / 16, plane / 16 }, below[3] = { i / 16, j / 16, plane / 16 - 1 };
+        const auto upper =
+          tpc::CsgExpression::Prune(w.B.Scene.Expression, w.Grid.CellBox(6, above), w.B.Scene.Primitives);
+        const auto lower =
+          tpc::CsgExpression::Prune(w.B.Scene.Expression, w.Grid.CellBox(6, below), w.B.Scene.Primitives);
+        if (upper.Sign != tpc::RegionSign::Mixed || lower.Sign != tpc::RegionSign::Mixed)
+        {
+          continue;
+        }
+        const auto a = tpc::CsgCreaseOnTile(upper.Expression, w.B.Scene.Primitives, w.Grid, 2, plane, tile);
+        const auto b = tpc::CsgCreaseOnTile(lower.Expression, w.B.Scene.Primitives, w.Grid, 2, plane, tile);
+        ASSERT_EQ(a.has_value(), b.has_value()) << plane << " " << i << " " << j;
+        if (a)
+        {
+          ++creaseTiles;
+          EXPECT_EQ((*a)[0], (*b)[0]);
+          EXPECT_EQ((*a)[1], (*b)[1]);
+        }
+      }
+    }
+  }
+  EXPECT_GT(creaseTiles, 10);
+}
+
+TEST(CsgCreaseCrossing, TilesWithoutACreaseOfTwoLeavesAreRefused)
+{
+  const Wedge w;
+  const LatticeIndex plane = 600;
+  const Vec3 expected = w.CreaseAt(w.Grid.Coordinate(2, plane));
+  const FaceTile tile = TileAround(w.Grid, expected, 16);
+  auto onTile = [&](const tpc::ImplicitScene& s, const FaceTile& t) {
+    return tpc::CsgCreaseOnTile(s.Expression, s.Primitives, w.Grid, 2, plane, t).has_value();
+  };
+  // A tile beside the crease's: it crosses another.
+  FaceTile beside = tile;
+  beside.U0 += 32;
+  beside.U1 += 32;
+  EXPECT_FALSE(onTile(w.B.Scene, beside));
+  // The crossing within 1 % of a side: a tile whose side passes just by it.
+  const double spacing = w.Grid.Spacing();
+  FaceTile edge;
+  edge.U0 = static_cast<LatticeIndex>(std::floor((expected[0] - w.Grid.Origin[0]) / spacing - 0.005 * 512));
+  edge.U1 = edge.U0 + 512;
+  edge.V0 = tile.V0;
+  edge.V1 = tile.V1;
+  EXPECT_FALSE(onTile(w.B.Scene, edge));
+  // One leaf (a sphere); no surface at all (just above a box's corner).
+  SceneBuilder sphere;
+  sphere.Finish(sphere.Sphere({ 0, 0, 0 }, 0.5));
+  EXPECT_FALSE(onTile(sphere.Scene, TileAround(w.Grid, { 0.3, 0.3, 0.0 }, 64)));
+  SceneBuilder corner;
+  corner.Finish(corner.Box({ -0.5, -0.5, -0.5 }, { 0.2, 0.2, 0.2 }));
+  FaceTile atCorner = TileAround(w.Grid, { 0.2, 0.2, 0.2 }, 64);
+  EXPECT_FALSE(tpc::CsgCreaseOnTile(corner.Scene.Expression, corner.Scene.Primitives, w.Grid, 2,
+    static_cast<LatticeIndex>((0.2 + 1.0) / spacing) + 3, atCorner)
+                 .has_value());
+  // The same tile just below the box's top face (z = 0.2): two side planes
+  // (x = 0.2, y = 0.2) cross on it, the top is pruned away.
+  EXPECT_TRUE(tpc::CsgCreaseOnTile(corner.Scene.Expression, corner.Scene.Primitives, w.Grid, 2,
+    static_cast<LatticeIndex>((0.2 + 1.0) / spacing) - 40, atCorner)
+                .has_value());
+}
