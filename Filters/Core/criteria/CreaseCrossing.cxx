@@ -28,12 +28,12 @@ bool InsideTile(const MeshArrangement& arrangement, const ArrangementPoint& x, i
     arrangement.Side(x, v, tile.V0) > 0 && arrangement.Side(x, v, tile.V1) < 0;
 }
 
-/// The edges of `triangles` crossing the open tile, each use once.
-std::vector<EdgeUseOnTile> EdgesOnTile(const MeshArrangement& arrangement, const TriangleList& triangles, int axis,
-  LatticeIndex plane, const FaceTile& tile)
+/// The triangles of `triangles` whose bounds meet the tile's closed box. (A
+/// triangle strictly apart from it, in doubles, stays apart from it under
+/// the infinitesimal perturbation: no exact test needs it.)
+void NearTile(const MeshSolid& mesh, const RootGrid& grid, const TriangleList& triangles, int axis,
+  LatticeIndex plane, const FaceTile& tile, TriangleList& near)
 {
-  const MeshSolid& mesh = arrangement.Mesh();
-  const RootGrid& grid = arrangement.Lattice();
   const int u = (axis + 1) % 3, v = (axis + 2) % 3;
   Box3 tileBox;
   tileBox.lo[axis] = tileBox.hi[axis] = grid.Coordinate(axis, plane);
@@ -41,22 +41,70 @@ std::vector<EdgeUseOnTile> EdgesOnTile(const MeshArrangement& arrangement, const
   tileBox.hi[u] = grid.Coordinate(u, tile.U1);
   tileBox.lo[v] = grid.Coordinate(v, tile.V0);
   tileBox.hi[v] = grid.Coordinate(v, tile.V1);
-  std::vector<EdgeUseOnTile> uses;
+  near.clear();
   for (const std::uint32_t t : triangles)
   {
-    // (A triangle strictly apart from the tile's closed box, in doubles,
-    // stays apart from it under the infinitesimal perturbation: skipped
-    // before the exact tests.)
     const Box3& bounds = mesh.TriangleBounds(t);
     bool apart = false;
     for (int a = 0; a < 3; ++a)
     {
       apart = apart || bounds.hi[a] < tileBox.lo[a] || bounds.lo[a] > tileBox.hi[a];
     }
-    if (apart)
+    if (!apart)
     {
-      continue;
+      near.push_back(t);
     }
+  }
+}
+
+/// Whether two of `triangles` meet at a crease angle or more: a crease edge
+/// crossing the tile has both its triangles near it, so without such a pair
+/// the tile is no crease tile - decided before any exact test, and exactly
+/// as the crease test below compares the same two normals.
+bool MayHoldCrease(const MeshSolid& mesh, const TriangleList& triangles, double creaseCosine)
+{
+  thread_local std::vector<Vec3> normals; // (scratch: called for every tile)
+  normals.clear();
+  Vec3 sum;
+  for (const std::uint32_t t : triangles)
+  {
+    normals.push_back(mesh.Normal(t));
+    sum += normals.back();
+  }
+  // All within a cone of half-angle below 14.5 degrees: every two differ by
+  // less than 29 (a degree short of a crease: far beyond rounding).
+  const Vec3 axis = Normalized(sum);
+  double nearest = 1.0;
+  for (const Vec3& n : normals)
+  {
+    nearest = std::min(nearest, Dot(n, axis));
+  }
+  if (nearest > std::cos(14.5 * M_PI / 180.0))
+  {
+    return false;
+  }
+  for (std::size_t i = 0; i < normals.size(); ++i)
+  {
+    for (std::size_t j = i + 1; j < normals.size(); ++j)
+    {
+      if (Dot(normals[i], normals[j]) <= creaseCosine)
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+/// The edges of `triangles` (those near the tile) crossing the open tile,
+/// each use once.
+std::vector<EdgeUseOnTile> EdgesOnTile(
+  const MeshArrangement& arrangement, const TriangleList& triangles, int axis, LatticeIndex plane, const FaceTile& tile)
+{
+  const MeshSolid& mesh = arrangement.Mesh();
+  std::vector<EdgeUseOnTile> uses;
+  for (const std::uint32_t t : triangles)
+  {
     const auto& ids = mesh.Triangles()[t];
     int side[3];
     for (int k = 0; k < 3; ++k)
@@ -132,14 +180,20 @@ std::optional<CreaseTile> CreaseOnTile(const CsgLeaf& leaf, const PrimitiveSet& 
   int axis, LatticeIndex plane, const FaceTile& tile)
 {
   const MeshSolid& mesh = primitives.Meshes[leaf.Primitive];
+  const double creaseCosine = std::cos(CreaseAngleDegrees * M_PI / 180.0);
+  const double gentleCosine = std::cos(GentleAngleDegrees * M_PI / 180.0);
+  thread_local TriangleList near; // (scratch: called for every tile of every cell)
+  NearTile(mesh, grid, *leaf.Triangles, axis, plane, tile, near);
+  if (!MayHoldCrease(mesh, near, creaseCosine))
+  {
+    return std::nullopt;
+  }
   const MeshArrangement arrangement(mesh, grid);
-  const std::vector<EdgeUseOnTile> uses = EdgesOnTile(arrangement, *leaf.Triangles, axis, plane, tile);
+  const std::vector<EdgeUseOnTile> uses = EdgesOnTile(arrangement, near, axis, plane, tile);
   if (!Paired(uses))
   {
     return std::nullopt;
   }
-  const double creaseCosine = std::cos(CreaseAngleDegrees * M_PI / 180.0);
-  const double gentleCosine = std::cos(GentleAngleDegrees * M_PI / 180.0);
   std::optional<CreaseTile> crease;
   for (std::size_t i = 0; i < uses.size(); i += 2)
   {
