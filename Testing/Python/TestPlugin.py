@@ -132,18 +132,26 @@ check(cleaned.GetDataInformation().GetDataSetTypeAsString() == "vtkPolyData"
       "Clean(Input=tpc) cleans the surface", failures)
 
 # The default implicit functions, subtracted from a round capped part whose
-# wall ParaView's own default cylinder touches: a generic cut, guaranteed.
+# wall ParaView's own default cylinder touches: a generic cut, guaranteed,
+# that leaves a solid of one component (the part's wall is not cut through).
+# ParaView's default sphere (radius 0.74 about the part's centre) holds the
+# whole part - the difference would be empty, checking nothing - so the
+# sphere is moved to the top face and shrunk: it cuts a dimple.
 part = Cylinder(Radius=0.5, Height=1.0, Resolution=64, Capping=1)
 for name in ("Sphere", "Box", "Cylinder", "Plane"):
     cut = TopologyPreservingContour(Input=part, ImplicitFunction=name, Operation="Difference")  # noqa: F821
+    if name == "Sphere":
+        cut.ImplicitFunction.Center = [0.0, 0.5, 0.0]
+        cut.ImplicitFunction.Radius = 0.3
     cut.Tolerance = 0.02
     cut.UpdatePipeline()
     out = servermanager.Fetch(cut)
     m = measure(out)
-    check(field(out, "TopologyGuaranteed") == 1 and field(out, "UnresolvedCells") == 0
+    check(out.GetNumberOfPolys() > 0 and field(out, "TopologyGuaranteed") == 1
+          and field(out, "UnresolvedCells") == 0 and field(out, "Components") == 1 and m["components"] == 1
           and m["boundary"] == 0 and m["nonmanifold"] == 0,
-          f"the default {name} cuts a round part generically (guaranteed {field(out, 'TopologyGuaranteed')}, "
-          f"{field(out, 'UnresolvedCells')} unresolved)", failures)
+          f"the default {name} cuts a round part generically ({out.GetNumberOfPolys()} triangles, guaranteed "
+          f"{field(out, 'TopologyGuaranteed')}, {field(out, 'UnresolvedCells')} unresolved)", failures)
 
 # SolidId: the part is connection 0, the ball connection 1; reversed, the
 # ball comes first: part - ball and ball - part have different volumes.
