@@ -2,6 +2,7 @@
 
 #include "SymmetricEigen.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -259,22 +260,67 @@ std::optional<Vec3> OntoCrease(const CsgLeaf& p, const CsgLeaf& q, const Primiti
   return std::nullopt;
 }
 
+/// `start` moved to the corner where three quadric leaves vanish by Newton's
+/// method; nothing when their normals are nearly coplanar there or the
+/// steps do not settle within `scale` of it.
+std::optional<Vec3> OntoCorner(const CsgLeaf leaves[3], const PrimitiveSet& primitives, Vec3 x, double scale)
+{
+  for (int step = 0; step < 30; ++step)
+  {
+    Vec3 rows[3];
+    double values[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      values[k] = LeafValue(leaves[k], primitives, x);
+      rows[k] = LeafGradient(leaves[k], primitives, x);
+    }
+    // Cramer's rule: J move = values, J's rows the gradients.
+    const double det = Dot(rows[0], Cross(rows[1], rows[2]));
+    if (!(std::fabs(det) > 1e-3 * Norm(rows[0]) * Norm(rows[1]) * Norm(rows[2])))
+    {
+      return std::nullopt;
+    }
+    const Vec3 move = (Cross(rows[1], rows[2]) * values[0] + Cross(rows[2], rows[0]) * values[1] +
+                        Cross(rows[0], rows[1]) * values[2]) *
+      (1.0 / det);
+    x = x - move;
+    if (!(Norm(move) <= scale))
+    {
+      return std::nullopt;
+    }
+    if (Norm(move) <= 1e-14 * scale)
+    {
+      return x;
+    }
+  }
+  return std::nullopt;
+}
+
 /// Where two quadric leaves are the surface in the cell (a CSG crease,
 /// CsgCreaseCrossing.h), an apex on their crease: projected from the feature
 /// point, or else from the middle of the loop's two points on the crease
-/// (the crease vertices where it enters and leaves the cell), if it lands
-/// inside `inner` with the fan consistent. The output's crease then runs from
-/// crease vertex to apex to crease vertex, on the crease.
+/// (the crease vertices where it enters and leaves the cell); where three
+/// are (a corner), at their common point. Kept if it lands inside the
+/// region (but for 1/1024 of its width) with the fan consistent. The output's
+/// crease then runs from crease vertex to apex to crease vertex, on the
+/// crease.
 std::optional<Vec3> ApexOnCrease(const std::vector<LoopPoint>& loop, const Box3& region,
   const CsgExpression& expression, const PrimitiveSet& primitives, const Vec3& feature)
 {
   const Box3 inner = Shrunk(region, CreaseApexMargin);
   const std::vector<CsgLeaf> leaves = expression.Leaves();
-  if (leaves.size() != 2 || leaves[0].Kind != PrimitiveKind::Quadric || leaves[1].Kind != PrimitiveKind::Quadric)
+  const bool quadrics = std::all_of(
+    leaves.begin(), leaves.end(), [](const CsgLeaf& l) { return l.Kind == PrimitiveKind::Quadric; });
+  const double scale = Norm(inner.hi - inner.lo);
+  if (quadrics && leaves.size() == 3)
+  {
+    const std::optional<Vec3> corner = OntoCorner(leaves.data(), primitives, feature, scale);
+    return corner && StrictlyInside(*corner, inner) && FanIsConsistent(loop, *corner) ? corner : std::nullopt;
+  }
+  if (!quadrics || leaves.size() != 2)
   {
     return std::nullopt;
   }
-  const double scale = Norm(inner.hi - inner.lo);
   std::vector<Vec3> onBoth;
   for (const LoopPoint& p : loop)
   {
