@@ -23,11 +23,13 @@
 // tile's boundary and x strictly inside it, so the segments a -> x -> b lie
 // in the convex tile and meet its boundary at a and b only - the argument of
 // LoopTriangulation.h for crease tiles; the loop stays simple and the fans
-// embedded. Closed: both cells sharing the tile decide alike - the decision
-// is a function of the tile and of the leaves that pruning to the tile keeps,
-// and pruning is decided leaf by leaf on the tile's own box, so both cells'
-// expressions keep the same two leaves there; x is named by its tile and
-// placed by recomputing it, so both loops hold one vertex. Hausdorff: a CSG
+// embedded. Closed: both cells sharing the tile decide alike - they decide
+// with the same expression, that of the cell first in node order (each
+// cell's own is pruned to its own box, and an enclosure that decides a leaf
+// over one cell's box need not decide it over the tile, so the two could
+// keep different leaves), which is also the cell that places x
+// (CrossingVertices.h); x is named by its tile and placed by recomputing it,
+// so both loops hold one vertex. Hausdorff: a CSG
 // crease cell is no larger than the tolerance (no certified bound covers two
 // leaves), x lies in it, and its patch stays in it. The result is checked
 // exactly anyway (SurfaceEmbedding.h).
@@ -57,11 +59,12 @@ std::optional<Vec3> CsgCreaseOnTile(const CsgExpressionPtr& expression, const Pr
 std::optional<std::pair<Vec3, Vec3>> CsgCreaseVertex(
   const Crossing& x, const CsgExpressionPtr& expression, const PrimitiveSet& primitives, const RootGrid& grid);
 
-/// Marks in boundary.Creases the CSG crease tiles of every face, where
-/// `draws(f, k)` and no mesh crease is marked.
-template <typename Draws>
-void MarkCsgCreaseTiles(CellBoundary& boundary, const CsgExpressionPtr& expression, const PrimitiveSet& primitives,
-  const RootGrid& grid, const Draws& draws)
+/// Marks in boundary.Creases the CSG crease tiles of every face where no
+/// mesh crease is marked, each decided with the expression
+/// `expressionOf(f, k)` returns (none: the tile is drawn straight).
+template <typename ExpressionOf>
+void MarkCsgCreaseTiles(
+  CellBoundary& boundary, const PrimitiveSet& primitives, const RootGrid& grid, const ExpressionOf& expressionOf)
 {
   for (int f = 0; f < 6; ++f)
   {
@@ -70,8 +73,13 @@ void MarkCsgCreaseTiles(CellBoundary& boundary, const CsgExpressionPtr& expressi
     boundary.Creases[f].resize(boundary.Tiles[f].size());
     for (std::size_t k = 0; k < boundary.Tiles[f].size(); ++k)
     {
-      if (!boundary.Creases[f][k] && draws(f, k) &&
-        CsgCreaseOnTile(expression, primitives, grid, axis, plane, boundary.Tiles[f][k]))
+      if (boundary.Creases[f][k])
+      {
+        continue;
+      }
+      const CsgExpressionPtr* expression = expressionOf(f, k);
+      if (expression && *expression &&
+        CsgCreaseOnTile(*expression, primitives, grid, axis, plane, boundary.Tiles[f][k]))
       {
         boundary.Creases[f][k] = CsgCreaseCrossing(axis, plane, boundary.Tiles[f][k]);
       }

@@ -269,10 +269,19 @@ BoundaryLoopSet CellLoops(const AdaptiveOctree& tree, std::uint32_t cell, const 
   }
   else
   {
-    // CSG crease tiles (CsgCreaseCrossing.h): decided from the tile alone, by
-    // every cell on both sides, except where an exact cell draws the tile.
-    MarkCsgCreaseTiles(boundary, tree.Expressions[cell], prims, tree.Grid, [&](int f, std::size_t k) {
-      return !(k < boundary.ExactTile[f].size() && boundary.ExactTile[f][k]);
+    // CSG crease tiles (CsgCreaseCrossing.h): both cells sharing a tile decide
+    // with the expression of the one first in node order (the one placing
+    // x), except where an exact cell draws the tile.
+    MarkCsgCreaseTiles(boundary, prims, tree.Grid, [&](int f, std::size_t k) -> const CsgExpressionPtr* {
+      if (k < boundary.ExactTile[f].size() && boundary.ExactTile[f][k])
+      {
+        return nullptr;
+      }
+      const std::int64_t across = boundary.Across[f][k];
+      const std::size_t first = across >= 0 && static_cast<std::size_t>(across) < cell
+        ? static_cast<std::size_t>(across)
+        : static_cast<std::size_t>(cell);
+      return &tree.Expressions[first];
     });
   }
   return TraceBoundaryLoops(boundary);
