@@ -1,7 +1,7 @@
 // CSG crease tiles (CsgCreaseCrossing.h): the crossing of two primitives'
-// crease with a face tile is found where it is, named and placed alike by the
-// two cells sharing the tile, and refused where the tile holds no crease of
-// two leaves or the crossing is within 1 % of a side.
+// crease with a face tile is found where it is, named by its tile and placed
+// where it was found, and refused where the tile holds no crease of two
+// leaves or the crossing is within 1 % of a side.
 #include "CsgCreaseCrossing.h"
 #include "SceneBuilder.h"
 
@@ -79,9 +79,12 @@ TEST(CsgCreaseCrossing, TwoPlanesCreaseIsFoundWhereItCrossesTheTile)
 
 TEST(CsgCreaseCrossing, BothCellsSharingATileDecideAlike)
 {
-  // Each cell prunes the scene to its own box; the decision must not depend
-  // on which: every tile of a face between two cells, in a sweep across the
-  // crease, is a crease tile for both or for neither, at the same point.
+  // The decision depends on the tile and the two leaves left there: with the
+  // scene pruned to either cell's box, every tile of a face between two
+  // cells, in a sweep across the crease, is a crease tile for both or for
+  // neither, at the same point. (The extraction does not rely on the two
+  // prunings agreeing - an enclosure deciding a leaf over one box need not
+  // decide it over the tile - and decides with the first cell's expression.)
   const Wedge w;
   int creaseTiles = 0;
   for (LatticeIndex plane = 400; plane < 700; plane += 16)
