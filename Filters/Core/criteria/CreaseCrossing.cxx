@@ -34,13 +34,7 @@ bool InsideTile(const MeshArrangement& arrangement, const ArrangementPoint& x, i
 void NearTile(const MeshSolid& mesh, const RootGrid& grid, const TriangleList& triangles, int axis,
   LatticeIndex plane, const FaceTile& tile, TriangleList& near)
 {
-  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-  Box3 tileBox;
-  tileBox.lo[axis] = tileBox.hi[axis] = grid.Coordinate(axis, plane);
-  tileBox.lo[u] = grid.Coordinate(u, tile.U0);
-  tileBox.hi[u] = grid.Coordinate(u, tile.U1);
-  tileBox.lo[v] = grid.Coordinate(v, tile.V0);
-  tileBox.hi[v] = grid.Coordinate(v, tile.V1);
+  const Box3 tileBox = TileBox(grid, axis, plane, tile);
   near.clear();
   for (const std::uint32_t t : triangles)
   {

@@ -74,17 +74,6 @@ std::optional<Vec3> CrossingOfZeroCurves(const std::pair<CsgLeaf, CsgLeaf>& leav
   return std::nullopt;
 }
 
-Box3 TileBox(const RootGrid& grid, int axis, LatticeIndex plane, const FaceTile& tile)
-{
-  const int U = (axis + 1) % 3, V = (axis + 2) % 3;
-  Box3 box;
-  box.lo[axis] = box.hi[axis] = grid.Coordinate(axis, plane);
-  box.lo[U] = grid.Coordinate(U, tile.U0);
-  box.hi[U] = grid.Coordinate(U, tile.U1);
-  box.lo[V] = grid.Coordinate(V, tile.V0);
-  box.hi[V] = grid.Coordinate(V, tile.V1);
-  return box;
-}
 } // namespace
 
 Crossing CsgCreaseCrossing(int axis, LatticeIndex plane, const FaceTile& tile)

@@ -133,13 +133,7 @@ struct FaceRefiner
   {
     const bool inside[4] = { this->Inside(t.U0, t.V0), this->Inside(t.U1, t.V0),
       this->Inside(t.U1, t.V1), this->Inside(t.U0, t.V1) };
-    const int U = (this->Axis + 1) % 3, V = (this->Axis + 2) % 3;
-    Box3 face;
-    face.lo[this->Axis] = face.hi[this->Axis] = this->Grid.Coordinate(this->Axis, this->Plane);
-    face.lo[U] = this->Grid.Coordinate(U, t.U0);
-    face.hi[U] = this->Grid.Coordinate(U, t.U1);
-    face.lo[V] = this->Grid.Coordinate(V, t.V0);
-    face.hi[V] = this->Grid.Coordinate(V, t.V1);
+    const Box3 face = TileBox(this->Grid, this->Axis, this->Plane, t);
     int edge = -1;
     double opposite = std::numeric_limits<double>::quiet_NaN();
     const SplitReason r =

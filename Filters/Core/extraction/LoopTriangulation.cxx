@@ -229,14 +229,34 @@ std::optional<Vec3> ApexOnSurface(const std::vector<LoopPoint>& loop, const Box3
   return std::nullopt;
 }
 
+/// x moved by x -= step(x) until a move is below 1e-14 `scale` (then x), or a
+/// step fails or exceeds `scale` (then nothing), 30 steps at most.
+template <typename Step>
+std::optional<Vec3> Settle(Vec3 x, double scale, const Step& step)
+{
+  for (int k = 0; k < 30; ++k)
+  {
+    const std::optional<Vec3> move = step(x);
+    if (!move || !(Norm(*move) <= scale))
+    {
+      return std::nullopt;
+    }
+    x = x - *move;
+    if (Norm(*move) <= 1e-14 * scale)
+    {
+      return x;
+    }
+  }
+  return std::nullopt;
+}
+
 /// `start` moved onto the crease of two quadric leaves by Gauss-Newton steps
 /// (the least change of position that zeroes both); nothing when they do
 /// not settle within `scale` of it.
-std::optional<Vec3> OntoCrease(const CsgLeaf& p, const CsgLeaf& q, const PrimitiveSet& primitives, Vec3 x,
-  double scale)
+std::optional<Vec3> OntoCrease(
+  const CsgLeaf& p, const CsgLeaf& q, const PrimitiveSet& primitives, const Vec3& start, double scale)
 {
-  for (int step = 0; step < 30; ++step)
-  {
+  return Settle(start, scale, [&](const Vec3& x) -> std::optional<Vec3> {
     const double f = LeafValue(p, primitives, x), g = LeafValue(q, primitives, x);
     const Vec3 df = LeafGradient(p, primitives, x), dg = LeafGradient(q, primitives, x);
     // J J^T for J's rows df, dg; the step is -J^T (J J^T)^-1 (f, g).
@@ -245,28 +265,16 @@ std::optional<Vec3> OntoCrease(const CsgLeaf& p, const CsgLeaf& q, const Primiti
     {
       return std::nullopt; // (nearly) tangent surfaces: no crease to follow
     }
-    const double lf = (d * f - b * g) / det, lg = (a * g - b * f) / det;
-    const Vec3 move = df * lf + dg * lg;
-    x = x - move;
-    if (!(Norm(move) <= scale))
-    {
-      return std::nullopt;
-    }
-    if (Norm(move) <= 1e-14 * scale)
-    {
-      return x;
-    }
-  }
-  return std::nullopt;
+    return df * ((d * f - b * g) / det) + dg * ((a * g - b * f) / det);
+  });
 }
 
 /// `start` moved to the corner where three quadric leaves vanish by Newton's
 /// method; nothing when their normals are nearly coplanar there or the
 /// steps do not settle within `scale` of it.
-std::optional<Vec3> OntoCorner(const CsgLeaf leaves[3], const PrimitiveSet& primitives, Vec3 x, double scale)
+std::optional<Vec3> OntoCorner(const CsgLeaf leaves[3], const PrimitiveSet& primitives, const Vec3& start, double scale)
 {
-  for (int step = 0; step < 30; ++step)
-  {
+  return Settle(start, scale, [&](const Vec3& x) -> std::optional<Vec3> {
     Vec3 rows[3];
     double values[3];
     for (int k = 0; k < 3; ++k)
@@ -280,20 +288,10 @@ std::optional<Vec3> OntoCorner(const CsgLeaf leaves[3], const PrimitiveSet& prim
     {
       return std::nullopt;
     }
-    const Vec3 move = (Cross(rows[1], rows[2]) * values[0] + Cross(rows[2], rows[0]) * values[1] +
-                        Cross(rows[0], rows[1]) * values[2]) *
+    return (Cross(rows[1], rows[2]) * values[0] + Cross(rows[2], rows[0]) * values[1] +
+             Cross(rows[0], rows[1]) * values[2]) *
       (1.0 / det);
-    x = x - move;
-    if (!(Norm(move) <= scale))
-    {
-      return std::nullopt;
-    }
-    if (Norm(move) <= 1e-14 * scale)
-    {
-      return x;
-    }
-  }
-  return std::nullopt;
+  });
 }
 
 /// Where two quadric leaves are the surface in the cell (a CSG crease,

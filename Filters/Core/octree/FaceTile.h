@@ -26,4 +26,18 @@ inline PointKey TileCorner(int axis, LatticeIndex plane, const FaceTile& t, int 
   return MakePointKey(p[0], p[1], p[2]);
 }
 
+/// The closed box of a tile lying in the plane axis = plane (flat along
+/// axis), in world coordinates.
+inline Box3 TileBox(const RootGrid& grid, int axis, LatticeIndex plane, const FaceTile& t)
+{
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  Box3 box;
+  box.lo[axis] = box.hi[axis] = grid.Coordinate(axis, plane);
+  box.lo[u] = grid.Coordinate(u, t.U0);
+  box.hi[u] = grid.Coordinate(u, t.U1);
+  box.lo[v] = grid.Coordinate(v, t.V0);
+  box.hi[v] = grid.Coordinate(v, t.V1);
+  return box;
+}
+
 } // namespace tpc
