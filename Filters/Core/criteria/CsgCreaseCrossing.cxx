@@ -1,6 +1,8 @@
 #include "CsgCreaseCrossing.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace tpc
 {
@@ -26,9 +28,12 @@ std::optional<std::pair<CsgLeaf, CsgLeaf>> TwoQuadricLeaves(
 }
 
 /// Newton's iterations at most; the step it converges at, relative to the
-/// tile's width.
+/// tile's width - or to the coordinates' size, where a double's spacing
+/// there is coarser (a small tile far from the origin: the last steps are
+/// rounding noise, and would never reach 1e-13 of the tile).
 constexpr int NewtonSteps = 40;
 constexpr double Converged = 1e-13;
+constexpr double Ulps = 8.0 * std::numeric_limits<double>::epsilon();
 /// The fraction of the tile's width x keeps from its sides.
 constexpr double SideMargin = 0.01;
 /// The smallest sine of the angle between the two zero curves at x (below:
@@ -62,7 +67,9 @@ std::optional<Vec3> CrossingOfZeroCurves(const std::pair<CsgLeaf, CsgLeaf>& leav
     {
       return std::nullopt; // wandered off: no crossing near this tile
     }
-    if (std::fabs(du) <= Converged * width && std::fabs(dv) <= Converged * height)
+    const double rounding = Ulps * std::max(std::fabs(x[U]), std::fabs(x[V]));
+    if (std::fabs(du) <= std::max(Converged * width, rounding) &&
+      std::fabs(dv) <= std::max(Converged * height, rounding))
     {
       const double sine = std::fabs(det) /
         (std::hypot(df[U], df[V]) * std::hypot(dg[U], dg[V]));
@@ -94,10 +101,12 @@ std::optional<Vec3> CsgCreaseOnTile(const CsgExpressionPtr& expression, const Pr
   return leaves ? CrossingOfZeroCurves(*leaves, primitives, axis, box) : std::nullopt;
 }
 
-std::optional<std::pair<Vec3, Vec3>> CsgCreaseVertex(
-  const Crossing& x, const CsgExpressionPtr& expression, const PrimitiveSet& primitives, const RootGrid& grid)
+namespace
 {
-  const int axis = AxisOf(x.Tile - 1);
+/// The box of a CsgCrease crossing's tile, and the tile's plane axis.
+Box3 CreaseTileBox(const Crossing& x, const RootGrid& grid, int& axis)
+{
+  axis = AxisOf(x.Tile - 1);
   LatticeIndex corner[3];
   SplitPointKey(PointOf(x.Tile - 1), corner);
   FaceTile tile;
@@ -105,12 +114,26 @@ std::optional<std::pair<Vec3, Vec3>> CsgCreaseVertex(
   tile.V0 = corner[(axis + 2) % 3];
   tile.U1 = static_cast<LatticeIndex>(x.Key);
   tile.V1 = static_cast<LatticeIndex>(x.Partner);
-  const Box3 box = TileBox(grid, axis, corner[axis], tile);
+  return TileBox(grid, axis, corner[axis], tile);
+}
+} // namespace
+
+Vec3 CsgCreaseTileCentre(const Crossing& x, const RootGrid& grid)
+{
+  int axis = 0;
+  return CreaseTileBox(x, grid, axis).Center();
+}
+
+std::optional<std::pair<Vec3, Vec3>> CsgCreaseVertex(
+  const Crossing& x, const CsgExpressionPtr& expression, const PrimitiveSet& primitives, const RootGrid& grid)
+{
+  int axis = 0;
+  const Box3 box = CreaseTileBox(x, grid, axis);
   const auto leaves = TwoQuadricLeaves(expression, primitives, box);
   const auto position = leaves ? CrossingOfZeroCurves(*leaves, primitives, axis, box) : std::nullopt;
   if (!position)
   {
-    return std::nullopt;
+    return std::nullopt; // (the tile was decided otherwise: see the caller)
   }
   const Vec3 normal = Normalized(Normalized(LeafGradient(leaves->first, primitives, *position)) +
     Normalized(LeafGradient(leaves->second, primitives, *position)));

@@ -59,6 +59,9 @@ std::optional<Vec3> CsgCreaseOnTile(const CsgExpressionPtr& expression, const Pr
 std::optional<std::pair<Vec3, Vec3>> CsgCreaseVertex(
   const Crossing& x, const CsgExpressionPtr& expression, const PrimitiveSet& primitives, const RootGrid& grid);
 
+/// The centre of a CsgCrease crossing's tile.
+Vec3 CsgCreaseTileCentre(const Crossing& x, const RootGrid& grid);
+
 /// Marks in boundary.Creases the CSG crease tiles of every face where no
 /// mesh crease is marked, each decided with the expression
 /// `expressionOf(f, k)` returns (none: the tile is drawn straight).

@@ -5,6 +5,7 @@
 #include "ExactCell.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 namespace tpc
@@ -99,10 +100,14 @@ bool PlaceCrossingVertices(const CrossingVertices& vertices, const AdaptiveOctre
       const CsgExpressionPtr& e = tree.Expressions[cells[records[i].CellIndex]];
       if (c.Kind == CrossingKind::CsgCrease)
       {
-        // Recomputed as the tile was decided (CsgCreaseCrossing.h): normal
-        // halfway between the two surfaces'.
+        // Recomputed as the tile was decided (CsgCreaseCrossing.h: the same
+        // function of the same cell's expression), normal halfway between
+        // the two surfaces'. Should it ever fail, the tile's centre keeps
+        // the loop simple and the patch in the cell, where the tolerance's
+        // size bounds it.
         const auto vertex = CsgCreaseVertex(c, e, prims, tree.Grid);
-        mesh.Points[i] = vertex ? vertex->first : Vec3();
+        assert(vertex);
+        mesh.Points[i] = vertex ? vertex->first : CsgCreaseTileCentre(c, tree.Grid);
         mesh.Normals[i] = vertex ? vertex->second : Vec3();
         continue;
       }

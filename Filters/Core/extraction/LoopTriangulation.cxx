@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace tpc
@@ -229,8 +230,10 @@ std::optional<Vec3> ApexOnSurface(const std::vector<LoopPoint>& loop, const Box3
   return std::nullopt;
 }
 
-/// x moved by x -= step(x) until a move is below 1e-14 `scale` (then x), or a
-/// step fails or exceeds `scale` (then nothing), 30 steps at most.
+/// x moved by x -= step(x) until a move is below 1e-14 `scale` or a few
+/// units in the last place of x, whichever is coarser (far from the origin
+/// the last steps are rounding noise) - then x; nothing when a step fails or
+/// exceeds `scale`, or after 30 steps.
 template <typename Step>
 std::optional<Vec3> Settle(Vec3 x, double scale, const Step& step)
 {
@@ -242,7 +245,8 @@ std::optional<Vec3> Settle(Vec3 x, double scale, const Step& step)
       return std::nullopt;
     }
     x = x - *move;
-    if (Norm(*move) <= 1e-14 * scale)
+    const double size = std::max({ std::fabs(x[0]), std::fabs(x[1]), std::fabs(x[2]) });
+    if (Norm(*move) <= std::max(1e-14 * scale, 8.0 * std::numeric_limits<double>::epsilon() * size))
     {
       return x;
     }

@@ -227,6 +227,14 @@ bool RefineMeshCertificates(const AdaptiveOctree& tree, const std::vector<std::u
       break; // (sorted: no later cell is above it)
     }
     const std::size_t last = std::min(pending.size(), first + round);
+    // (Progress and abort within the round too: the last rounds hold half
+    // the cells.)
+    const ProgressCallback roundProgress = progress
+      ? ProgressCallback([&, first, last](double f) {
+          return progress((static_cast<double>(first) + f * static_cast<double>(last - first)) /
+            static_cast<double>(pending.size()));
+        })
+      : ProgressCallback();
     if (!ChunkedFor(last - first, Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
           for (std::size_t k = first + begin; k < first + end; ++k)
           {
@@ -243,7 +251,7 @@ bool RefineMeshCertificates(const AdaptiveOctree& tree, const std::vector<std::u
               c.Lower = std::max(c.Lower, e.Lower);
             }
           }
-        }, nullptr))
+        }, roundProgress))
     {
       return false;
     }
@@ -253,10 +261,6 @@ bool RefineMeshCertificates(const AdaptiveOctree& tree, const std::vector<std::u
     }
     first = last;
     round *= 2;
-    if (progress && progress(static_cast<double>(first) / static_cast<double>(pending.size())))
-    {
-      return false;
-    }
   }
   return true;
 }

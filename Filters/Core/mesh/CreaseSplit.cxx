@@ -130,7 +130,10 @@ void SplitAtCreases(TriangleMesh& mesh, double creaseAngleDegrees, std::vector<s
     if (wedge == c && pointSplit[surfacePoint[point]])
     {
       points[point] = mesh.Points[surfacePoint[point]];
-      normals[point] = Normalized(wedgeNormal[wedge]);
+      // (A wedge of degenerate triangles only has no normal of its own: it
+      // keeps the point's.)
+      const bool none = Dot(wedgeNormal[wedge], wedgeNormal[wedge]) == 0.0;
+      normals[point] = none ? mesh.Normals[surfacePoint[point]] : Normalized(wedgeNormal[wedge]);
     }
   }
   mesh.Points = std::move(points);
