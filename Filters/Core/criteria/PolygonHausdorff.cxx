@@ -37,10 +37,15 @@ Box3 BoundsOf(const Vec3* points, std::size_t count)
   return box;
 }
 
+/// A piece of a source triangle. Its candidates - the targets that may be
+/// nearest to one of its points - are Count entries of the branch and
+/// bound's candidate arena from First (one buffer for all pieces, reused
+/// across calls: a vector per piece made allocation a tenth of the run).
 struct Piece
 {
   SourceTriangle Vertices;
-  std::vector<std::uint32_t> Candidates; ///< the targets that may be nearest to one of its points
+  std::size_t First = 0;
+  std::size_t Count = 0;
   double Upper = HUGE_VAL;
   bool operator<(const Piece& o) const { return this->Upper < o.Upper; }
 };
@@ -63,15 +68,17 @@ double PointBoxDistance2(const Vec3& p, const Box3& b)
 /// visited nearest box first, and a distance is computed only where it may
 /// lower a vertex's nearest distance or the single-target bound (box
 /// distances are lower bounds of distances), so both stay exact.
-void Evaluate(Piece& piece, const std::vector<std::uint32_t>& candidates, double parentUpper,
-  const std::vector<ConvexPolygon>& targets, double& lower, std::vector<std::pair<double, std::uint32_t>>& order)
+void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentUpper,
+  const std::vector<ConvexPolygon>& targets, double& lower, std::vector<std::pair<double, std::uint32_t>>& order,
+  std::vector<std::uint32_t>& arena)
 {
   // (Box distances are compared squared: no square root per target.)
   const Box3 box = BoundsOf(piece.Vertices.data(), 3);
   const double parentUpper2 = parentUpper * parentUpper;
   order.clear();
-  for (const std::uint32_t t : candidates)
+  for (std::size_t k = first; k < first + count; ++k)
   {
+    const std::uint32_t t = arena[k];
     const double d2 = BoxDistance2(box, targets[t].Bounds);
     if (d2 <= parentUpper2)
     {
@@ -124,16 +131,17 @@ void Evaluate(Piece& piece, const std::vector<std::uint32_t>& candidates, double
   }
   piece.Upper = std::min(single, vertexMax + radius);
   lower = std::max(lower, vertexMax == HUGE_VAL ? 0.0 : vertexMax);
+  // (Appended after the parent's entries were read: the arena may move.)
   const double upper2 = piece.Upper * piece.Upper;
-  piece.Candidates.clear();
-  piece.Candidates.reserve(order.size());
+  piece.First = arena.size();
   for (const auto& [boxDistance2, t] : order)
   {
     if (boxDistance2 <= upper2)
     {
-      piece.Candidates.push_back(t);
+      arena.push_back(t);
     }
   }
+  piece.Count = arena.size() - piece.First;
 }
 } // namespace
 
@@ -220,18 +228,21 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
   {
     return estimate;
   }
-  std::vector<std::uint32_t> all(targets.size());
-  for (std::uint32_t t = 0; t < all.size(); ++t)
+  // Scratch reused across calls (one per thread): the candidate arena, its
+  // first entries every target; Evaluate's ordering.
+  thread_local std::vector<std::uint32_t> arena;
+  thread_local std::vector<std::pair<double, std::uint32_t>> order;
+  arena.resize(targets.size());
+  for (std::uint32_t t = 0; t < targets.size(); ++t)
   {
-    all[t] = t;
+    arena[t] = t;
   }
   std::priority_queue<Piece> pieces;
-  std::vector<std::pair<double, std::uint32_t>> order; // (scratch of Evaluate)
   for (const SourceTriangle& s : sources)
   {
-    Piece piece{ s, {}, HUGE_VAL };
-    Evaluate(piece, all, HUGE_VAL, targets, estimate.Lower, order);
-    pieces.push(std::move(piece));
+    Piece piece{ s, 0, 0, HUGE_VAL };
+    Evaluate(piece, 0, targets.size(), HUGE_VAL, targets, estimate.Lower, order, arena);
+    pieces.push(piece);
   }
   std::size_t evaluated = sources.size();
   while (evaluated < budget && estimate.Lower <= giveUp)
@@ -243,9 +254,7 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
     {
       break;
     }
-    // (Moved out before pop: the top is not read again, and its candidate
-    // list need not be copied.)
-    const Piece parent = std::move(const_cast<Piece&>(pieces.top()));
+    const Piece parent = pieces.top();
     pieces.pop();
     const SourceTriangle& v = parent.Vertices;
     const Vec3 m01 = (v[0] + v[1]) * 0.5, m12 = (v[1] + v[2]) * 0.5, m20 = (v[2] + v[0]) * 0.5;
@@ -253,10 +262,10 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
       { SourceTriangle{ v[0], m01, m20 }, SourceTriangle{ m01, v[1], m12 }, SourceTriangle{ m20, m12, v[2] },
         SourceTriangle{ m01, m12, m20 } })
     {
-      Piece piece{ child, {}, HUGE_VAL };
-      Evaluate(piece, parent.Candidates, parent.Upper, targets, estimate.Lower, order);
+      Piece piece{ child, 0, 0, HUGE_VAL };
+      Evaluate(piece, parent.First, parent.Count, parent.Upper, targets, estimate.Lower, order, arena);
       piece.Upper = std::min(piece.Upper, parent.Upper); // (the child lies in its parent)
-      pieces.push(std::move(piece));
+      pieces.push(piece);
     }
     evaluated += 4;
   }
