@@ -122,6 +122,41 @@ void TriangulateCell(const BoundaryLoopSet& loops, const OctreeNode& node, const
   }
 }
 
+bool TriangulateCellFromLoopPoint(const BoundaryLoopSet& loops, const OctreeNode& node, const RootGrid& grid,
+  const CrossingVertices& vertices, const TriangleMesh& mesh, CellPatches& out)
+{
+  if (loops.LoopSizes.size() != 1 || loops.LoopSizes[0] < 4 || !loops.Consistent)
+  {
+    return false;
+  }
+  LatticeIndex base[3];
+  CornerLattice(grid, node, 0, base);
+  const LatticeIndex size = LatticeIndex(1) << (grid.MaxDepth - node.Level);
+  std::vector<std::uint32_t> ids;
+  std::vector<LoopPoint> points;
+  for (const Crossing& c : loops.Crossings)
+  {
+    if (c.Kind != CrossingKind::SubEdge)
+    {
+      return false; // a crease vertex (or a bend: a cell stopped by a limit)
+    }
+    ids.push_back(vertices.IdOf(c));
+    points.push_back({ mesh.Points[ids.back()], mesh.Normals[ids.back()], CrossingFaces(c, base, size) });
+  }
+  const int s = LoopFanPoint(points);
+  if (s < 0)
+  {
+    return false;
+  }
+  const std::size_t k = ids.size(), first = static_cast<std::size_t>(s);
+  out = CellPatches();
+  for (std::size_t i = 1; i + 1 < k; ++i)
+  {
+    out.Triangles.push_back({ ids[first], ids[(first + i) % k], ids[(first + i + 1) % k] });
+  }
+  return true;
+}
+
 void TriangulateExactCell(const BoundaryLoopSet& polygons, const CrossingVertices& vertices,
   const TriangleMesh& mesh, CellPatches& out)
 {

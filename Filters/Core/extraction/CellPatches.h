@@ -34,6 +34,14 @@ void TriangulateCell(const BoundaryLoopSet& loops, const OctreeNode& node, const
   const PrimitiveSet& primitives, const RootGrid& grid, const CrossingVertices& vertices, const TriangleMesh& mesh,
   CellPatches& out, const QuadricCellError* surface = nullptr, const Vec3* meshApex = nullptr);
 
+/// A cell of one loop spanned by Marching Cubes' fan from one of its points
+/// (LoopFanPoint: k - 2 triangles where the apex fan takes k), when the loop
+/// allows one and holds no mesh crease vertex (a fan from a loop point would
+/// cut across the crease that the apex fan keeps sharp); false otherwise.
+/// The caller certifies its error (MeshCellError.h) before using it.
+bool TriangulateCellFromLoopPoint(const BoundaryLoopSet& loops, const OctreeNode& node, const RootGrid& grid,
+  const CrossingVertices& vertices, const TriangleMesh& mesh, CellPatches& out);
+
 /// An exact cell's polygons (ExactCell.h), each a triangle or a fan around
 /// its centroid (in its triangle's plane: the polygon is convex, and its
 /// inserted tile-side points are collinear with their neighbours).

@@ -382,11 +382,8 @@ Vec3 PlaceApex(const std::vector<LoopPoint>& loop, const Box3& region, bool plan
   return ClampStrictlyInside(FanIsConsistent(loop, fallback) ? fallback : inner.Clamp(centroid), region);
 }
 
-/// Marching Cubes' fan: the loop point whose fan satisfies case 2 of the
-/// header (no other point on a face with it but its neighbours) and faces
-/// the way the normals do, with the shortest diagonals; -1 if none. Used
-/// where the surface is smooth in the cell (every crossing normal within 25
-/// degrees of their mean: no crease or corner for an apex to keep sharp).
+} // namespace
+
 int LoopFanPoint(const std::vector<LoopPoint>& loop)
 {
   const std::size_t m = loop.size();
@@ -429,7 +426,6 @@ int LoopFanPoint(const std::vector<LoopPoint>& loop)
   }
   return best;
 }
-} // namespace
 
 bool StrictlyInside(const Vec3& p, const Box3& box)
 {

@@ -122,6 +122,13 @@ LoopPatch TriangulateLoop(const std::vector<LoopPoint>& loop, const Box3& region
   const std::vector<SeparatingPlane>& below = {}, const QuadricCellError* surface = nullptr,
   const Vec3* meshApex = nullptr);
 
+/// Marching Cubes' fan: the loop point whose fan satisfies case 2 of the
+/// header (no other point on a face with it but its neighbours) and faces
+/// the way the normals do, with the shortest diagonals; -1 if none, or if
+/// the surface is not smooth along the loop (every crossing normal within
+/// 25 degrees of their mean: no crease or corner for an apex to keep sharp).
+int LoopFanPoint(const std::vector<LoopPoint>& loop);
+
 /// True when `p` lies strictly inside `box` on every axis (exact comparisons).
 bool StrictlyInside(const Vec3& p, const Box3& box);
 

@@ -128,6 +128,10 @@ void GatherCertifiedBound(const AdaptiveOctree& tree, const std::vector<std::uin
   }
 }
 
+/// Pieces the certificate of a fan from a loop point may examine (it needs a
+/// proof under the tolerance, not a tight one).
+constexpr std::size_t LoopFanCertificateBudget = 256;
+
 /// S in leaf `n`, which is one mesh's (MeshCellError.h).
 std::vector<ConvexPolygon> MeshInCell(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& prims)
 {
@@ -176,8 +180,31 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
       TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches);
       certificate.Bound = tree.Grid.CellDiagonal(node.Level);
     }
-    const HausdorffEstimate e = CertifiedMeshCellError(surface, patches, mesh,
-      RoundingSlack(*LoneMeshLeaf(expression), prims, box), 0.0, std::min(certificate.Bound, tree.HausdorffTolerance), 0);
+    const double slack = RoundingSlack(*LoneMeshLeaf(expression), prims, box);
+    if (prediction != tree.MeshCellPredictions.end())
+    {
+      // Two triangles fewer: Marching Cubes' fan from a loop point where the
+      // surface is smooth along the loop, kept where its own certificate is
+      // within the tolerance (the apex fan's prediction says nothing of it).
+      CellPatches fromLoopPoint;
+      if (TriangulateCellFromLoopPoint(loops, node, tree.Grid, vertices, mesh, fromLoopPoint))
+      {
+        // (Stops at the first proof under the tolerance; RefineMeshCertificates
+        // tightens the ones that may set the reported bound.)
+        const HausdorffEstimate e = CertifiedMeshCellError(surface, fromLoopPoint, mesh, slack,
+          tree.HausdorffTolerance, tree.HausdorffTolerance, LoopFanCertificateBudget);
+        if (e.Upper <= tree.HausdorffTolerance)
+        {
+          patches = std::move(fromLoopPoint);
+          certificate.Bound = certificate.Error = e.Upper;
+          certificate.Lower = e.Lower;
+          certificate.Mesh = true;
+          return certificate;
+        }
+      }
+    }
+    const HausdorffEstimate e = CertifiedMeshCellError(
+      surface, patches, mesh, slack, 0.0, std::min(certificate.Bound, tree.HausdorffTolerance), 0);
     certificate.Error = std::min(certificate.Bound, e.Upper);
     certificate.Lower = e.Lower;
     certificate.Mesh = true;
