@@ -114,10 +114,13 @@ TEST(Creases, CadMeshCreasesAreFollowedByOutputEdges)
 {
   TPC_SKIP_WITHOUT_CGAL_MESHES();
   // Largest ratio of output to input 30-degree creases allowed (measured:
-  // couplingdown 3.55, fandisk 0.90 - issue 17 asks for 1.5; crease tiles
+  // couplingdown 3.48, fandisk 0.82 - issue 17 asks for 1.5, which
+  // couplingdown's chamfers and fillets narrower than the tolerance, a 90-degree
+  // corner at its scale counted twice or not at all by the input, keep out
+  // of reach by count (2.4 by length); crease tiles
   // drawn but not predicted: 3.8 and 2.6; without crease tiles, at fa5d09c,
   // 3.5 and 3.1), and the fraction of output creases lying on input creases
-  // required (measured: 0.14 and 0.17 - fewer, larger cells; drawn but not
+  // required (measured: 0.14 and 0.19 - fewer, larger cells; drawn but not
   // predicted: 0.17 and 0.48; without: 0.014 and 0.009).
   struct Case
   {
