@@ -77,7 +77,7 @@ void TileSegments(const std::vector<FacePoint>& poly, int axis, LatticeIndex pla
     Crossing bend;
     bend.Kind = CrossingKind::Bend;
     bend.Key = std::min(in.Key, out.Key);
-    bend.Tile = WithAxis(TileCorner(axis, plane, tile, 0), axis) + 1;
+    bend.Tile = TileKey(axis, plane, tile);
     bend.Partner = std::max(in.Key, out.Key);
     segments.emplace_back(in, bend);
     segments.emplace_back(bend, out);
@@ -154,6 +154,14 @@ void FaceSegments(const CellBoundary& b, int f, std::vector<Segment>& segments)
     }
   }
 }
+
+/// The faces of the cell with low corner `base` and edge `size` that lie in
+/// the lattice plane x_axis = `plane`: its low face's bit, its high face's,
+/// or none.
+unsigned FacesInPlane(int axis, LatticeIndex plane, const LatticeIndex base[3], LatticeIndex size)
+{
+  return (plane == base[axis] ? 1u : 0u) << (2 * axis) | (plane == base[axis] + size ? 1u : 0u) << (2 * axis + 1);
+}
 } // namespace
 
 unsigned CrossingFaces(const Crossing& c, const LatticeIndex base[3], LatticeIndex size)
@@ -164,9 +172,7 @@ unsigned CrossingFaces(const Crossing& c, const LatticeIndex base[3], LatticeInd
   }
   if (c.Kind == CrossingKind::MeshEdge)
   {
-    const int axis = PlaneAxis(c.Key);
-    const LatticeIndex plane = PlaneCoordinate(c.Key);
-    return (plane == base[axis] ? 1u : 0u) << (2 * axis) | (plane == base[axis] + size ? 1u : 0u) << (2 * axis + 1);
+    return FacesInPlane(PlaneAxis(c.Key), PlaneCoordinate(c.Key), base, size);
   }
   if (c.Kind == CrossingKind::MeshVertex)
   {
@@ -174,11 +180,10 @@ unsigned CrossingFaces(const Crossing& c, const LatticeIndex base[3], LatticeInd
   }
   if (c.Kind == CrossingKind::CsgCrease)
   {
-    const int axis = AxisOf(c.Tile - 1);
+    const int axis = TileKeyAxis(c.Tile);
     LatticeIndex corner[3];
-    SplitPointKey(PointOf(c.Tile - 1), corner);
-    return (corner[axis] == base[axis] ? 1u : 0u) << (2 * axis) |
-      (corner[axis] == base[axis] + size ? 1u : 0u) << (2 * axis + 1);
+    TileKeyCorner(c.Tile, corner);
+    return FacesInPlane(axis, corner[axis], base, size);
   }
   LatticeIndex p[3];
   SplitPointKey(PointOf(c.Key), p);
@@ -188,8 +193,7 @@ unsigned CrossingFaces(const Crossing& c, const LatticeIndex base[3], LatticeInd
   {
     if (a != along)
     {
-      mask |= (p[a] == base[a] ? 1u : 0u) << (2 * a);
-      mask |= (p[a] == base[a] + size ? 1u : 0u) << (2 * a + 1);
+      mask |= FacesInPlane(a, p[a], base, size);
     }
   }
   return mask;

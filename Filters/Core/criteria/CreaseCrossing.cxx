@@ -38,13 +38,7 @@ void NearTile(const MeshSolid& mesh, const RootGrid& grid, const TriangleList& t
   near.clear();
   for (const std::uint32_t t : triangles)
   {
-    const Box3& bounds = mesh.TriangleBounds(t);
-    bool apart = false;
-    for (int a = 0; a < 3; ++a)
-    {
-      apart = apart || bounds.hi[a] < tileBox.lo[a] || bounds.lo[a] > tileBox.hi[a];
-    }
-    if (!apart)
+    if (mesh.TriangleBounds(t).Overlaps(tileBox))
     {
       near.push_back(t);
     }

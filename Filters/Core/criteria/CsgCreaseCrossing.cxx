@@ -87,7 +87,7 @@ Crossing CsgCreaseCrossing(int axis, LatticeIndex plane, const FaceTile& tile)
 {
   Crossing x;
   x.Kind = CrossingKind::CsgCrease;
-  x.Tile = WithAxis(TileCorner(axis, plane, tile, 0), axis) + 1;
+  x.Tile = TileKey(axis, plane, tile);
   x.Key = tile.U1;
   x.Partner = tile.V1;
   return x;
@@ -106,9 +106,9 @@ namespace
 /// The box of a CsgCrease crossing's tile, and the tile's plane axis.
 Box3 CreaseTileBox(const Crossing& x, const RootGrid& grid, int& axis)
 {
-  axis = AxisOf(x.Tile - 1);
+  axis = TileKeyAxis(x.Tile);
   LatticeIndex corner[3];
-  SplitPointKey(PointOf(x.Tile - 1), corner);
+  TileKeyCorner(x.Tile, corner);
   FaceTile tile;
   tile.U0 = corner[(axis + 1) % 3];
   tile.V0 = corner[(axis + 2) % 3];

@@ -43,6 +43,32 @@ void WriteCellPatches(const CellPatches& patches, std::uint32_t cell, std::size_
     mesh.Normals[v] = Normalized(mesh.Normals[v]);
   }
 }
+
+/// The `count` crossings from `crossings` as a loop's points (position,
+/// normal, the faces of the cell with low corner `base` and edge `size`
+/// holding them), appended to `points`, and their vertex ids to `ids`.
+void GatherLoop(const Crossing* crossings, std::size_t count, const CrossingVertices& vertices,
+  const TriangleMesh& mesh, const LatticeIndex base[3], LatticeIndex size, std::vector<std::uint32_t>& ids,
+  std::vector<LoopPoint>& points)
+{
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    const Crossing& c = crossings[k];
+    const std::uint32_t id = vertices.IdOf(c);
+    ids.push_back(id);
+    points.push_back({ mesh.Points[id], mesh.Normals[id], CrossingFaces(c, base, size) });
+  }
+}
+
+/// Marching Cubes' fan of the loop `id` from its point s: k - 2 triangles.
+void AppendLoopFan(const std::vector<std::uint32_t>& id, std::size_t s, CellPatches& out)
+{
+  const std::size_t k = id.size();
+  for (std::size_t i = 1; i + 1 < k; ++i)
+  {
+    out.Triangles.push_back({ id[s], id[(s + i) % k], id[(s + i + 1) % k] });
+  }
+}
 } // namespace
 
 void TriangulateCell(const BoundaryLoopSet& loops, const OctreeNode& node, const CsgExpression& expression,
@@ -61,17 +87,14 @@ void TriangulateCell(const BoundaryLoopSet& loops, const OctreeNode& node, const
   {
     ids.emplace_back();
     points.emplace_back();
+    GatherLoop(loops.Crossings.data() + offset, loopSize, vertices, mesh, base, size, ids.back(), points.back());
     Box3 b{ { HUGE_VAL, HUGE_VAL, HUGE_VAL }, { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL } };
-    for (std::uint32_t k = 0; k < loopSize; ++k)
+    for (const LoopPoint& p : points.back())
     {
-      const Crossing& c = loops.Crossings[offset + k];
-      const std::uint32_t id = vertices.IdOf(c);
-      ids.back().push_back(id);
-      points.back().push_back({ mesh.Points[id], mesh.Normals[id], CrossingFaces(c, base, size) });
       for (int a = 0; a < 3; ++a)
       {
-        b.lo[a] = std::min(b.lo[a], mesh.Points[id][a]);
-        b.hi[a] = std::max(b.hi[a], mesh.Points[id][a]);
+        b.lo[a] = std::min(b.lo[a], p.Position[a]);
+        b.hi[a] = std::max(b.hi[a], p.Position[a]);
       }
     }
     boxes.push_back(b);
@@ -104,11 +127,7 @@ void TriangulateCell(const BoundaryLoopSet& loops, const OctreeNode& node, const
     }
     else if (patch.Kind == LoopPatchKind::LoopFan)
     {
-      const std::size_t s = static_cast<std::size_t>(patch.FanPoint);
-      for (std::size_t i = 1; i + 1 < k; ++i)
-      {
-        out.Triangles.push_back({ id[s], id[(s + i) % k], id[(s + i + 1) % k] });
-      }
+      AppendLoopFan(id, static_cast<std::size_t>(patch.FanPoint), out);
     }
     else
     {
@@ -132,28 +151,21 @@ bool TriangulateCellFromLoopPoint(const BoundaryLoopSet& loops, const OctreeNode
   LatticeIndex base[3];
   CornerLattice(grid, node, 0, base);
   const LatticeIndex size = LatticeIndex(1) << (grid.MaxDepth - node.Level);
+  if (std::any_of(loops.Crossings.begin(), loops.Crossings.end(),
+        [](const Crossing& c) { return c.Kind != CrossingKind::SubEdge; }))
+  {
+    return false; // a crease vertex (or a bend: a cell stopped by a limit)
+  }
   std::vector<std::uint32_t> ids;
   std::vector<LoopPoint> points;
-  for (const Crossing& c : loops.Crossings)
-  {
-    if (c.Kind != CrossingKind::SubEdge)
-    {
-      return false; // a crease vertex (or a bend: a cell stopped by a limit)
-    }
-    ids.push_back(vertices.IdOf(c));
-    points.push_back({ mesh.Points[ids.back()], mesh.Normals[ids.back()], CrossingFaces(c, base, size) });
-  }
+  GatherLoop(loops.Crossings.data(), loops.Crossings.size(), vertices, mesh, base, size, ids, points);
   const int s = LoopFanPoint(points);
   if (s < 0)
   {
     return false;
   }
-  const std::size_t k = ids.size(), first = static_cast<std::size_t>(s);
   out = CellPatches();
-  for (std::size_t i = 1; i + 1 < k; ++i)
-  {
-    out.Triangles.push_back({ ids[first], ids[(first + i) % k], ids[(first + i + 1) % k] });
-  }
+  AppendLoopFan(ids, static_cast<std::size_t>(s), out);
   return true;
 }
 

@@ -39,9 +39,9 @@ void PlaceBendVertices(const CrossingVertices& vertices, TriangleMesh& mesh)
     last.Key = c.Partner;
     const Vec3 a = mesh.Points[vertices.IdOf(first)], b = mesh.Points[vertices.IdOf(last)];
     LatticeIndex corner[3], on[3];
-    SplitPointKey(PointOf(c.Tile - 1), corner);
+    TileKeyCorner(c.Tile, corner);
     SplitPointKey(PointOf(c.Key), on);
-    const int plane = AxisOf(c.Tile - 1), along = AxisOf(c.Key);
+    const int plane = TileKeyAxis(c.Tile), along = AxisOf(c.Key);
     const int across = 3 - plane - along;
     Vec3 p = (a + b) * 0.5;
     p[across] += (on[across] == corner[across] ? 1e-3 : -1e-3) * Norm(b - a);

@@ -26,6 +26,22 @@ inline PointKey TileCorner(int axis, LatticeIndex plane, const FaceTile& t, int 
   return MakePointKey(p[0], p[1], p[2]);
 }
 
+/// A tile as a crossing's key (a bend's or a CSG crease's, BoundaryLoops.h):
+/// its low corner and its plane's axis, plus one (never zero).
+inline LatticeKey TileKey(int axis, LatticeIndex plane, const FaceTile& t)
+{
+  return WithAxis(TileCorner(axis, plane, t, 0), axis) + 1;
+}
+/// The plane axis of a TileKey, and its low corner.
+inline int TileKeyAxis(LatticeKey key)
+{
+  return AxisOf(key - 1);
+}
+inline void TileKeyCorner(LatticeKey key, LatticeIndex corner[3])
+{
+  SplitPointKey(PointOf(key - 1), corner);
+}
+
 /// The closed box of a tile lying in the plane axis = plane (flat along
 /// axis), in world coordinates.
 inline Box3 TileBox(const RootGrid& grid, int axis, LatticeIndex plane, const FaceTile& t)
