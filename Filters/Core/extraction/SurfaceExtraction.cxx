@@ -156,13 +156,34 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
   {
     const std::vector<ConvexPolygon> surface = MeshInCell(tree, n, prims);
     const auto prediction = tree.MeshCellPredictions.find(n);
+    const double slack = RoundingSlack(*LoneMeshLeaf(expression), prims, box);
+    certificate.Mesh = true;
     if (prediction != tree.MeshCellPredictions.end())
     {
-      // Larger than the tolerance: the fan around the apex the prediction
-      // was made with. The prediction holds when the final loop refines the
-      // cell's own, its points on the surface's trace in the same tiles
-      // (no cell was stopped by a limit: its tiles may hold bends or two
-      // chords); the patch is certified on its own anyway.
+      // Larger than the tolerance. First, two triangles fewer: Marching
+      // Cubes' fan from a loop point where the surface is smooth along the
+      // loop, kept where its own certificate is within the tolerance (the
+      // apex fan's prediction says nothing of it). The certificate stops at
+      // the first proof under the tolerance; RefineMeshCertificates tightens
+      // the ones that may set the reported bound.
+      CellPatches fromLoopPoint;
+      if (TriangulateCellFromLoopPoint(loops, node, tree.Grid, vertices, mesh, fromLoopPoint))
+      {
+        const HausdorffEstimate e = CertifiedMeshCellError(surface, fromLoopPoint, mesh, slack,
+          tree.HausdorffTolerance, tree.HausdorffTolerance, LoopFanCertificateBudget);
+        if (e.Upper <= tree.HausdorffTolerance)
+        {
+          patches = std::move(fromLoopPoint);
+          certificate.Bound = certificate.Error = e.Upper;
+          certificate.Lower = e.Lower;
+          return certificate;
+        }
+      }
+      // Else the fan around the apex the prediction was made with. The
+      // prediction holds when the final loop refines the cell's own, its
+      // points on the surface's trace in the same tiles (no cell was stopped
+      // by a limit: its tiles may hold bends or two chords); the patch is
+      // certified on its own anyway.
       const Vec3 apex = MeshCellApex(surface, box);
       TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches, nullptr, &apex);
       std::vector<Vec3> final;
@@ -180,34 +201,10 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
       TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches);
       certificate.Bound = tree.Grid.CellDiagonal(node.Level);
     }
-    const double slack = RoundingSlack(*LoneMeshLeaf(expression), prims, box);
-    if (prediction != tree.MeshCellPredictions.end())
-    {
-      // Two triangles fewer: Marching Cubes' fan from a loop point where the
-      // surface is smooth along the loop, kept where its own certificate is
-      // within the tolerance (the apex fan's prediction says nothing of it).
-      CellPatches fromLoopPoint;
-      if (TriangulateCellFromLoopPoint(loops, node, tree.Grid, vertices, mesh, fromLoopPoint))
-      {
-        // (Stops at the first proof under the tolerance; RefineMeshCertificates
-        // tightens the ones that may set the reported bound.)
-        const HausdorffEstimate e = CertifiedMeshCellError(surface, fromLoopPoint, mesh, slack,
-          tree.HausdorffTolerance, tree.HausdorffTolerance, LoopFanCertificateBudget);
-        if (e.Upper <= tree.HausdorffTolerance)
-        {
-          patches = std::move(fromLoopPoint);
-          certificate.Bound = certificate.Error = e.Upper;
-          certificate.Lower = e.Lower;
-          certificate.Mesh = true;
-          return certificate;
-        }
-      }
-    }
     const HausdorffEstimate e = CertifiedMeshCellError(
       surface, patches, mesh, slack, 0.0, std::min(certificate.Bound, tree.HausdorffTolerance), 0);
     certificate.Error = std::min(certificate.Bound, e.Upper);
     certificate.Lower = e.Lower;
-    certificate.Mesh = true;
     return certificate;
   }
   const std::optional<QuadricCellError> quadric = bounded
