@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <functional>
 #include <queue>
 #include <utility>
 
@@ -62,16 +61,73 @@ double PointBoxDistance2(const Vec3& p, const Box3& b)
   return sum;
 }
 
-/// The piece's bound ((1) and (2) of the header) from the targets among
-/// `candidates` that may be nearest to one of its points (box distance within
-/// `parentUpper`); raises `lower` to its vertices' distances. Targets are
+} // namespace
+
+double CoveringRadius(const SourceTriangle& t)
+{
+  // Squared edge lengths, c the longest, opposite vertex C; a opposite A
+  // (next after C), b opposite B.
+  double e2[3];
+  for (int i = 0; i < 3; ++i)
+  {
+    const Vec3 d = t[(i + 1) % 3] - t[(i + 2) % 3];
+    e2[i] = Dot(d, d); // (the edge opposite vertex i)
+  }
+  const int C = e2[0] >= e2[1] && e2[0] >= e2[2] ? 0 : e2[1] >= e2[2] ? 1 : 2;
+  const double c2 = e2[C], a2 = e2[(C + 1) % 3], b2 = e2[(C + 2) % 3];
+  if (c2 == 0.0)
+  {
+    return 0.0;
+  }
+  const double c = std::sqrt(c2);
+  double radius;
+  if (c2 >= a2 + b2)
+  {
+    // Right or obtuse at C: the circumcentre is not inside, and the farthest
+    // point from the vertices is where the perpendicular bisector of AC or
+    // of BC meets AB. On AB at distance r from A, |x - C| = r gives
+    // r = b^2 c / (b^2 + c^2 - a^2) (law of cosines; the denominator is at
+    // least 2 b^2 since c is the longest), likewise from B.
+    const double fromA = b2 == 0.0 ? 0.0 : b2 * c / (b2 + c2 - a2);
+    const double fromB = a2 == 0.0 ? 0.0 : a2 * c / (a2 + c2 - b2);
+    radius = std::max(fromA, fromB);
+  }
+  else
+  {
+    // Acute: the circumcentre is inside, equidistant from all three, and
+    // nothing in the triangle is farther from its nearest vertex: the
+    // circumradius abc / (4 area) = abc / (2 |AB x AC|).
+    const Vec3 cross = Cross(t[1] - t[0], t[2] - t[0]);
+    radius = std::sqrt(a2 * b2) * c / (2.0 * Norm(cross));
+  }
+  // (A few roundings, relative: far below the caller's slack; the factor
+  // keeps the result an upper bound anyway.)
+  return radius * (1.0 + 1e-12);
+}
+
+namespace
+{
+/// What every piece of one branch and bound is evaluated against: the
+/// targets, their boxes side by side (the first loop reads only those), and
+/// the scratch reused across pieces.
+struct Targets
+{
+  const std::vector<ConvexPolygon>& Polygons;
+  std::vector<Box3>& Boxes;
+  std::vector<std::pair<double, std::uint32_t>>& Order;
+  std::vector<std::uint32_t>& Arena;
+};
+
+/// The piece's bound ((1) and (2) of the header) from the targets among the
+/// candidates (`count` entries of the arena from `first`) that may be nearest
+/// to one of its points (box distance within `parentUpper`); raises `lower` to its vertices' distances. Targets are
 /// visited nearest box first, and a distance is computed only where it may
 /// lower a vertex's nearest distance or the single-target bound (box
 /// distances are lower bounds of distances), so both stay exact.
-void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentUpper,
-  const std::vector<ConvexPolygon>& targets, double& lower, std::vector<std::pair<double, std::uint32_t>>& order,
-  std::vector<std::uint32_t>& arena)
+void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentUpper, Targets& targets, double& lower)
 {
+  std::vector<std::pair<double, std::uint32_t>>& order = targets.Order;
+  std::vector<std::uint32_t>& arena = targets.Arena;
   // (Box distances are compared squared: no square root per target.)
   const Box3 box = BoundsOf(piece.Vertices.data(), 3);
   const double parentUpper2 = parentUpper * parentUpper;
@@ -79,7 +135,7 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
   for (std::size_t k = first; k < first + count; ++k)
   {
     const std::uint32_t t = arena[k];
-    const double d2 = BoxDistance2(box, targets[t].Bounds);
+    const double d2 = BoxDistance2(box, targets.Boxes[t]);
     if (d2 <= parentUpper2)
     {
       order.emplace_back(d2, t);
@@ -87,7 +143,9 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
   }
   // Nearest box first from a heap, not a sort: the walk usually stops after
   // a few targets.
-  const auto nearer = std::greater<std::pair<double, std::uint32_t>>();
+  const auto nearer = [](const std::pair<double, std::uint32_t>& a, const std::pair<double, std::uint32_t>& b) {
+    return a.first > b.first;
+  };
   std::make_heap(order.begin(), order.end(), nearer);
   double nearest[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL };
   double single = HUGE_VAL;
@@ -100,14 +158,24 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
     {
       break; // (nearest first: no later target can lower either)
     }
-    const ConvexPolygon& target = targets[t];
+    const ConvexPolygon& target = targets.Polygons[t];
     // Whether this target may give a smaller single-target bound: then all
-    // three distances are needed, until one reaches the current bound.
-    bool improvesSingle = boxDistance2 < single * single;
+    // three distances are needed, until one reaches the current bound. (A
+    // vertex's distance to the target's box is a lower bound of its distance
+    // to the target: one vertex that far rules the target out, which for a
+    // piece much larger than the targets is most of them.)
+    double boxDistance2Of[3];
+    double farthestBox2 = 0.0;
+    for (int i = 0; i < 3; ++i)
+    {
+      boxDistance2Of[i] = PointBoxDistance2(piece.Vertices[i], target.Bounds);
+      farthestBox2 = std::max(farthestBox2, boxDistance2Of[i]);
+    }
+    bool improvesSingle = farthestBox2 < single * single;
     double farthest = 0.0;
     for (int i = 0; i < 3; ++i)
     {
-      const bool improvesNearest = PointBoxDistance2(piece.Vertices[i], target.Bounds) < nearest[i] * nearest[i];
+      const bool improvesNearest = boxDistance2Of[i] < nearest[i] * nearest[i];
       if (!improvesNearest && !improvesSingle)
       {
         continue;
@@ -122,14 +190,12 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
       single = farthest; // (all three computed, their maximum below the bound)
     }
   }
-  const Vec3 centroid = (piece.Vertices[0] + piece.Vertices[1] + piece.Vertices[2]) * (1.0 / 3.0);
-  double radius = 0.0, vertexMax = 0.0;
+  double vertexMax = 0.0;
   for (int i = 0; i < 3; ++i)
   {
-    radius = std::max(radius, Norm(piece.Vertices[i] - centroid));
     vertexMax = std::max(vertexMax, nearest[i]);
   }
-  piece.Upper = std::min(single, vertexMax + radius);
+  piece.Upper = std::min(single, vertexMax + CoveringRadius(piece.Vertices));
   lower = std::max(lower, vertexMax == HUGE_VAL ? 0.0 : vertexMax);
   // (Appended after the parent's entries were read: the arena may move.)
   const double upper2 = piece.Upper * piece.Upper;
@@ -232,16 +298,20 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
   // first entries every target; Evaluate's ordering.
   thread_local std::vector<std::uint32_t> arena;
   thread_local std::vector<std::pair<double, std::uint32_t>> order;
+  thread_local std::vector<Box3> boxes;
   arena.resize(targets.size());
+  boxes.resize(targets.size());
   for (std::uint32_t t = 0; t < targets.size(); ++t)
   {
     arena[t] = t;
+    boxes[t] = targets[t].Bounds;
   }
+  Targets context{ targets, boxes, order, arena };
   std::priority_queue<Piece> pieces;
   for (const SourceTriangle& s : sources)
   {
     Piece piece{ s, 0, 0, HUGE_VAL };
-    Evaluate(piece, 0, targets.size(), HUGE_VAL, targets, estimate.Lower, order, arena);
+    Evaluate(piece, 0, targets.size(), HUGE_VAL, context, estimate.Lower);
     pieces.push(piece);
   }
   std::size_t evaluated = sources.size();
@@ -263,7 +333,7 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
         SourceTriangle{ m01, m12, m20 } })
     {
       Piece piece{ child, 0, 0, HUGE_VAL };
-      Evaluate(piece, parent.First, parent.Count, parent.Upper, targets, estimate.Lower, order, arena);
+      Evaluate(piece, parent.First, parent.Count, parent.Upper, context, estimate.Lower);
       piece.Upper = std::min(piece.Upper, parent.Upper); // (the child lies in its parent)
       pieces.push(piece);
     }

@@ -8,9 +8,12 @@
 //   T's vertices: max over T of d(., B) <= min_j max_i d(v_i, Q_j). (1)
 //   (d(., B) itself is a minimum of convex functions and is not convex: the
 //   bound must pick one Q_j for the whole piece.)
-// - d(., B) is 1-Lipschitz, and every x = sum l_i v_i of T is within R of a
-//   vertex, R = max_i |v_i - o| for o the centroid (sum l_i |v_i - x|^2 <=
-//   sum l_i |v_i - o|^2 <= R^2, and the smallest term is below the mean):
+// - d(., B) is 1-Lipschitz, and every x of T is within R of a vertex, R =
+//   max over T of min_i |x - v_i| (CoveringRadius: the circumradius of an
+//   acute T, else the distance to its end of the longest edge's point that
+//   is as far from the obtuse vertex; a midpoint split keeps the pieces'
+//   shape, so a thin piece is bounded by about half its length, not by the
+//   two thirds the centroid's farthest vertex would give):
 //   max over T of d(., B) <= max_i d(v_i, B) + R. (2)
 // A piece's upper bound is the smaller of (1) and (2); the exact distances at
 // its vertices, max_i d(v_i, B), are lower bounds of h. The largest upper
@@ -51,6 +54,9 @@ ConvexPolygon MakeConvexPolygon(std::vector<Vec3> points);
 
 /// Distance from `p` to the segment [a, b].
 double SegmentDistance(const Vec3& p, const Vec3& a, const Vec3& b);
+
+/// max over the triangle of the distance to its nearest vertex (rounded up).
+double CoveringRadius(const std::array<Vec3, 3>& triangle);
 
 /// Distance from `p` to the polygon (its interior included).
 double PolygonDistance(const Vec3& p, const ConvexPolygon& polygon);

@@ -210,10 +210,11 @@ std::vector<std::uint32_t> ComponentLabels(UnionFind& components, std::size_t tr
 }
 
 /// Orients every component consistently; returns the component of each triangle.
-std::vector<std::uint32_t> OrientConsistently(std::vector<Triangle>& triangles, MeshRepairReport& r)
+std::vector<std::uint32_t> OrientConsistently(
+  std::vector<Triangle>& triangles, const ParallelFor& parallelFor, MeshRepairReport& r)
 {
   std::vector<EdgeUse> uses;
-  BuildEdgeTable(triangles.data(), triangles.size(), uses);
+  BuildEdgeTable(triangles.data(), triangles.size(), uses, parallelFor);
   UnionFind components(triangles.size());
   const std::vector<bool> flips = ConsistentFlips(EdgeNeighbours(uses, triangles.size(), components, r), r);
   for (std::size_t t = 0; t < triangles.size(); ++t)
@@ -295,7 +296,7 @@ MeshRepairReport RepairMesh(std::vector<Vec3>& points, std::vector<Triangle>& tr
   {
     return r;
   }
-  const std::vector<std::uint32_t> component = OrientConsistently(triangles, r);
+  const std::vector<std::uint32_t> component = OrientConsistently(triangles, parallelFor, r);
   if (stop(0.08))
   {
     return r;
@@ -329,7 +330,7 @@ MeshRepairReport RepairMesh(std::vector<Vec3>& points, std::vector<Triangle>& tr
   }
   const long long vertices = std::count(used.begin(), used.end(), true);
   std::vector<EdgeUse> uses;
-  BuildEdgeTable(triangles.data(), triangles.size(), uses);
+  BuildEdgeTable(triangles.data(), triangles.size(), uses, parallelFor);
   long long edges = 0;
   ForEachEdge(uses, [&edges](std::size_t, std::size_t) { ++edges; });
   r.EulerCharacteristic = vertices - edges + static_cast<long long>(triangles.size());

@@ -373,6 +373,20 @@ struct BinGrid
   {
     return std::clamp(static_cast<int>(std::floor((x - this->All.lo[a]) / this->Cell)), 0, this->Dims[a] - 1);
   }
+  std::uint64_t Key(int x, int y, int z) const
+  {
+    return (static_cast<std::uint64_t>(x) * this->Dims[1] + y) * this->Dims[2] + z;
+  }
+  /// The bin of the lower corner of two overlapping boxes' intersection.
+  std::uint64_t FirstCommonBin(const Box3& a, const Box3& b) const
+  {
+    int lo[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      lo[k] = this->Index(k, std::max(a.lo[k], b.lo[k]));
+    }
+    return this->Key(lo[0], lo[1], lo[2]);
+  }
   /// (bin, triangle) for every bin each triangle's box meets.
   std::vector<std::pair<std::uint64_t, std::uint32_t>> Entries(const std::vector<Box3>& boxes) const
   {
@@ -391,8 +405,7 @@ struct BinGrid
         {
           for (int z = lo[2]; z <= hi[2]; ++z)
           {
-            const std::uint64_t key = (static_cast<std::uint64_t>(x) * this->Dims[1] + y) * this->Dims[2] + z;
-            entries.emplace_back(key, static_cast<std::uint32_t>(t));
+            entries.emplace_back(this->Key(x, y, z), static_cast<std::uint32_t>(t));
           }
         }
       }
@@ -403,9 +416,16 @@ struct BinGrid
 
 /// Pairs of triangles whose bounding boxes overlap (each pair once, smaller
 /// index first): binned by a uniform grid, sorted by bin, pairs within each
-/// bin. (Progress between the passes; an abort returns no pairs.)
+/// bin. A pair shares every bin its boxes' intersection meets, and is kept in
+/// the first of them only - the bin of the intersection's lower corner, whose
+/// index on each axis is the larger of the two boxes' lower indices (Index is
+/// monotone) - so no pair is found twice and no sort of the pairs is needed.
+/// The bins are cut into blocks searched in parallel; the pairs come in bin
+/// order whatever the threads. (Progress between the passes; an abort
+/// returns no pairs.)
 std::vector<std::pair<std::uint32_t, std::uint32_t>> CandidatePairs(const std::vector<Vec3>& points,
-  const std::vector<std::array<std::uint32_t, 3>>& triangles, const ProgressCallback& progress)
+  const std::vector<std::array<std::uint32_t, 3>>& triangles, const ParallelFor& parallelFor,
+  const ProgressCallback& progress)
 {
   auto stop = [&progress](double f) { return progress && progress(f); };
   if (triangles.size() < 2)
@@ -413,47 +433,64 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> CandidatePairs(const std::v
     return {};
   }
   std::vector<Box3> boxes(triangles.size());
-  for (std::size_t t = 0; t < triangles.size(); ++t)
-  {
-    boxes[t] = TriangleBox(points.data(), triangles[t]);
-  }
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> entries = BinGrid(boxes).Entries(boxes);
-  if (stop(0.1))
+  parallelFor(triangles.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t)
+    {
+      boxes[t] = TriangleBox(points.data(), triangles[t]);
+    }
+  });
+  const BinGrid grid(boxes);
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> entries = grid.Entries(boxes);
+  if (stop(0.1) || !ParallelSort(entries, std::less<>(), parallelFor, ProgressRange(progress, 0.1, 0.5)))
   {
     return {};
   }
-  std::sort(entries.begin(), entries.end());
-  if (stop(0.4))
+  // Blocks of whole bins, each starting at a bin's first entry.
+  constexpr std::size_t Blocks = 64;
+  std::vector<std::size_t> blockStart(Blocks + 1, entries.size());
+  for (std::size_t b = 0; b < Blocks; ++b)
+  {
+    std::size_t i = entries.size() * b / Blocks;
+    while (i > 0 && i < entries.size() && entries[i - 1].first == entries[i].first)
+    {
+      ++i;
+    }
+    blockStart[b] = b > 0 ? std::max(i, blockStart[b - 1]) : 0;
+  }
+  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(Blocks);
+  if (!ChunkedFor(Blocks, 8, parallelFor, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t b = begin; b < end; ++b)
+        {
+          for (std::size_t i = blockStart[b]; i < blockStart[b + 1];)
+          {
+            std::size_t j = i;
+            while (j < blockStart[b + 1] && entries[j].first == entries[i].first)
+            {
+              ++j;
+            }
+            for (std::size_t p = i; p < j; ++p)
+            {
+              for (std::size_t q = p + 1; q < j; ++q)
+              {
+                const std::uint32_t t1 = entries[p].second, t2 = entries[q].second;
+                if (boxes[t1].Overlaps(boxes[t2]) && grid.FirstCommonBin(boxes[t1], boxes[t2]) == entries[i].first)
+                {
+                  found[b].emplace_back(std::min(t1, t2), std::max(t1, t2));
+                }
+              }
+            }
+            i = j;
+          }
+        }
+      }, ProgressRange(progress, 0.5, 0.9)))
   {
     return {};
   }
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-  for (std::size_t i = 0; i < entries.size();)
+  for (const auto& block : found)
   {
-    std::size_t j = i;
-    while (j < entries.size() && entries[j].first == entries[i].first)
-    {
-      ++j;
-    }
-    for (std::size_t p = i; p < j; ++p)
-    {
-      for (std::size_t q = p + 1; q < j; ++q)
-      {
-        const std::uint32_t t1 = entries[p].second, t2 = entries[q].second;
-        if (boxes[t1].Overlaps(boxes[t2]))
-        {
-          pairs.emplace_back(std::min(t1, t2), std::max(t1, t2));
-        }
-      }
-    }
-    i = j;
+    pairs.insert(pairs.end(), block.begin(), block.end());
   }
-  if (stop(0.6))
-  {
-    return {};
-  }
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   return pairs;
 }
 
@@ -493,7 +530,7 @@ std::size_t CountSelfIntersections(const std::vector<Vec3>& points,
   const std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t limit,
   const ParallelFor& parallelFor, const ProgressCallback& progress)
 {
-  return CountAccepted(CandidatePairs(points, triangles, ProgressRange(progress, 0.0, 0.2)), limit, parallelFor,
+  return CountAccepted(CandidatePairs(points, triangles, parallelFor, ProgressRange(progress, 0.0, 0.2)), limit, parallelFor,
     ProgressRange(progress, 0.2, 1.0),
     [&](std::uint32_t t1, std::uint32_t t2) { return TrianglesMeetImproperly(points.data(), triangles[t1], triangles[t2]); });
 }
@@ -513,7 +550,7 @@ std::size_t CountCoincidentFaces(const std::vector<Vec3>& pointsA,
     triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
   }
   const auto fromA = static_cast<std::uint32_t>(trianglesA.size());
-  return CountAccepted(CandidatePairs(points, triangles, ProgressRange(progress, 0.0, 0.2)), limit, parallelFor,
+  return CountAccepted(CandidatePairs(points, triangles, parallelFor, ProgressRange(progress, 0.0, 0.2)), limit, parallelFor,
     ProgressRange(progress, 0.2, 1.0), [&](std::uint32_t t1, std::uint32_t t2) {
       if ((t1 < fromA) == (t2 < fromA))
       {

@@ -84,8 +84,9 @@ struct Measured
 /// In every mesh cell with a certified error: the distance from the cell's
 /// output triangles (sampled) to the input mesh, and from points of the input
 /// mesh in the cell (sampled) to the output, are at most the cell's
-/// certificate, which is at most the subdivision's prediction (cells larger
-/// than the tolerance) or the cell's diagonal.
+/// certificate, which is at most the tolerance (cells larger than it: an
+/// apex fan's prediction or a fan from a loop point's own certificate, both
+/// proven within it) or the cell's diagonal.
 Measured CheckEveryMeshCertificate(const tpctest::ContourRun& r, const tpc::MeshSolid& input)
 {
   Measured m;
@@ -98,11 +99,11 @@ Measured CheckEveryMeshCertificate(const tpctest::ContourRun& r, const tpc::Mesh
   {
     const tpc::OctreeNode& node = tree.Nodes[n];
     const Box3 cell = tree.Grid.CellBox(node.Level, node.Ijk);
-    // Fans of cells larger than the tolerance: within their prediction;
-    // smaller cells: within their diagonal.
+    // Fans of cells larger than the tolerance: within it; smaller cells:
+    // within their diagonal.
     const auto prediction = tree.MeshCellPredictions.find(n);
     EXPECT_LE(certificate,
-      prediction != tree.MeshCellPredictions.end() ? prediction->second.Bound : tree.Grid.CellDiagonal(node.Level));
+      prediction != tree.MeshCellPredictions.end() ? r.Tolerance : tree.Grid.CellDiagonal(node.Level));
     m.Predicted += prediction != tree.MeshCellPredictions.end() ? 1 : 0;
     EXPECT_LE(certificate, r.HausdorffBound * (1 + 1e-12));
     ++m.Cells;
