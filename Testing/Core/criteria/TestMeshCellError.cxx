@@ -191,6 +191,42 @@ TEST(PolygonHausdorff, DistanceToAPolygonMatchesTheClosestPoint)
   EXPECT_NEAR(tpc::PolygonDistance(Vec3(3, 0, 4), tpc::MakeConvexPolygon({ Vec3(0, 0, 0) })), 5.0, 1e-15);
 }
 
+TEST(PolygonHausdorff, CoveringRadiusIsTheFarthestAnyPointIsFromItsNearestVertex)
+{
+  // Acute, right, obtuse, thin and degenerate triangles: the sampled largest
+  // distance to the nearest vertex never exceeds the covering radius (bound
+  // (2) rests on it) and comes within 1 % of it (it is exact: a looser
+  // radius would split pieces for nothing).
+  const std::vector<SourceTriangle> triangles = {
+    { Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, 0.8, 0.1) },  // acute
+    { Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0) },        // right
+    { Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.3, 0.1, 0.05) }, // obtuse
+    { Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, 0.02, 0) },   // thin, obtuse at its middle
+    { Vec3(0, 0, 0), Vec3(0.02, 1, 0), Vec3(-0.02, 1, 0) }, // thin, acute: a fan triangle
+    { Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.25, 0, 0) },     // collinear
+    { Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 0, 0) },        // a segment
+  };
+  for (std::size_t k = 0; k < triangles.size(); ++k)
+  {
+    const SourceTriangle& t = triangles[k];
+    double sampled = 0.0;
+    constexpr int Steps = 400;
+    for (int i = 0; i <= Steps; ++i)
+    {
+      for (int j = 0; i + j <= Steps; ++j)
+      {
+        const Vec3 x = t[0] + (t[1] - t[0]) * (double(i) / Steps) + (t[2] - t[0]) * (double(j) / Steps);
+        sampled = std::max(sampled,
+          std::min({ tpc::Norm(x - t[0]), tpc::Norm(x - t[1]), tpc::Norm(x - t[2]) }));
+      }
+    }
+    const double radius = tpc::CoveringRadius(t);
+    EXPECT_GE(radius, sampled) << k;
+    EXPECT_LE(radius, 1.01 * sampled) << k;
+  }
+  EXPECT_EQ(tpc::CoveringRadius({ Vec3(1, 2, 3), Vec3(1, 2, 3), Vec3(1, 2, 3) }), 0.0);
+}
+
 TEST(PolygonHausdorff, BoundsTheSampledDistanceAndStaysCloseToIt)
 {
   // A fan of large triangles over a fine bumpy target (a height field): the
