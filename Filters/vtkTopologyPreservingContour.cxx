@@ -44,7 +44,8 @@ namespace
 {
 void ParallelForSMP(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body)
 {
-  vtkSMPTools::For(0, static_cast<vtkIdType>(count),
+  const vtkIdType grain = std::max<vtkIdType>(1, static_cast<vtkIdType>(count) / 64);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(count), grain,
     [&](vtkIdType begin, vtkIdType end) {
       body(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
     });
