@@ -78,12 +78,6 @@ double SquaredNorm(const Vec3& v)
   return Dot(v, v);
 }
 
-/// Upper bound of |f(p)| (the quadric's enclosure over the point).
-double FieldMagnitude(const Quadric& q, const Vec3& p)
-{
-  return q.Enclose(Box3{ p, p }).Magnitude();
-}
-
 /// Squared radius of the smallest ball holding the triangle: half its longest
 /// side where the triangle is right or obtuse (or degenerate), else its
 /// circumradius.
@@ -102,6 +96,105 @@ double SmallestBallRadiusSquared(const Vec3& a, const Vec3& b, const Vec3& c)
   }
   // R = |ab| |bc| |ca| / (4 area) = |ab| |bc| |ca| / (2 |(b-a) x (c-a)|).
   return std::min(ab * bc * ca / (4.0 * twiceArea2), 0.25 * (ab + bc + ca));
+}
+
+/// The leaves of `expression` when it is one quadric leaf, or one union or
+/// intersection (nested nodes of the same kind flattened) of at most
+/// MaximumFields quadric leaves, in a fixed order; false otherwise.
+bool FlatQuadricLeaves(const CsgExpression& expression, std::vector<CsgLeaf>& leaves, bool& isUnion)
+{
+  using Kind = CsgExpression::Node::Kind;
+  leaves.clear();
+  const CsgExpression::Node& root = expression.NodeAt(expression.Root());
+  isUnion = root.NodeKind == Kind::Union;
+  std::vector<std::uint32_t> pending{ expression.Root() };
+  while (!pending.empty())
+  {
+    const CsgExpression::Node& node = expression.NodeAt(pending.back());
+    pending.pop_back();
+    if (node.NodeKind == Kind::Leaf)
+    {
+      if (node.LeafData.Kind != PrimitiveKind::Quadric || leaves.size() == QuadricCellError::MaximumFields)
+      {
+        return false;
+      }
+      leaves.push_back(node.LeafData);
+      continue;
+    }
+    if (node.NodeKind != root.NodeKind)
+    {
+      return false;
+    }
+    for (std::uint32_t c = 0; c < node.ChildCount; ++c)
+    {
+      pending.push_back(expression.ChildIndex(node.FirstChild + c));
+    }
+  }
+  return !leaves.empty();
+}
+
+/// An enclosure of F over a triangle or segment with vertices `v` (count 2
+/// or 3) in the smallest ball of squared radius `radius2`, from the leaves
+/// in `fields` (header: the interpolation error); its magnitude bounds |F|.
+double CombinedMagnitude(const QuadricCellError& bound, unsigned fields, const Vec3* v, int count, double radius2)
+{
+  const double spread = bound.Curvature * radius2 * RoundingAllowance;
+  Interval combined;
+  bool first = true;
+  for (std::size_t i = 0; i < bound.Fields.size(); ++i)
+  {
+    if (!(fields & (1u << i)))
+    {
+      continue;
+    }
+    double lo = HUGE_VAL, hi = -HUGE_VAL;
+    for (int k = 0; k < count; ++k)
+    {
+      const Interval at = bound.Fields[i].Enclose(Box3{ v[k], v[k] });
+      lo = std::min(lo, at.lo);
+      hi = std::max(hi, at.hi);
+    }
+    const Interval leaf(lo - spread, hi + spread);
+    combined = first ? leaf : bound.Union ? Min(combined, leaf) : Max(combined, leaf);
+    first = false;
+  }
+  return first ? HUGE_VAL : combined.Magnitude() * RoundingAllowance;
+}
+
+/// The sum of unit vectors along the leaves' gradients (for a face: with the
+/// face's normal part removed) at p, normalized; zero when they cancel.
+Vec3 BisectingDirection(const QuadricCellError& bound, unsigned fields, const Vec3& p, int dropAxis)
+{
+  Vec3 sum;
+  for (std::size_t i = 0; i < bound.Fields.size(); ++i)
+  {
+    if (fields & (1u << i))
+    {
+      Vec3 g = bound.Fields[i].Gradient(p);
+      if (dropAxis >= 0)
+      {
+        g[dropAxis] = 0.0;
+      }
+      const double length = Norm(g);
+      sum += length > 0.0 ? g * (1.0 / length) : Vec3();
+    }
+  }
+  const double length = Norm(sum);
+  return length > 0.0 ? sum * (1.0 / length) : Vec3();
+}
+
+/// min over the leaves in `fields` of MinimumRise along d over the box.
+double MinimumRiseOfAll(const QuadricCellError& bound, unsigned fields, const Box3& box, const Vec3& d)
+{
+  double lowest = HUGE_VAL;
+  for (std::size_t i = 0; i < bound.Fields.size(); ++i)
+  {
+    if (fields & (1u << i))
+    {
+      lowest = std::min(lowest, MinimumRise(bound.Fields[i], box, d));
+    }
+  }
+  return lowest;
 }
 
 /// The face's rectangle (flat box) of the cell.
@@ -126,6 +219,8 @@ std::optional<QuadricCellError> BoundQuadricCell(const CsgExpressionPtr& cellExp
   {
     return std::nullopt; // (cheap exit: the expression pruned to C already has more)
   }
+  std::vector<CsgLeaf> leaves;
+  bool isUnion = false;
   QuadricCellError bound;
   bound.Cell = cell;
   bound.Margin = margin;
@@ -137,36 +232,72 @@ std::optional<QuadricCellError> BoundQuadricCell(const CsgExpressionPtr& cellExp
     grown.hi[a] = std::nextafter(cell.hi[a] + margin, HUGE_VAL);
   }
   const CsgExpression::Pruned there = CsgExpression::Prune(sceneExpression, grown, primitives);
-  if (there.Sign != RegionSign::Mixed)
+  if (there.Sign != RegionSign::Mixed || !FlatQuadricLeaves(*there.Expression, leaves, isUnion))
   {
-    return std::nullopt;
+    return std::nullopt; // another kind of primitive, or another combination, within the margin
   }
-  const CsgExpression::Node& leaf = there.Expression->NodeAt(there.Expression->Root());
-  if (leaf.NodeKind != CsgExpression::Node::Kind::Leaf || leaf.LeafData.Kind != PrimitiveKind::Quadric)
+  bound.Union = isUnion;
+  for (const CsgLeaf& leaf : leaves)
   {
-    return std::nullopt; // another primitive within the margin
+    bound.Fields.push_back(SignedQuadric(primitives.Quadrics[leaf.Primitive], leaf.Sigma));
+    bound.Curvature = std::max(bound.Curvature, CurvatureBound(bound.Fields.back()));
   }
-  bound.Field = SignedQuadric(primitives.Quadrics[leaf.LeafData.Primitive], leaf.LeafData.Sigma);
-  bound.Direction = Normalized(bound.Field.Gradient(cell.Center()));
-  bound.Rise = MinimumRise(bound.Field, grown, bound.Direction);
+  const unsigned all = (1u << bound.Fields.size()) - 1;
+  // n: the cell's own leaf's normal, or the bisector of all the leaves'
+  // (a crease within the margin), whichever rises faster.
+  const auto own = std::find(leaves.begin(), leaves.end(), root.LeafData);
+  for (const unsigned from : { own == leaves.end() ? all : 1u << (own - leaves.begin()), all })
+  {
+    const Vec3 n = BisectingDirection(bound, from, cell.Center(), -1);
+    const double rise = MinimumRiseOfAll(bound, all, grown, n);
+    if (rise > bound.Rise)
+    {
+      bound.Direction = n;
+      bound.Rise = rise;
+    }
+  }
   if (!(bound.Rise > 0.0))
   {
     return std::nullopt;
   }
-  bound.Curvature = CurvatureBound(bound.Field);
   for (int face = 0; face < 6; ++face)
   {
     const Box3 rectangle = FaceBox(cell, face);
-    if (!bound.Field.Enclose(rectangle).ContainsZero())
+    unsigned onFace = all;
+    if (bound.Fields.size() == 1)
+    {
+      onFace = bound.Fields[0].Enclose(rectangle).ContainsZero() ? 1u : 0u;
+    }
+    else
+    {
+      // The leaves that decide F's sign on the face.
+      const CsgExpression::Pruned face = CsgExpression::Prune(there.Expression, rectangle, primitives);
+      std::vector<CsgLeaf> faceLeaves;
+      bool faceUnion = false;
+      onFace = 0;
+      if (face.Sign == RegionSign::Mixed)
+      {
+        if (!FlatQuadricLeaves(*face.Expression, faceLeaves, faceUnion))
+        {
+          return std::nullopt;
+        }
+        for (const CsgLeaf& l : faceLeaves)
+        {
+          const auto at = std::find(leaves.begin(), leaves.end(), l);
+          onFace |= at == leaves.end() ? all : 1u << (at - leaves.begin());
+        }
+      }
+    }
+    bound.FaceFields[face] = onFace;
+    if (!onFace)
     {
       bound.FaceRise[face] = HUGE_VAL; // carries no chord
       continue;
     }
-    Vec3 m = bound.Field.Gradient(rectangle.Center());
-    m[face / 2] = 0.0;
-    const double length = Norm(m);
-    bound.FaceDirection[face] = length > 0.0 ? m * (1.0 / length) : Vec3();
-    bound.FaceRise[face] = length > 0.0 ? std::max(0.0, MinimumRise(bound.Field, rectangle, bound.FaceDirection[face])) : 0.0;
+    bound.FaceDirection[face] = BisectingDirection(bound, onFace, rectangle.Center(), face / 2);
+    bound.FaceRise[face] = Norm(bound.FaceDirection[face]) > 0.0
+      ? std::max(0.0, MinimumRiseOfAll(bound, onFace, rectangle, bound.FaceDirection[face]))
+      : 0.0;
   }
   return bound;
 }
@@ -196,10 +327,9 @@ double PredictedCellError(const QuadricCellError& bound)
 
 double TriangleError(const QuadricCellError& bound, const Vec3& a, const Vec3& b, const Vec3& c)
 {
-  const double vertices =
-    std::max({ FieldMagnitude(bound.Field, a), FieldMagnitude(bound.Field, b), FieldMagnitude(bound.Field, c) });
-  const double spread = bound.Curvature * SmallestBallRadiusSquared(a, b, c) * RoundingAllowance;
-  return (vertices + spread) / bound.Rise * RoundingAllowance;
+  const Vec3 v[3] = { a, b, c };
+  const unsigned all = (1u << bound.Fields.size()) - 1;
+  return CombinedMagnitude(bound, all, v, 3, SmallestBallRadiusSquared(a, b, c)) / bound.Rise * RoundingAllowance;
 }
 
 double ChordError(const QuadricCellError& bound, int face, const Vec3& a, const Vec3& b)
@@ -209,9 +339,20 @@ double ChordError(const QuadricCellError& bound, int face, const Vec3& a, const 
   {
     return HUGE_VAL;
   }
-  const double ends = std::max(FieldMagnitude(bound.Field, a), FieldMagnitude(bound.Field, b));
-  const double sag = bound.Curvature * 0.25 * SquaredNorm(b - a) * RoundingAllowance;
-  return (ends + sag) * (1.0 / bound.Rise + 1.0 / rise) * RoundingAllowance;
+  const Vec3 v[2] = { a, b };
+  const double ends = CombinedMagnitude(bound, bound.FaceFields[face], v, 2, 0.25 * SquaredNorm(b - a));
+  return ends * (1.0 / bound.Rise + 1.0 / rise) * RoundingAllowance;
+}
+
+int ExactSign(const QuadricCellError& bound, const Vec3& p)
+{
+  int sign = bound.Union ? 1 : -1;
+  for (const Quadric& f : bound.Fields)
+  {
+    const int s = f.ExactSign(p);
+    sign = bound.Union ? std::min(sign, s) : std::max(sign, s);
+  }
+  return sign;
 }
 
 std::optional<Vec3> SurfacePointAlongDirection(const QuadricCellError& bound, const Vec3& p, const Box3& region)
@@ -237,9 +378,9 @@ std::optional<Vec3> SurfacePointAlongDirection(const QuadricCellError& bound, co
   {
     return std::nullopt;
   }
-  // f increases along n: the root, if any, is where the exact sign changes.
+  // F increases along n: the root, if any, is where the exact sign changes.
   double lo = t0, hi = t1;
-  if (bound.Field.ExactSign(p + bound.Direction * lo) >= 0 || bound.Field.ExactSign(p + bound.Direction * hi) <= 0)
+  if (ExactSign(bound, p + bound.Direction * lo) >= 0 || ExactSign(bound, p + bound.Direction * hi) <= 0)
   {
     return std::nullopt;
   }
@@ -250,7 +391,7 @@ std::optional<Vec3> SurfacePointAlongDirection(const QuadricCellError& bound, co
     {
       break;
     }
-    (bound.Field.ExactSign(p + bound.Direction * mid) < 0 ? lo : hi) = mid;
+    (ExactSign(bound, p + bound.Direction * mid) < 0 ? lo : hi) = mid;
   }
   return p + bound.Direction * (0.5 * (lo + hi));
 }

@@ -61,37 +61,78 @@
 //
 // A plane (A = 0) gives zero: the patch is then the plane section
 // (PlanarCell.h says the same for several planes and flat meshes).
+//
+// Beside a crease (several quadrics within the margin). Where the cell's own
+// expression is one quadric leaf but another primitive lies within the
+// margin - the band of cells along every crease of a CSG scene, which the
+// proof above would make as small as the tolerance - the same proof holds
+// word for word for F, the value of the expression pruned to C+, when that
+// is one intersection (max) or one union (min) of quadric leaves
+// sigma_i f_i (a difference is an intersection with a complement: a box's
+// face and a sphere, a plate and a cylinder hole, two cylinders), provided
+// every leaf rises along n:
+//   g = min over leaves i and over C+ of grad(sigma_i f_i) . n > 0,
+// n the cell's own leaf's normal at C's centre, or the sum of all the
+// leaves' unit normals there (the crease's bisector), whichever gives the
+// larger g (two faces of a thin plate, normals opposite, have none). Then
+// F(x + t n) - F(x) >= g t for t > 0 (a max or min of functions that each
+// rise at rate g rises at rate g), which is all (1) is used for, and S ∩ C+
+// is the zero set of F (F < 0 below, > 0 above every zero along n). On a
+// face, likewise along m_phi (the bisector of the projected normals) with
+// the leaves of the expression pruned to the face, whose sign is F's there.
+// The interpolation error (2) becomes: each leaf's value over a triangle or
+// chord lies in [min_i sigma f(v_i) - ||A|| R^2, max_i sigma f(v_i) + ||A|| R^2]
+// (||A|| the largest of the leaves'), and the max (min) of these intervals
+// encloses F there; its magnitude is F_T (F_ab) - for one leaf, at most
+// max |f(v_i)| + ||A|| R^2 as above. The patch's vertices lie on S in C,
+// i.e. on the cell's own leaf, where every other leaf is on the side where
+// it does not decide F (<= 0 in a max, >= 0 in a min, since F = 0), and so
+// are their interpolations: F of the interpolated values is 0, so the
+// prediction below (||A|| R^2 / g) bounds every patch on S in C here too.
+// (Cells that the crease itself crosses keep the tolerance's size: a patch
+// there has to be made of sectors - apex on the crease, loop through its
+// crossings - for the same to hold, which is decided only at extraction.)
 #pragma once
 
 #include "CsgExpression.h"
 #include "Quadric.h"
 
 #include <optional>
+#include <vector>
 
 namespace tpc
 {
 
 struct QuadricCellError
 {
+  /// At most this many leaves (a corner of three faces, with a fourth
+  /// primitive near it).
+  static constexpr std::size_t MaximumFields = 4;
   Box3 Cell;
   double Margin = 0.0; ///< C+ is Cell grown by this on every side
-  Quadric Field;       ///< the leaf's quadric with its sign (solid: Field < 0)
+  /// The leaves' quadrics with their signs, sigma_i f_i; the solid is where
+  /// their max (intersection) or min (union) is negative.
+  std::vector<Quadric> Fields;
+  bool Union = false;
   Vec3 Direction;      ///< n
   double Rise = 0.0;   ///< g
-  double Curvature = 0.0; ///< upper bound of ||A||_2
+  double Curvature = 0.0; ///< upper bound of ||A_i||_2 over the leaves
   /// Per face (CubeTopology.h numbering, 2 axis + side): m_phi and g_phi,
-  /// g_phi = 0 where the face may meet S but f is not monotone along m_phi
-  /// on it, +inf where the face provably misses S.
+  /// g_phi = 0 where the face may meet S but F is not monotone along m_phi
+  /// on it, +inf where the face provably misses S; the leaves of the
+  /// expression pruned to the face (bit i: Fields[i]).
   Vec3 FaceDirection[6];
   double FaceRise[6] = { 0, 0, 0, 0, 0, 0 };
+  unsigned FaceFields[6] = { 0, 0, 0, 0, 0, 0 };
 };
 
 /// The setting above for `cell` when the scene's expression pruned to the
-/// cell grown by `margin` is a single quadric leaf and g > 0; nothing
-/// otherwise. `cellExpression` is the scene's pruned to the cell (as the
-/// octree keeps it): unless it is a single quadric leaf, nothing is looked at
-/// further. (It cannot stand for the scene's: another primitive may lie
-/// outside the cell but within the margin.)
+/// cell grown by `margin` is a single quadric leaf, or one intersection or
+/// union of at most MaximumFields of them, and g > 0; nothing otherwise.
+/// `cellExpression` is the scene's pruned to the cell (as the octree keeps
+/// it): unless it is a single quadric leaf, nothing is looked at further.
+/// (It cannot stand for the scene's: another primitive may lie outside the
+/// cell but within the margin.)
 std::optional<QuadricCellError> BoundQuadricCell(const CsgExpressionPtr& cellExpression,
   const CsgExpressionPtr& sceneExpression, const PrimitiveSet& primitives, const Box3& cell, double margin);
 
@@ -106,6 +147,9 @@ double TriangleError(const QuadricCellError& bound, const Vec3& a, const Vec3& b
 /// F_ab (1/g + 1/g_phi) for the chord ab lying in face `face`; +inf where
 /// g_phi is not positive.
 double ChordError(const QuadricCellError& bound, int face, const Vec3& a, const Vec3& b);
+
+/// The exact sign of F at p (-1 inside the solid, 0 on S, 1 outside).
+int ExactSign(const QuadricCellError& bound, const Vec3& p);
 
 /// The point of S on the line through `p` along n inside `region` (part of
 /// the cell), found by bisection on the exact sign; nothing when the line
