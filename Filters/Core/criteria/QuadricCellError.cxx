@@ -197,6 +197,43 @@ double MinimumRiseOfAll(const QuadricCellError& bound, unsigned fields, const Bo
   return lowest;
 }
 
+/// Whether no two of `fields` vanish at a common point of the box: proven by
+/// enclosures, the box halved along every axis up to `depth` times where two
+/// enclosures still hold zero.
+bool NoCommonZero(const std::vector<Quadric>& fields, const Box3& box, int depth)
+{
+  int holdingZero = 0;
+  for (const Quadric& f : fields)
+  {
+    holdingZero += f.Enclose(box).ContainsZero() ? 1 : 0;
+  }
+  if (holdingZero <= 1)
+  {
+    return true;
+  }
+  if (depth == 0)
+  {
+    return false;
+  }
+  const Vec3 mid = box.Center();
+  for (int octant = 0; octant < 8; ++octant)
+  {
+    Box3 part = box;
+    for (int a = 0; a < 3; ++a)
+    {
+      (octant & (1 << a) ? part.lo : part.hi)[a] = mid[a];
+    }
+    if (!NoCommonZero(fields, part, depth - 1))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Halvings NoCommonZero may try on a cell with several leaves.
+constexpr int CreaseSearchDepth = 3;
+
 /// The face's rectangle (flat box) of the cell.
 Box3 FaceBox(const Box3& cell, int face)
 {
@@ -214,13 +251,25 @@ std::optional<QuadricCellError> BoundQuadricCell(const CsgExpressionPtr& cellExp
   {
     return std::nullopt;
   }
-  const CsgExpression::Node& root = cellExpression->NodeAt(cellExpression->Root());
-  if (root.NodeKind != CsgExpression::Node::Kind::Leaf || root.LeafData.Kind != PrimitiveKind::Quadric)
+  std::vector<CsgLeaf> own, leaves;
+  bool isUnion = false;
+  if (!FlatQuadricLeaves(*cellExpression, own, isUnion))
   {
     return std::nullopt; // (cheap exit: the expression pruned to C already has more)
   }
-  std::vector<CsgLeaf> leaves;
-  bool isUnion = false;
+  if (own.size() > 1)
+  {
+    // Several leaves in C itself: only where no crease crosses C (header).
+    std::vector<Quadric> fields;
+    for (const CsgLeaf& leaf : own)
+    {
+      fields.push_back(primitives.Quadrics[leaf.Primitive]);
+    }
+    if (!NoCommonZero(fields, cell, CreaseSearchDepth))
+    {
+      return std::nullopt;
+    }
+  }
   QuadricCellError bound;
   bound.Cell = cell;
   bound.Margin = margin;
@@ -243,10 +292,16 @@ std::optional<QuadricCellError> BoundQuadricCell(const CsgExpressionPtr& cellExp
     bound.Curvature = std::max(bound.Curvature, CurvatureBound(bound.Fields.back()));
   }
   const unsigned all = (1u << bound.Fields.size()) - 1;
-  // n: the cell's own leaf's normal, or the bisector of all the leaves'
-  // (a crease within the margin), whichever rises faster.
-  const auto own = std::find(leaves.begin(), leaves.end(), root.LeafData);
-  for (const unsigned from : { own == leaves.end() ? all : 1u << (own - leaves.begin()), all })
+  // n: the normal of one of the cell's own leaves, or the bisector of all
+  // the leaves' (a crease within the margin), whichever rises fastest.
+  std::vector<unsigned> candidates;
+  for (const CsgLeaf& leaf : own)
+  {
+    const auto at = std::find(leaves.begin(), leaves.end(), leaf);
+    candidates.push_back(at == leaves.end() ? all : 1u << (at - leaves.begin()));
+  }
+  candidates.push_back(all);
+  for (const unsigned from : candidates)
   {
     const Vec3 n = BisectingDirection(bound, from, cell.Center(), -1);
     const double rise = MinimumRiseOfAll(bound, all, grown, n);

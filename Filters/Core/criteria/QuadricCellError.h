@@ -65,7 +65,11 @@
 // Beside a crease (several quadrics within the margin). Where the cell's own
 // expression is one quadric leaf but another primitive lies within the
 // margin - the band of cells along every crease of a CSG scene, which the
-// proof above would make as small as the tolerance - the same proof holds
+// proof above would make as small as the tolerance - or is several quadric
+// leaves of which no two vanish at a common point of C (NoCommonZero:
+// enclosures on sub-boxes; then S ∩ C splits into pieces on one leaf each,
+// since pieces on two leaves meet only where both vanish, and each loop's
+// disc lies on one leaf), the same proof holds
 // word for word for F, the value of the expression pruned to C+, when that
 // is one intersection (max) or one union (min) of quadric leaves
 // sigma_i f_i (a difference is an intersection with a complement: a box's
@@ -84,8 +88,8 @@
 // chord lies in [min_i sigma f(v_i) - ||A|| R^2, max_i sigma f(v_i) + ||A|| R^2]
 // (||A|| the largest of the leaves'), and the max (min) of these intervals
 // encloses F there; its magnitude is F_T (F_ab) - for one leaf, at most
-// max |f(v_i)| + ||A|| R^2 as above. The patch's vertices lie on S in C,
-// i.e. on the cell's own leaf, where every other leaf is on the side where
+// max |f(v_i)| + ||A|| R^2 as above. A patch's vertices lie on S in C, on
+// its loop's leaf, where every other leaf is on the side where
 // it does not decide F (<= 0 in a max, >= 0 in a min, since F = 0), and so
 // are their interpolations: F of the interpolated values is 0, so the
 // prediction below (||A|| R^2 / g) bounds every patch on S in C here too.
@@ -130,7 +134,8 @@ struct QuadricCellError
 /// cell grown by `margin` is a single quadric leaf, or one intersection or
 /// union of at most MaximumFields of them, and g > 0; nothing otherwise.
 /// `cellExpression` is the scene's pruned to the cell (as the octree keeps
-/// it): unless it is a single quadric leaf, nothing is looked at further.
+/// it): unless it is a single quadric leaf, or several with no crease in the
+/// cell, nothing is looked at further.
 /// (It cannot stand for the scene's: another primitive may lie outside the
 /// cell but within the margin.)
 std::optional<QuadricCellError> BoundQuadricCell(const CsgExpressionPtr& cellExpression,

@@ -161,6 +161,7 @@ struct Measured
   std::size_t Cells = 0;          ///< error-bounded cells checked
   std::size_t OversizedCells = 0; ///< of those, larger than the tolerance
   std::size_t OversizedBesideCreases = 0; ///< of those, with several leaves within the margin
+  std::size_t OversizedWithSeveralLeaves = 0; ///< of those, with several leaves in the cell itself
   double WorstRatio = 0.0;        ///< largest measured distance / certificate
   double LargestCertificate = 0.0;
 };
@@ -199,6 +200,7 @@ Measured CheckEveryCertificate(const tpctest::ContourRun& r, const tpctest::Scen
     const bool oversized = tree.Grid.CellDiagonal(node.Level) > r.Tolerance;
     m.OversizedCells += oversized ? 1 : 0;
     m.OversizedBesideCreases += oversized && bound->Fields.size() > 1 ? 1 : 0;
+    m.OversizedWithSeveralLeaves += oversized && tree.Expressions[n]->NodeCount() > 1 ? 1 : 0;
     const double allowance = certificate * (1 + 1e-9) + 1e-14;
     // Patch to surface.
     for (std::size_t t = 0; t < mesh.Triangles.size(); ++t)
@@ -314,12 +316,14 @@ TEST(QuadricCellError, CertificatesBoundTheMeasuredDistanceBesideACrease)
     EXPECT_LE(r.HausdorffBound, r.Tolerance * (1 + 1e-9));
     const Measured m = CheckEveryCertificate(r, b.Scene, CutSphere(c, radius, n, h));
     EXPECT_GT(m.OversizedBesideCreases, 0u) << tolerance;
+    EXPECT_GT(m.OversizedWithSeveralLeaves, 0u) << tolerance;
     EXPECT_GT(m.WorstRatio, 0.1) << tolerance;
     EXPECT_LT(r.Extraction.Mesh.Triangles.size(), before.at(tolerance)) << tolerance;
     std::cout << "cut sphere 1/" << 1 / tolerance << ": " << r.Extraction.Mesh.Triangles.size() << " triangles (before "
               << before.at(tolerance) << "), " << m.Cells << " certified cells (" << m.OversizedCells
               << " larger than the tolerance, " << m.OversizedBesideCreases
-              << " of them beside the rim), worst measured/certified " << m.WorstRatio << "\n";
+              << " of them beside the rim, " << m.OversizedWithSeveralLeaves
+              << " with both leaves in the cell), worst measured/certified " << m.WorstRatio << "\n";
   }
 }
 
@@ -393,7 +397,7 @@ TEST(QuadricCellError, PredictionBoundsEveryPatchOnTheSurface)
   EXPECT_GT(checkedCells, 50);
 }
 
-TEST(QuadricCellError, BothLeavesBoundACellBesideACreaseAndNoneWhereTheFieldTurns)
+TEST(QuadricCellError, BothLeavesBoundACellBesideACreaseNoneOnItOrWhereTheFieldTurns)
 {
   SceneBuilder b;
   b.Finish(SceneBuilder::Difference({ b.Sphere({ 0, 0, 0 }, 0.8), b.Sphere({ 0.8, 0, 0 }, 0.3) }));
@@ -430,9 +434,27 @@ TEST(QuadricCellError, BothLeavesBoundACellBesideACreaseAndNoneWhereTheFieldTurn
   ASSERT_EQ(topCell->NodeCount(), 1u);
   EXPECT_FALSE(tpc::BoundQuadricCell(topCell, plate.Scene.Expression, plate.Scene.Primitives, onTop, 0.2));
   EXPECT_TRUE(tpc::BoundQuadricCell(topCell, plate.Scene.Expression, plate.Scene.Primitives, onTop, 0.05));
-  // An expression with two leaves in the cell is not looked at.
-  const Box3 onCut{ { 0.45, 0.2, -0.05 }, { 0.55, 0.3, 0.05 } };
-  EXPECT_FALSE(tpc::BoundQuadricCell(b.Scene.Expression, b.Scene.Expression, b.Scene.Primitives, onCut, 0.02));
+  // Two leaves in the cell: certified where no crease crosses it, not where
+  // one does. A sphere (radius 0.8) below the plane z = 0.35: its rim has
+  // radius 0.719; beside it, outside the sphere and below the plane, both
+  // cross a cell that the rim misses.
+  SceneBuilder cut;
+  cut.Finish(SceneBuilder::Intersection(
+    { cut.Sphere({ 0, 0, 0 }, 0.8), cut.Add(tpc::Quadric::Plane({ 0, 0, 0.35 }, Vec3(0, 0, 1))) }));
+  const auto cutTo = [&](const Box3& cell) {
+    return tpc::CsgExpression::Prune(cut.Scene.Expression, cell, cut.Scene.Primitives).Expression;
+  };
+  const Box3 besideRim{ { 0.74, -0.02, 0.30 }, { 0.78, 0.02, 0.36 } };
+  ASSERT_TRUE(cutTo(besideRim));
+  ASSERT_EQ(cutTo(besideRim)->NodeCount(), 3u);
+  const auto twoLeaves =
+    tpc::BoundQuadricCell(cutTo(besideRim), cut.Scene.Expression, cut.Scene.Primitives, besideRim, 0.02);
+  ASSERT_TRUE(twoLeaves.has_value());
+  EXPECT_EQ(twoLeaves->Fields.size(), 2u);
+  const Box3 onRim{ { 0.69, -0.03, 0.32 }, { 0.75, 0.03, 0.38 } };
+  ASSERT_TRUE(cutTo(onRim));
+  ASSERT_EQ(cutTo(onRim)->NodeCount(), 3u);
+  EXPECT_FALSE(tpc::BoundQuadricCell(cutTo(onRim), cut.Scene.Expression, cut.Scene.Primitives, onRim, 0.02));
   // Far from it, on the big sphere: one leaf, certified.
   const Box3 far{ { -0.85, -0.05, -0.05 }, { -0.75, 0.05, 0.05 } };
   const auto bound = tpc::BoundQuadricCell(prunedTo(far), b.Scene.Expression, b.Scene.Primitives, far, 0.02);
