@@ -34,21 +34,25 @@ std::optional<std::pair<CsgLeaf, CsgLeaf>> TwoQuadricLeaves(
 constexpr int NewtonSteps = 40;
 constexpr double Converged = 1e-13;
 constexpr double Ulps = 8.0 * std::numeric_limits<double>::epsilon();
-/// The fraction of the tile's width x keeps from its sides.
-constexpr double SideMargin = 0.01;
+/// The fraction of the tile's width x keeps from its sides: far above a
+/// double's rounding of x (so x is strictly inside wherever it is placed),
+/// and small, so that a crease crossing a tile is missed only where it
+/// passes within a millionth of a tile side (a crease cell larger than the
+/// tolerance needs every crossing of its crease in its final loop, whose
+/// tiles a finer neighbour may have cut anywhere, QuadricCellError.h).
+constexpr double SideMargin = 1e-6;
 /// The smallest sine of the angle between the two zero curves at x (below:
 /// nearly tangent, x is ill-conditioned and the crease too shallow to miss).
 constexpr double Transversal = 0.05;
 
-/// x solving both leaves' equations on the plane x_axis = c, from the tile's
-/// centre; nothing when the iteration does not settle inside the tile with
-/// the curves crossing transversally.
-std::optional<Vec3> CrossingOfZeroCurves(const std::pair<CsgLeaf, CsgLeaf>& leaves, const PrimitiveSet& primitives,
-  int axis, const Box3& tileBox)
+/// x solving both leaves' equations on the plane x_axis = c, from `start`;
+/// nothing when the iteration does not settle inside the tile with the
+/// curves crossing transversally.
+std::optional<Vec3> CrossingOfZeroCurvesFrom(const std::pair<CsgLeaf, CsgLeaf>& leaves,
+  const PrimitiveSet& primitives, int axis, const Box3& tileBox, Vec3 x)
 {
   const int U = (axis + 1) % 3, V = (axis + 2) % 3;
   const double width = tileBox.Width(U), height = tileBox.Width(V);
-  Vec3 x = tileBox.Center();
   x[axis] = tileBox.lo[axis];
   for (int step = 0; step < NewtonSteps; ++step)
   {
@@ -81,6 +85,31 @@ std::optional<Vec3> CrossingOfZeroCurves(const std::pair<CsgLeaf, CsgLeaf>& leav
   return std::nullopt;
 }
 
+/// CrossingOfZeroCurvesFrom the tile's centre, else from its corners and
+/// the middles of its sides, in that order: two conics on the tile's plane
+/// may cross twice, and from the centre Newton's steps can settle on the
+/// crossing outside the tile while the one inside is what the trace bends
+/// at (a cell the crease crosses keeps its certificate only if its loop
+/// holds it, QuadricCellError.h).
+std::optional<Vec3> CrossingOfZeroCurves(const std::pair<CsgLeaf, CsgLeaf>& leaves, const PrimitiveSet& primitives,
+  int axis, const Box3& tileBox)
+{
+  const int U = (axis + 1) % 3, V = (axis + 2) % 3;
+  for (const double u : { 0.5, 0.0, 1.0 })
+  {
+    for (const double v : { 0.5, 0.0, 1.0 })
+    {
+      Vec3 start = tileBox.Center();
+      start[U] = tileBox.lo[U] + u * tileBox.Width(U);
+      start[V] = tileBox.lo[V] + v * tileBox.Width(V);
+      if (const auto x = CrossingOfZeroCurvesFrom(leaves, primitives, axis, tileBox, start))
+      {
+        return x;
+      }
+    }
+  }
+  return std::nullopt;
+}
 } // namespace
 
 Crossing CsgCreaseCrossing(int axis, LatticeIndex plane, const FaceTile& tile)

@@ -13,9 +13,9 @@
 // A tile is a CSG crease tile when the cell's expression pruned to the tile
 // has exactly two leaves, both quadrics (planes, spheres, cylinders, a box's
 // faces), whose zero curves on the tile's plane cross transversally at a
-// point x that Newton's method (from the tile's centre, on the two leaves'
-// values) finds strictly inside the tile, at least 1 % of its width from
-// every side. x is on the surface (both leaves vanish there, and only they
+// point x that Newton's method (from the tile's centre, else its corners and
+// sides' middles, on the two leaves' values) finds strictly inside the
+// tile, at least a millionth of its width from every side. x is on the surface (both leaves vanish there, and only they
 // are left), so the trace of the surface on the tile - one arc from a to b
 // where the tile holds one chord - runs through it.
 //

@@ -3,6 +3,8 @@
 #include "BoundaryLoops.h"
 #include "ComplexCellCriterion.h"
 #include "CreaseCrossing.h"
+#include "CsgCreaseCrossing.h"
+#include "EdgeCrossings.h"
 #include "ExactCellCriterion.h"
 #include "FaceRefinement.h"
 #include "MeshCellError.h"
@@ -62,6 +64,51 @@ bool TileFaces(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& 
   }
   return true;
 }
+/// Whether a crease cell's patch will be made of sectors, each on one leaf
+/// (QuadricCellError.h: In a crease cell), as the prediction assumes: its
+/// loop, drawn as the extraction draws it (CSG crease tiles through the
+/// crease, CsgCreaseCrossing.h), is one loop whose fan around CreaseApex is
+/// certified within the tolerance. (The extraction draws the same fan over
+/// the final loop, which only adds points on the same traces, and certifies
+/// that again.)
+bool CreaseFanWithinTolerance(const QuadricCellError& bound, const CellBoundary& boundary,
+  const CsgExpressionPtr& expression, const PrimitiveSet& prims, const RootGrid& grid, double tolerance)
+{
+  const std::optional<Vec3> apex = CreaseApex(bound, prims);
+  if (!apex)
+  {
+    return false;
+  }
+  CellBoundary bent = boundary;
+  MarkCsgCreaseTiles(bent, prims, grid, [&](int, std::size_t) { return &expression; });
+  const BoundaryLoopSet loops = TraceBoundaryLoops(bent);
+  if (loops.LoopSizes.size() != 1 || !loops.Consistent)
+  {
+    return false;
+  }
+  std::vector<Vec3> loop;
+  for (const Crossing& c : loops.Crossings)
+  {
+    if (c.Kind == CrossingKind::SubEdge)
+    {
+      loop.push_back(PlaceSubEdgeCrossing(c, grid, *expression, prims));
+    }
+    else if (c.Kind == CrossingKind::CsgCrease)
+    {
+      const auto x = CsgCreaseVertex(c, expression, prims, grid);
+      if (!x)
+      {
+        return false;
+      }
+      loop.push_back(x->first);
+    }
+    else
+    {
+      return false;
+    }
+  }
+  return FanError(bound, loop, *apex) <= tolerance;
+}
 } // namespace
 
 McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& prims,
@@ -99,9 +146,12 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   // tests passed) may stay larger.
   v.Oversized = grid.CellDiagonal(node.Level) > tolerance * (1.0 + 1e-9);
   const bool planar = v.Oversized && !uniform && IsPlanarCell(*expression, prims, box);
+  std::optional<QuadricCellError> quadric;
   if (!uniform && !planar)
   {
-    const std::optional<QuadricCellError> quadric = BoundQuadricCell(expression, tree.SceneExpression, prims, box, tolerance);
+    // (A crease cell only when larger than the tolerance: it needs its own
+    // patch checked, below, where a smaller cell is bounded by its size.)
+    quadric = BoundQuadricCell(expression, tree.SceneExpression, prims, box, tolerance, v.Oversized);
     v.PredictedError = quadric ? PredictedCellError(*quadric) : HUGE_VAL;
     v.ErrorBounded = v.PredictedError <= tolerance;
   }
@@ -160,6 +210,16 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
       v.Reason = SplitReason::HausdorffSize;
       return v;
     }
+  }
+  else if (v.ErrorBounded && quadric->Crease)
+  {
+    if (!CreaseFanWithinTolerance(*quadric, boundary, expression, prims, grid, tolerance))
+    {
+      v.ErrorBounded = false;
+      v.Reason = SplitReason::HausdorffSize;
+      return v;
+    }
+    v.CreaseFan = true;
   }
   else if (!v.Oversized && !v.ErrorBounded && LoneMeshLeaf(*expression))
   {

@@ -44,6 +44,10 @@ struct McCompatibility
   bool MeshSurface = false;
   /// For MeshSurface: the loop the prediction was made on.
   std::vector<Vec3> PredictedLoop;
+  /// ErrorBounded where a crease of two quadrics crosses a cell larger than
+  /// the tolerance (QuadricCellError.h): its patch is the fan around its
+  /// crease apex, over a loop drawn through the crease on its tiles.
+  bool CreaseFan = false;
   /// Larger than the tolerance (the Hausdorff size test's own comparison).
   bool Oversized = false;
   /// Faces this cell refined (only kept if it passes).

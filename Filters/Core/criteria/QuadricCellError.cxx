@@ -1,5 +1,6 @@
 #include "QuadricCellError.h"
 
+#include "CreasePoint.h"
 #include "Interval.h"
 
 #include <algorithm>
@@ -245,14 +246,15 @@ Box3 FaceBox(const Box3& cell, int face)
 } // namespace
 
 std::optional<QuadricCellError> BoundQuadricCell(const CsgExpressionPtr& cellExpression,
-  const CsgExpressionPtr& sceneExpression, const PrimitiveSet& primitives, const Box3& cell, double margin)
+  const CsgExpressionPtr& sceneExpression, const PrimitiveSet& primitives, const Box3& cell, double margin,
+  bool creases)
 {
   if (!cellExpression || !sceneExpression || !(margin > 0.0))
   {
     return std::nullopt;
   }
   std::vector<CsgLeaf> own, leaves;
-  bool isUnion = false;
+  bool isUnion = false, crease = false;
   if (!FlatQuadricLeaves(*cellExpression, own, isUnion))
   {
     return std::nullopt; // (cheap exit: the expression pruned to C already has more)
@@ -265,12 +267,19 @@ std::optional<QuadricCellError> BoundQuadricCell(const CsgExpressionPtr& cellExp
     {
       fields.push_back(primitives.Quadrics[leaf.Primitive]);
     }
-    if (!NoCommonZero(fields, cell, CreaseSearchDepth))
+    crease = !NoCommonZero(fields, cell, CreaseSearchDepth);
+    if (crease && !(creases && own.size() == 2))
     {
       return std::nullopt;
     }
   }
   QuadricCellError bound;
+  bound.Crease = crease;
+  if (crease)
+  {
+    bound.CreaseLeaves[0] = own[0];
+    bound.CreaseLeaves[1] = own[1];
+  }
   bound.Cell = cell;
   bound.Margin = margin;
   // (Rounded outward: C+ holds the cell grown by the margin exactly.)
@@ -408,6 +417,46 @@ int ExactSign(const QuadricCellError& bound, const Vec3& p)
     sign = bound.Union ? std::min(sign, s) : std::max(sign, s);
   }
   return sign;
+}
+
+std::optional<Vec3> CreaseApex(const QuadricCellError& bound, const PrimitiveSet& primitives)
+{
+  const Box3& cell = bound.Cell;
+  const std::optional<Vec3> x =
+    OntoCrease(bound.CreaseLeaves[0], bound.CreaseLeaves[1], primitives, cell.Center(), cell.Diagonal());
+  if (!x)
+  {
+    return std::nullopt;
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    const double margin = cell.Width(a) / 32.0;
+    if (!((*x)[a] > cell.lo[a] + margin && (*x)[a] < cell.hi[a] - margin))
+    {
+      return std::nullopt;
+    }
+  }
+  return x;
+}
+
+double FanError(const QuadricCellError& bound, const std::vector<Vec3>& loop, const Vec3& apex)
+{
+  double error = 0.0;
+  const std::size_t m = loop.size();
+  for (std::size_t k = 0; k < m; ++k)
+  {
+    const Vec3 &a = loop[k], &b = loop[(k + 1) % m];
+    error = std::max(error, TriangleError(bound, a, b, apex));
+    for (int face = 0; face < 6; ++face)
+    {
+      const double plane = (face % 2 ? bound.Cell.hi : bound.Cell.lo)[face / 2];
+      if (a[face / 2] == plane && b[face / 2] == plane)
+      {
+        error = std::max(error, ChordError(bound, face, a, b));
+      }
+    }
+  }
+  return error <= bound.Margin ? error : HUGE_VAL;
 }
 
 std::optional<Vec3> SurfacePointAlongDirection(const QuadricCellError& bound, const Vec3& p, const Box3& region)

@@ -93,9 +93,29 @@
 // it does not decide F (<= 0 in a max, >= 0 in a min, since F = 0), and so
 // are their interpolations: F of the interpolated values is 0, so the
 // prediction below (||A|| R^2 / g) bounds every patch on S in C here too.
-// (Cells that the crease itself crosses keep the tolerance's size: a patch
-// there has to be made of sectors - apex on the crease, loop through its
-// crossings - for the same to hold, which is decided only at extraction.)
+//
+// In a crease cell (its own expression two quadric leaves whose zero sets
+// may meet in it: `creases`, cells larger than the tolerance only). The
+// same holds for a patch made of sectors: the fan around a point c of the
+// crease (CreaseApex: f1 = f2 = 0, so F(c) = 0) over a loop drawn through
+// the crease's crossings x of the face tiles it crosses (CSG crease tiles,
+// CsgCreaseCrossing.h). Then every triangle (p, q, c) has p and q on one
+// leaf's zero set - x is on both - and so has c: its vertices lie on S and
+// on one leaf, which is what the prediction needs. On a crease tile the
+// trace is two arcs, a to x on one leaf and x to b on the other, each with
+// its chord: the argument of (b) holds for each half (F is monotone along
+// m_phi, the bisector, on the whole tile). Whether the patch will be that
+// is decided before the cell is accepted: the subdivision draws the cell's
+// own loop as the extraction draws it and requires the fan around CreaseApex
+// over it to be certified within the tolerance (McCompatibility.h); the
+// extraction then draws that fan over the final loop (crack patching only
+// adds points on the same arcs, and the tiles a finer neighbour cut are
+// decided with the crease cell's expression, CrackPatching.h) and certifies
+// it again. Where a final tile loses its crossing after all (the crease
+// within a millionth of a sub-tile's side), the chord cuts the corner and the
+// certificate - computed with the formulas above, which hold for any patch -
+// says so: the cell's bound exceeds the tolerance and the guarantee is not
+// claimed.
 #pragma once
 
 #include "CsgExpression.h"
@@ -128,6 +148,11 @@ struct QuadricCellError
   Vec3 FaceDirection[6];
   double FaceRise[6] = { 0, 0, 0, 0, 0, 0 };
   unsigned FaceFields[6] = { 0, 0, 0, 0, 0, 0 };
+  /// A crease of the cell's two leaves (CreaseLeaves) may cross the cell: its
+  /// patch must be the fan around CreaseApex, over a loop through the
+  /// crease's crossings (header: In a crease cell).
+  bool Crease = false;
+  CsgLeaf CreaseLeaves[2];
 };
 
 /// The setting above for `cell` when the scene's expression pruned to the
@@ -138,8 +163,22 @@ struct QuadricCellError
 /// cell, nothing is looked at further.
 /// (It cannot stand for the scene's: another primitive may lie outside the
 /// cell but within the margin.)
+/// `creases`: a cell whose own expression is two quadric leaves whose crease
+/// may cross it is bounded too (Crease set).
 std::optional<QuadricCellError> BoundQuadricCell(const CsgExpressionPtr& cellExpression,
-  const CsgExpressionPtr& sceneExpression, const PrimitiveSet& primitives, const Box3& cell, double margin);
+  const CsgExpressionPtr& sceneExpression, const PrimitiveSet& primitives, const Box3& cell, double margin,
+  bool creases = false);
+
+/// The apex of a crease cell's fan: the point of the crease Gauss-Newton
+/// steps reach from the cell's centre, if it lies 1/32 of the cell's width
+/// inside it (it depends on the cell and its leaves only, so the subdivision
+/// and the extraction find the same).
+std::optional<Vec3> CreaseApex(const QuadricCellError& bound, const PrimitiveSet& primitives);
+
+/// E_C of the fan around `apex` over the closed polyline `loop` (points on
+/// the cell's faces): its triangles' terms and its chords' on the faces they
+/// lie in; +inf beyond the margin.
+double FanError(const QuadricCellError& bound, const std::vector<Vec3>& loop, const Vec3& apex);
 
 /// An upper bound of E_C for any patch whose vertices lie on S in the cell
 /// (the subdivision's acceptance test); +inf when a face that may meet S has

@@ -270,18 +270,24 @@ BoundaryLoopSet CellLoops(const AdaptiveOctree& tree, std::uint32_t cell, const 
   else
   {
     // CSG crease tiles (CsgCreaseCrossing.h): both cells sharing a tile decide
-    // with the expression of the one first in node order (the one placing
-    // x), except where an exact cell draws the tile.
+    // with the expression of a crease-fan cell if one of them is one (its
+    // own loop was drawn so when it was accepted, QuadricCellError.h), else
+    // of the one first in node order (the one placing x), except where an
+    // exact cell draws the tile.
     MarkCsgCreaseTiles(boundary, prims, tree.Grid, [&](int f, std::size_t k) -> const CsgExpressionPtr* {
       if (k < boundary.ExactTile[f].size() && boundary.ExactTile[f][k])
       {
         return nullptr;
       }
       const std::int64_t across = boundary.Across[f][k];
-      const std::size_t first = across >= 0 && static_cast<std::size_t>(across) < cell
-        ? static_cast<std::size_t>(across)
-        : static_cast<std::size_t>(cell);
-      return &tree.Expressions[first];
+      if (across < 0)
+      {
+        return &tree.Expressions[cell];
+      }
+      const std::size_t other = static_cast<std::size_t>(across);
+      const bool mineFan = tree.Nodes[cell].CreaseFan, theirsFan = tree.Nodes[other].CreaseFan;
+      const std::size_t decider = mineFan != theirsFan ? (mineFan ? cell : other) : std::min<std::size_t>(other, cell);
+      return &tree.Expressions[decider];
     });
   }
   return TraceBoundaryLoops(boundary);

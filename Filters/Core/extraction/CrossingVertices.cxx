@@ -51,8 +51,8 @@ void PlaceBendVertices(const CrossingVertices& vertices, TriangleMesh& mesh)
 }
 } // namespace
 
-bool CrossingVertices::Build(
-  const std::vector<BoundaryLoopSet>& loops, const ParallelFor& parallelFor, const ProgressCallback& progress)
+bool CrossingVertices::Build(const std::vector<BoundaryLoopSet>& loops, const std::vector<std::uint8_t>& decidesFirst,
+  const ParallelFor& parallelFor, const ProgressCallback& progress)
 {
   return GatherDistinct<Record>(Blocks, Buckets,
     [&loops](std::size_t b, const auto& out) {
@@ -65,8 +65,13 @@ bool CrossingVertices::Build(
       }
     },
     BucketOf,
-    [](const Record& a, const Record& b) {
-      return !a.Vertex.SameVertex(b.Vertex) ? a.Vertex < b.Vertex : a.CellIndex < b.CellIndex;
+    [&decidesFirst](const Record& a, const Record& b) {
+      if (!a.Vertex.SameVertex(b.Vertex))
+      {
+        return a.Vertex < b.Vertex;
+      }
+      const bool firstA = decidesFirst[a.CellIndex] != 0, firstB = decidesFirst[b.CellIndex] != 0;
+      return firstA != firstB ? firstA : a.CellIndex < b.CellIndex;
     },
     [](const Record& a, const Record& b) { return a.Vertex.SameVertex(b.Vertex); }, parallelFor, progress,
     this->Distinct);

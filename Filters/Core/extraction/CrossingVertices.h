@@ -26,10 +26,12 @@ public:
   };
 
   /// The distinct crossings of `loops` (one set per surface leaf), gathered
-  /// in parallel (DistinctRecords.h); a vertex's id is its rank among them.
-  /// False when `progress` asked to stop.
-  bool Build(const std::vector<BoundaryLoopSet>& loops, const ParallelFor& parallelFor,
-    const ProgressCallback& progress);
+  /// in parallel (DistinctRecords.h); a vertex's id is its rank among them,
+  /// and it is placed by the first of its cells in `decidesFirst` order, then
+  /// in index order (the cell that decided a CSG crease tile, CrackPatching.h:
+  /// crease-fan cells first). False when `progress` asked to stop.
+  bool Build(const std::vector<BoundaryLoopSet>& loops, const std::vector<std::uint8_t>& decidesFirst,
+    const ParallelFor& parallelFor, const ProgressCallback& progress);
 
   /// The id of a crossing of the loops.
   std::uint32_t IdOf(const Crossing& c) const;

@@ -207,10 +207,14 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
     certificate.Lower = e.Lower;
     return certificate;
   }
+  // (A crease cell was accepted with the fan around its crease apex in mind,
+  // QuadricCellError.h; that fan is drawn over the final loop.)
   const std::optional<QuadricCellError> quadric = bounded
-    ? BoundQuadricCell(tree.Expressions[n], tree.SceneExpression, prims, box, tree.HausdorffTolerance)
+    ? BoundQuadricCell(tree.Expressions[n], tree.SceneExpression, prims, box, tree.HausdorffTolerance, true)
     : std::nullopt;
-  TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches, quadric ? &*quadric : nullptr);
+  const std::optional<Vec3> creaseApex = quadric && quadric->Crease ? CreaseApex(*quadric, prims) : std::nullopt;
+  TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches, quadric ? &*quadric : nullptr,
+    creaseApex ? &*creaseApex : nullptr);
   certificate.Error = !bounded ? 0.0 : quadric ? CertifiedPatchError(*quadric, patches, mesh) : HUGE_VAL;
   return certificate;
 }
@@ -323,7 +327,12 @@ ExtractionResult ExtractSurface(const AdaptiveOctree& tree, const ImplicitScene&
     loopCount += l.LoopSizes.size();
   }
   CrossingVertices vertices;
-  if (!vertices.Build(loops, parallelFor, ProgressRange(progress, 0.4, 0.5)))
+  std::vector<std::uint8_t> creaseFans(cells.size());
+  for (std::size_t i = 0; i < cells.size(); ++i)
+  {
+    creaseFans[i] = tree.Nodes[cells[i]].CreaseFan ? 1 : 0;
+  }
+  if (!vertices.Build(loops, creaseFans, parallelFor, ProgressRange(progress, 0.4, 0.5)))
   {
     result.Aborted = true;
     return result;

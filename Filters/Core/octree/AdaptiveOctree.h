@@ -34,6 +34,11 @@ struct OctreeNode
   /// error is certified on its patch (QuadricCellError.h, MeshCellError.h);
   /// it may be larger than the tolerance.
   bool ErrorBounded = false;
+  /// An ErrorBounded leaf larger than the tolerance that a crease of two
+  /// quadrics crosses (QuadricCellError.h): its patch is the fan around its
+  /// crease apex, and the tiles of its faces decide CSG crease crossings with
+  /// its expression (CrackPatching.h).
+  bool CreaseFan = false;
   /// Children are FirstChild + c, c = x + 2y + 4z (VTK's HyperTree order); -1 for leaves.
   std::int32_t FirstChild = -1;
 

@@ -50,6 +50,7 @@ bool DecideCell(AdaptiveOctree& tree, std::uint32_t n, const CellTests& tests, c
     node.State = CellState::Surface;
     node.PlaneSection = v.Planar;
     node.ErrorBounded = v.ErrorBounded;
+    node.CreaseFan = v.CreaseFan;
     if (v.MeshSurface)
     {
       tree.MeshCellPredictions[n] = { v.PredictedError, v.PredictedLoop };

@@ -162,6 +162,7 @@ struct Measured
   std::size_t OversizedCells = 0; ///< of those, larger than the tolerance
   std::size_t OversizedBesideCreases = 0; ///< of those, with several leaves within the margin
   std::size_t OversizedWithSeveralLeaves = 0; ///< of those, with several leaves in the cell itself
+  std::size_t OversizedCreaseCells = 0; ///< of those, crossed by the crease (crease fans)
   double WorstRatio = 0.0;        ///< largest measured distance / certificate
   double LargestCertificate = 0.0;
 };
@@ -187,7 +188,7 @@ Measured CheckEveryCertificate(const tpctest::ContourRun& r, const tpctest::Scen
     }
     const Box3 cell = tree.Grid.CellBox(node.Level, node.Ijk);
     const auto bound =
-      tpc::BoundQuadricCell(tree.Expressions[n], scene.Expression, scene.Primitives, cell, r.Tolerance);
+      tpc::BoundQuadricCell(tree.Expressions[n], scene.Expression, scene.Primitives, cell, r.Tolerance, true);
     EXPECT_TRUE(bound.has_value());
     if (!bound)
     {
@@ -201,6 +202,8 @@ Measured CheckEveryCertificate(const tpctest::ContourRun& r, const tpctest::Scen
     m.OversizedCells += oversized ? 1 : 0;
     m.OversizedBesideCreases += oversized && bound->Fields.size() > 1 ? 1 : 0;
     m.OversizedWithSeveralLeaves += oversized && tree.Expressions[n]->NodeCount() > 1 ? 1 : 0;
+    m.OversizedCreaseCells += oversized && bound->Crease ? 1 : 0;
+    EXPECT_EQ(bound->Crease, node.CreaseFan);
     const double allowance = certificate * (1 + 1e-9) + 1e-14;
     // Patch to surface.
     for (std::size_t t = 0; t < mesh.Triangles.size(); ++t)
@@ -294,12 +297,13 @@ TEST(QuadricCellError, CertificatesBoundTheMeasuredDistanceOnARotatedEllipsoid)
             << "\n";
 }
 
-TEST(QuadricCellError, CertificatesBoundTheMeasuredDistanceBesideACrease)
+TEST(QuadricCellError, CertificatesBoundTheMeasuredDistanceAlongACrease)
 {
-  // A sphere cut by a tilted plane: the cells along the rim whose own
-  // expression is the sphere alone, with the plane within the margin, are
-  // bounded with both leaves (the header's creases) and may grow past the
-  // tolerance; every certificate is checked against the exact distance.
+  // A sphere cut by a tilted plane: the cells beside the rim (their own
+  // expression one leaf with the other within the margin, or both with no
+  // crease in the cell) and those the rim crosses (crease fans) are bounded
+  // with both leaves (QuadricCellError.h) and may grow past the tolerance;
+  // every certificate is checked against the exact distance.
   SceneBuilder b;
   const Vec3 c{ 0.02, -0.03, 0.01 }, n = tpc::Normalized(Vec3(0.3, 0.2, 1.0));
   const double radius = 0.8, h = 0.35;
@@ -317,13 +321,15 @@ TEST(QuadricCellError, CertificatesBoundTheMeasuredDistanceBesideACrease)
     const Measured m = CheckEveryCertificate(r, b.Scene, CutSphere(c, radius, n, h));
     EXPECT_GT(m.OversizedBesideCreases, 0u) << tolerance;
     EXPECT_GT(m.OversizedWithSeveralLeaves, 0u) << tolerance;
+    EXPECT_GT(m.OversizedCreaseCells, 0u) << tolerance;
     EXPECT_GT(m.WorstRatio, 0.1) << tolerance;
     EXPECT_LT(r.Extraction.Mesh.Triangles.size(), before.at(tolerance)) << tolerance;
     std::cout << "cut sphere 1/" << 1 / tolerance << ": " << r.Extraction.Mesh.Triangles.size() << " triangles (before "
               << before.at(tolerance) << "), " << m.Cells << " certified cells (" << m.OversizedCells
               << " larger than the tolerance, " << m.OversizedBesideCreases
               << " of them beside the rim, " << m.OversizedWithSeveralLeaves
-              << " with both leaves in the cell), worst measured/certified " << m.WorstRatio << "\n";
+              << " with both leaves in the cell, " << m.OversizedCreaseCells
+              << " crossed by the rim), worst measured/certified " << m.WorstRatio << "\n";
   }
 }
 
