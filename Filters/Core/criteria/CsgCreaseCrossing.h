@@ -24,15 +24,15 @@
 // in the convex tile and meet its boundary at a and b only - the argument of
 // LoopTriangulation.h for crease tiles; the loop stays simple and the fans
 // embedded. Closed: both cells sharing the tile decide alike - they decide
-// with the same expression, that of the cell first in node order (each
-// cell's own is pruned to its own box, and an enclosure that decides a leaf
-// over one cell's box need not decide it over the tile, so the two could
-// keep different leaves), which is also the cell that places x
-// (CrossingVertices.h); x is named by its tile and placed by recomputing it,
-// so both loops hold one vertex. Hausdorff: a CSG
-// crease cell is no larger than the tolerance (no certified bound covers two
-// leaves), x lies in it, and its patch stays in it. The result is checked
-// exactly anyway (SurfaceEmbedding.h).
+// with the same expression, that of a crease-fan cell if one of them is one
+// (OctreeNode::CreaseFan), else of the one first in node order (each cell's
+// own is pruned to its own box, and an enclosure that decides a leaf over one
+// cell's box need not decide it over the tile, so the two could keep
+// different leaves), which is also the cell that places x (CrossingVertices.h);
+// x is named by its tile and placed by recomputing it, so both loops hold one
+// vertex. Hausdorff: a crease cell no larger than the tolerance is bounded by
+// its size; a larger one is a crease fan, certified (QuadricCellError.h). The
+// result is checked exactly anyway (SurfaceEmbedding.h).
 #pragma once
 
 #include "BoundaryLoops.h"

@@ -153,7 +153,9 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     // patch checked, below, where a smaller cell is bounded by its size.)
     quadric = BoundQuadricCell(expression, tree.SceneExpression, prims, box, tolerance, v.Oversized);
     v.PredictedError = quadric ? PredictedCellError(*quadric) : HUGE_VAL;
-    v.ErrorBounded = v.PredictedError <= tolerance;
+    // (A crease cell without a crease point well inside has no fan to
+    // check: it splits before the costlier tests.)
+    v.ErrorBounded = v.PredictedError <= tolerance && (!quadric->Crease || CreaseApex(*quadric, prims));
   }
   const bool meshBounded = v.Oversized && !uniform && !planar && !v.ErrorBounded && LoneMeshLeaf(*expression);
   if (v.Oversized && !planar && !v.ErrorBounded && !meshBounded)

@@ -115,6 +115,10 @@ bool FlatQuadricLeaves(const CsgExpression& expression, std::vector<CsgLeaf>& le
     pending.pop_back();
     if (node.NodeKind == Kind::Leaf)
     {
+      if (std::find(leaves.begin(), leaves.end(), node.LeafData) != leaves.end())
+      {
+        continue; // (a leaf met twice is one field: max(f, f) = f)
+      }
       if (node.LeafData.Kind != PrimitiveKind::Quadric || leaves.size() == QuadricCellError::MaximumFields)
       {
         return false;
@@ -259,9 +263,18 @@ std::optional<QuadricCellError> BoundQuadricCell(const CsgExpressionPtr& cellExp
   {
     return std::nullopt; // (cheap exit: the expression pruned to C already has more)
   }
+  // Several leaves only for a cell larger than the tolerance (the margin): a
+  // smaller one is bounded by its size anyway, and the bound with several
+  // leaves costs their rises and a pruning per face (and NoCommonZero up to
+  // 512 enclosures per leaf).
+  const bool oversized = cell.Diagonal() > margin * (1.0 + 1e-9);
   if (own.size() > 1)
   {
     // Several leaves in C itself: only where no crease crosses C (header).
+    if (!oversized)
+    {
+      return std::nullopt;
+    }
     std::vector<Quadric> fields;
     for (const CsgLeaf& leaf : own)
     {
@@ -290,7 +303,8 @@ std::optional<QuadricCellError> BoundQuadricCell(const CsgExpressionPtr& cellExp
     grown.hi[a] = std::nextafter(cell.hi[a] + margin, HUGE_VAL);
   }
   const CsgExpression::Pruned there = CsgExpression::Prune(sceneExpression, grown, primitives);
-  if (there.Sign != RegionSign::Mixed || !FlatQuadricLeaves(*there.Expression, leaves, isUnion))
+  if (there.Sign != RegionSign::Mixed || !FlatQuadricLeaves(*there.Expression, leaves, isUnion) ||
+    (leaves.size() > 1 && !oversized))
   {
     return std::nullopt; // another kind of primitive, or another combination, within the margin
   }
@@ -301,13 +315,20 @@ std::optional<QuadricCellError> BoundQuadricCell(const CsgExpressionPtr& cellExp
     bound.Curvature = std::max(bound.Curvature, CurvatureBound(bound.Fields.back()));
   }
   const unsigned all = (1u << bound.Fields.size()) - 1;
-  // n: the normal of one of the cell's own leaves, or the bisector of all
-  // the leaves' (a crease within the margin), whichever rises fastest.
+  // n: the normal of one of the cell's own leaves, the bisector of its own
+  // leaves' (a crease in it) or of all the leaves' (a crease within the
+  // margin), whichever rises fastest.
   std::vector<unsigned> candidates;
+  unsigned ownFields = 0;
   for (const CsgLeaf& leaf : own)
   {
     const auto at = std::find(leaves.begin(), leaves.end(), leaf);
     candidates.push_back(at == leaves.end() ? all : 1u << (at - leaves.begin()));
+    ownFields |= candidates.back();
+  }
+  if (own.size() > 1 && ownFields != all)
+  {
+    candidates.push_back(ownFields); // (the crease's own bisector, a third primitive near)
   }
   candidates.push_back(all);
   for (const unsigned from : candidates)

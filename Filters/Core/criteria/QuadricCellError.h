@@ -83,7 +83,9 @@
 // rise at rate g rises at rate g), which is all (1) is used for, and S ∩ C+
 // is the zero set of F (F < 0 below, > 0 above every zero along n). On a
 // face, likewise along m_phi (the bisector of the projected normals) with
-// the leaves of the expression pruned to the face, whose sign is F's there.
+// F_phi, the expression pruned to the face: its sign is F's there, and
+// |F| <= |F_phi| (pruning a max drops leaves negative on the face, a min
+// leaves positive there), so the chord argument's bounds on F_phi hold.
 // The interpolation error (2) becomes: each leaf's value over a triangle or
 // chord lies in [min_i sigma f(v_i) - ||A|| R^2, max_i sigma f(v_i) + ||A|| R^2]
 // (||A|| the largest of the leaves'), and the max (min) of these intervals

@@ -1,7 +1,9 @@
 // The vertices of the extracted surface on the cells' boundaries: one per
 // distinct crossing of all loops, placed by one cell (the first in node
-// order among the cells whose loops hold it, so that every piece of a split
-// run places it alike: ForestPartition.h) on the exact field.
+// order among the cells whose loops hold it - crease-fan cells first, which
+// decide the CSG crease tiles they share - so that every piece of a split
+// run places it alike: ForestPartition.h) on the exact field. (The surface
+// leaves are listed in node order.)
 #pragma once
 
 #include "AdaptiveOctree.h"

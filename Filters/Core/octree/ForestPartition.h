@@ -12,7 +12,9 @@
 //   neighbours' crossings on its faces, face tilings, refinement points on
 //   its edges), all in its own tree or the ghost ring;
 // - where several cells could place a vertex or tile a face, the first one in
-//   node order wins, and node order is (level, tree, path in the tree) in any
+//   node order wins (a crease-fan cell before the others for a CSG crease
+//   tile's vertex, CrossingVertices.h: a property each piece computes alike
+//   from the cell), and node order is (level, tree, path in the tree) in any
 //   subset of the trees kept in tree order, so every piece chooses the cell
 //   the whole run chooses. The ghost ring's cells take part in those choices.
 // The root grid must have enough trees to split: SplitRootCells divides each

@@ -416,8 +416,11 @@ TEST(QuadricCellError, BothLeavesBoundACellBesideACreaseNoneOnItOrWhereTheFieldT
   // Both leaves then enter the bound (the big sphere's and the small one's
   // complement must both rise along n), which is larger than the cell's own
   // leaf alone would give.
-  const Box3 nearCut{ { 0.69, 0.377, -0.01 }, { 0.71, 0.397, 0.01 } };
-  const double margin = 0.12;
+  // (Only a cell larger than the margin gets a bound with several leaves: a
+  // smaller one is bounded by its size.)
+  const Box3 nearCut{ { 0.66, 0.347, -0.04 }, { 0.74, 0.427, 0.04 } };
+  const double margin = 0.1;
+  ASSERT_GT(nearCut.Diagonal(), margin);
   ASSERT_TRUE(prunedTo(nearCut));
   ASSERT_EQ(prunedTo(nearCut)->NodeCount(), 1u);
   const auto beside = tpc::BoundQuadricCell(prunedTo(nearCut), b.Scene.Expression, b.Scene.Primitives, nearCut, margin);
@@ -434,7 +437,8 @@ TEST(QuadricCellError, BothLeavesBoundACellBesideACreaseNoneOnItOrWhereTheFieldT
   SceneBuilder plate;
   plate.Finish(SceneBuilder::Intersection({ plate.Add(tpc::Quadric::Plane({ 0, 0.05, 0 }, Vec3(0, 1, 0))),
     plate.Add(tpc::Quadric::Plane({ 0, -0.05, 0 }, Vec3(0, -1, 0))) }));
-  const Box3 onTop{ { -0.03, 0.02, -0.03 }, { 0.03, 0.08, 0.03 } };
+  const Box3 onTop{ { -0.1, 0.02, -0.1 }, { 0.1, 0.08, 0.1 } };
+  ASSERT_GT(onTop.Diagonal(), 0.2);
   const auto topCell = tpc::CsgExpression::Prune(plate.Scene.Expression, onTop, plate.Scene.Primitives).Expression;
   ASSERT_TRUE(topCell);
   ASSERT_EQ(topCell->NodeCount(), 1u);
