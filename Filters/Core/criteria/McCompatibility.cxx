@@ -64,6 +64,7 @@ bool TileFaces(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& 
   }
   return true;
 }
+
 /// Whether a crease cell's patch will be made of sectors, each on one leaf
 /// (QuadricCellError.h: In a crease cell), as the prediction assumes: its
 /// loop, drawn as the extraction draws it (CSG crease tiles through the
