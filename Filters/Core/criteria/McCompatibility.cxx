@@ -72,14 +72,9 @@ bool TileFaces(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& 
 /// certified within the tolerance. (The extraction draws the same fan over
 /// the final loop, which only adds points on the same traces, and certifies
 /// that again.)
-bool CreaseFanWithinTolerance(const QuadricCellError& bound, const CellBoundary& boundary,
+bool CreaseFanWithinTolerance(const QuadricCellError& bound, const Vec3& apex, const CellBoundary& boundary,
   const CsgExpressionPtr& expression, const PrimitiveSet& prims, const RootGrid& grid, double tolerance)
 {
-  const std::optional<Vec3> apex = CreaseApex(bound, prims);
-  if (!apex)
-  {
-    return false;
-  }
   CellBoundary bent = boundary;
   MarkCsgCreaseTiles(bent, prims, grid, [&](int, std::size_t) { return &expression; });
   const BoundaryLoopSet loops = TraceBoundaryLoops(bent);
@@ -108,7 +103,7 @@ bool CreaseFanWithinTolerance(const QuadricCellError& bound, const CellBoundary&
       return false;
     }
   }
-  return FanError(bound, loop, *apex) <= tolerance;
+  return FanError(bound, loop, apex) <= tolerance;
 }
 } // namespace
 
@@ -148,6 +143,7 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   v.Oversized = grid.CellDiagonal(node.Level) > tolerance * (1.0 + 1e-9);
   const bool planar = v.Oversized && !uniform && IsPlanarCell(*expression, prims, box);
   std::optional<QuadricCellError> quadric;
+  std::optional<Vec3> creaseApex;
   if (!uniform && !planar)
   {
     // (A crease cell only when larger than the tolerance: it needs its own
@@ -156,7 +152,8 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     v.PredictedError = quadric ? PredictedCellError(*quadric) : HUGE_VAL;
     // (A crease cell without a crease point well inside has no fan to
     // check: it splits before the costlier tests.)
-    v.ErrorBounded = v.PredictedError <= tolerance && (!quadric->Crease || CreaseApex(*quadric, prims));
+    creaseApex = v.PredictedError <= tolerance && quadric->Crease ? CreaseApex(*quadric, prims) : std::nullopt;
+    v.ErrorBounded = v.PredictedError <= tolerance && (!quadric->Crease || creaseApex);
   }
   const bool meshBounded = v.Oversized && !uniform && !planar && !v.ErrorBounded && LoneMeshLeaf(*expression);
   if (v.Oversized && !planar && !v.ErrorBounded && !meshBounded)
@@ -216,7 +213,7 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   }
   else if (v.ErrorBounded && quadric->Crease)
   {
-    if (!CreaseFanWithinTolerance(*quadric, boundary, expression, prims, grid, tolerance))
+    if (!CreaseFanWithinTolerance(*quadric, *creaseApex, boundary, expression, prims, grid, tolerance))
     {
       v.ErrorBounded = false;
       v.Reason = SplitReason::HausdorffSize;

@@ -203,14 +203,7 @@ Vec3 MeshCellApex(const std::vector<ConvexPolygon>& surface, const Box3& cell)
   }
   Vec3 delta;
   SolveTruncated(ata, atb, 0.05, delta.x);
-  Box3 inner = cell;
-  for (int a = 0; a < 3; ++a)
-  {
-    const double margin = cell.Width(a) / 32.0;
-    inner.lo[a] += margin;
-    inner.hi[a] -= margin;
-  }
-  return inner.Clamp(centroid + delta);
+  return cell.Shrunk(1.0 / 32.0).Clamp(centroid + delta);
 }
 
 double ChordDeviation(const std::vector<ConvexPolygon>& surface, const Box3& tile, const Vec3& a, const Vec3& b)

@@ -138,6 +138,14 @@ bool FlatQuadricLeaves(const CsgExpression& expression, std::vector<CsgLeaf>& le
   return !leaves.empty();
 }
 
+/// The bit of `leaf` among `leaves` (bit i: leaves[i]); all of them when it
+/// is not there.
+unsigned FieldBit(const std::vector<CsgLeaf>& leaves, const CsgLeaf& leaf)
+{
+  const auto at = std::find(leaves.begin(), leaves.end(), leaf);
+  return at == leaves.end() ? (1u << leaves.size()) - 1 : 1u << (at - leaves.begin());
+}
+
 /// An enclosure of F over a triangle or segment with vertices `v` (count 2
 /// or 3) in the smallest ball of squared radius `radius2`, from the leaves
 /// in `fields` (header: the interpolation error); its magnitude bounds |F|.
@@ -322,8 +330,7 @@ std::optional<QuadricCellError> BoundQuadricCell(const CsgExpressionPtr& cellExp
   unsigned ownFields = 0;
   for (const CsgLeaf& leaf : own)
   {
-    const auto at = std::find(leaves.begin(), leaves.end(), leaf);
-    candidates.push_back(at == leaves.end() ? all : 1u << (at - leaves.begin()));
+    candidates.push_back(FieldBit(leaves, leaf));
     ownFields |= candidates.back();
   }
   if (own.size() > 1 && ownFields != all)
@@ -368,8 +375,7 @@ std::optional<QuadricCellError> BoundQuadricCell(const CsgExpressionPtr& cellExp
         }
         for (const CsgLeaf& l : faceLeaves)
         {
-          const auto at = std::find(leaves.begin(), leaves.end(), l);
-          onFace |= at == leaves.end() ? all : 1u << (at - leaves.begin());
+          onFace |= FieldBit(leaves, l);
         }
       }
     }
@@ -449,15 +455,29 @@ std::optional<Vec3> CreaseApex(const QuadricCellError& bound, const PrimitiveSet
   {
     return std::nullopt;
   }
+  const Box3 inner = cell.Shrunk(1.0 / 32.0);
   for (int a = 0; a < 3; ++a)
   {
-    const double margin = cell.Width(a) / 32.0;
-    if (!((*x)[a] > cell.lo[a] + margin && (*x)[a] < cell.hi[a] - margin))
+    if (!((*x)[a] > inner.lo[a] && (*x)[a] < inner.hi[a]))
     {
       return std::nullopt;
     }
   }
   return x;
+}
+
+double EdgeChordError(const QuadricCellError& bound, const Vec3& a, const Vec3& b)
+{
+  double error = 0.0;
+  for (int face = 0; face < 6; ++face)
+  {
+    const double plane = (face % 2 ? bound.Cell.hi : bound.Cell.lo)[face / 2];
+    if (a[face / 2] == plane && b[face / 2] == plane)
+    {
+      error = std::max(error, ChordError(bound, face, a, b));
+    }
+  }
+  return error;
 }
 
 double FanError(const QuadricCellError& bound, const std::vector<Vec3>& loop, const Vec3& apex)
@@ -467,15 +487,7 @@ double FanError(const QuadricCellError& bound, const std::vector<Vec3>& loop, co
   for (std::size_t k = 0; k < m; ++k)
   {
     const Vec3 &a = loop[k], &b = loop[(k + 1) % m];
-    error = std::max(error, TriangleError(bound, a, b, apex));
-    for (int face = 0; face < 6; ++face)
-    {
-      const double plane = (face % 2 ? bound.Cell.hi : bound.Cell.lo)[face / 2];
-      if (a[face / 2] == plane && b[face / 2] == plane)
-      {
-        error = std::max(error, ChordError(bound, face, a, b));
-      }
-    }
+    error = std::max({ error, TriangleError(bound, a, b, apex), EdgeChordError(bound, a, b) });
   }
   return error <= bound.Margin ? error : HUGE_VAL;
 }

@@ -177,6 +177,10 @@ std::optional<QuadricCellError> BoundQuadricCell(const CsgExpressionPtr& cellExp
 /// and the extraction find the same).
 std::optional<Vec3> CreaseApex(const QuadricCellError& bound, const PrimitiveSet& primitives);
 
+/// The chord term of the edge ab if it lies in a face of the cell (the larger
+/// one for an edge on two faces), 0 otherwise.
+double EdgeChordError(const QuadricCellError& bound, const Vec3& a, const Vec3& b);
+
 /// E_C of the fan around `apex` over the closed polyline `loop` (points on
 /// the cell's faces): its triangles' terms and its chords' on the faces they
 /// lie in; +inf beyond the margin.

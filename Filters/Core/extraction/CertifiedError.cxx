@@ -7,22 +7,6 @@ namespace tpc
 {
 namespace
 {
-/// The chord term of the edge ab if it lies in a face of the cell (the larger
-/// one for an edge on two faces), 0 otherwise.
-double EdgeChordError(const QuadricCellError& bound, const Vec3& a, const Vec3& b)
-{
-  double error = 0.0;
-  for (int face = 0; face < 6; ++face)
-  {
-    const double plane = (face % 2 ? bound.Cell.hi : bound.Cell.lo)[face / 2];
-    if (a[face / 2] == plane && b[face / 2] == plane)
-    {
-      error = std::max(error, ChordError(bound, face, a, b));
-    }
-  }
-  return error;
-}
-
 /// The cell's triangles with their vertices' positions.
 std::vector<SourceTriangle> PatchTriangles(const CellPatches& patches, const TriangleMesh& mesh)
 {

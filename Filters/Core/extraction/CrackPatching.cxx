@@ -1,6 +1,7 @@
 #include "CrackPatching.h"
 
 #include "CreaseCrossing.h"
+#include "CrossingVertices.h"
 #include "CsgCreaseCrossing.h"
 
 #include "ExactCell.h"
@@ -285,9 +286,8 @@ BoundaryLoopSet CellLoops(const AdaptiveOctree& tree, std::uint32_t cell, const 
         return &tree.Expressions[cell];
       }
       const std::size_t other = static_cast<std::size_t>(across);
-      const bool mineFan = tree.Nodes[cell].CreaseFan, theirsFan = tree.Nodes[other].CreaseFan;
-      const std::size_t decider = mineFan != theirsFan ? (mineFan ? cell : other) : std::min<std::size_t>(other, cell);
-      return &tree.Expressions[decider];
+      const bool mine = DecidesBefore(tree.Nodes[cell].CreaseFan, cell, tree.Nodes[other].CreaseFan, other);
+      return &tree.Expressions[mine ? cell : other];
     });
   }
   return TraceBoundaryLoops(boundary);

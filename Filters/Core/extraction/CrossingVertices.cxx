@@ -70,8 +70,7 @@ bool CrossingVertices::Build(const std::vector<BoundaryLoopSet>& loops, const st
       {
         return a.Vertex < b.Vertex;
       }
-      const bool firstA = decidesFirst[a.CellIndex] != 0, firstB = decidesFirst[b.CellIndex] != 0;
-      return firstA != firstB ? firstA : a.CellIndex < b.CellIndex;
+      return DecidesBefore(decidesFirst[a.CellIndex] != 0, a.CellIndex, decidesFirst[b.CellIndex] != 0, b.CellIndex);
     },
     [](const Record& a, const Record& b) { return a.Vertex.SameVertex(b.Vertex); }, parallelFor, progress,
     this->Distinct);

@@ -18,6 +18,15 @@
 namespace tpc
 {
 
+/// Of two cells sharing a CSG crease tile, whether cell `a` decides it
+/// (CrackPatching.cxx) and places its vertex (CrossingVertices::Build) before
+/// cell `b`: a crease-fan cell first (QuadricCellError.h), then node order.
+/// (One rule for both, so the cell that decided a tile places its vertex.)
+inline bool DecidesBefore(bool aCreaseFan, std::size_t a, bool bCreaseFan, std::size_t b)
+{
+  return aCreaseFan != bCreaseFan ? aCreaseFan : a < b;
+}
+
 class CrossingVertices
 {
 public:

@@ -34,19 +34,6 @@ Vec3 Centroid(const std::vector<LoopPoint>& loop)
   return m * (1.0 / static_cast<double>(loop.size()));
 }
 
-/// `box` shrunk by `fraction` of its width on each side.
-Box3 Shrunk(const Box3& box, double fraction)
-{
-  Box3 b = box;
-  for (int a = 0; a < 3; ++a)
-  {
-    const double d = fraction * box.Width(a);
-    b.lo[a] += d;
-    b.hi[a] -= d;
-  }
-  return b;
-}
-
 /// The point of the open box nearest to `p` on each axis: `p` itself where it
 /// is strictly inside, else the representable value next to the violated side
 /// (or the midpoint for a box too thin to hold one).
@@ -243,7 +230,7 @@ std::optional<Vec3> ApexOnSurface(const std::vector<LoopPoint>& loop, const Box3
 std::optional<Vec3> ApexOnCrease(const std::vector<LoopPoint>& loop, const Box3& region,
   const CsgExpression& expression, const PrimitiveSet& primitives, const Vec3& feature)
 {
-  const Box3 inner = Shrunk(region, CreaseApexMargin);
+  const Box3 inner = region.Shrunk(CreaseApexMargin);
   const std::vector<CsgLeaf> leaves = expression.Leaves();
   const bool quadrics = std::all_of(
     leaves.begin(), leaves.end(), [](const CsgLeaf& l) { return l.Kind == PrimitiveKind::Quadric; });
@@ -293,7 +280,7 @@ Vec3 PlaceApex(const std::vector<LoopPoint>& loop, const Box3& region, bool plan
     // In the loop's plane (up to rounding): the patch is the plane section.
     return ClampStrictlyInside(centroid, region);
   }
-  const Box3 inner = Shrunk(region, ApexMargin);
+  const Box3 inner = region.Shrunk(ApexMargin);
   const Vec3 feature = inner.Clamp(TangentPlanesPoint(loop, centroid));
   if (const std::optional<Vec3> onCrease = ApexOnCrease(loop, region, expression, primitives, feature))
   {

@@ -76,6 +76,18 @@ struct Box3
     }
     return b;
   }
+  /// The box shrunk on each side by `fraction` of its width along that axis.
+  Box3 Shrunk(double fraction) const
+  {
+    Box3 b = *this;
+    for (int a = 0; a < 3; ++a)
+    {
+      const double d = fraction * this->Width(a);
+      b.lo[a] += d;
+      b.hi[a] -= d;
+    }
+    return b;
+  }
   bool Contains(const Vec3& p) const
   {
     for (int a = 0; a < 3; ++a)
