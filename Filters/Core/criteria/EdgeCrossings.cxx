@@ -253,11 +253,15 @@ Vec3 FindEdgeCrossing(const CsgExpression& expression, const PrimitiveSet& primi
 {
   // The floating-point field is used where its signs agree with the exact
   // ones at the ends; mesh leaves only have an approximate value, and
-  // rounding may contradict the exact signs: then exact bisection.
+  // rounding may contradict the exact signs: then exact bisection. (Their
+  // value is not even computed: it costs a pass over the leaf's triangles.)
+  if (expression.HasMeshLeaves())
+  {
+    return BisectOnExactSigns(expression, primitives, a, b, insideA);
+  }
   const double fa = expression.Value(a, primitives);
   const double fb = expression.Value(b, primitives);
-  const bool usable = !expression.HasMeshLeaves() &&
-    (insideA ? (fa < 0.0 && fb >= 0.0) : (fa >= 0.0 && fb < 0.0));
+  const bool usable = insideA ? (fa < 0.0 && fb >= 0.0) : (fa >= 0.0 && fb < 0.0);
   return usable ? IllinoisRoot(expression, primitives, a, b, fa, fb)
                 : BisectOnExactSigns(expression, primitives, a, b, insideA);
 }

@@ -141,29 +141,16 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
       order.emplace_back(d2, t);
     }
   }
-  // Nearest box first from a heap, not a sort: the walk usually stops after
-  // a few targets.
-  const auto nearer = [](const std::pair<double, std::uint32_t>& a, const std::pair<double, std::uint32_t>& b) {
-    return a.first > b.first;
-  };
-  std::make_heap(order.begin(), order.end(), nearer);
   double nearest[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL };
   double single = HUGE_VAL;
-  for (auto heapEnd = order.end(); heapEnd != order.begin(); --heapEnd)
-  {
-    std::pop_heap(order.begin(), heapEnd, nearer);
-    const auto [boxDistance2, t] = *(heapEnd - 1);
-    const double largest = std::max({ single, nearest[0], nearest[1], nearest[2] });
-    if (boxDistance2 >= largest * largest)
-    {
-      break; // (nearest first: no later target can lower either)
-    }
+  const auto largest = [&] { return std::max({ single, nearest[0], nearest[1], nearest[2] }); };
+  // Whether target t may lower a vertex's nearest distance or the single-
+  // target bound, and then its distances. (A vertex's distance to the
+  // target's box is a lower bound of its distance to the target: one vertex
+  // that far rules the target out of the single-target bound, which for a
+  // piece much larger than the targets is most of them.)
+  const auto visit = [&](std::uint32_t t) {
     const ConvexPolygon& target = targets.Polygons[t];
-    // Whether this target may give a smaller single-target bound: then all
-    // three distances are needed, until one reaches the current bound. (A
-    // vertex's distance to the target's box is a lower bound of its distance
-    // to the target: one vertex that far rules the target out, which for a
-    // piece much larger than the targets is most of them.)
     double boxDistance2Of[3];
     double farthestBox2 = 0.0;
     for (int i = 0; i < 3; ++i)
@@ -188,6 +175,29 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
     if (improvesSingle)
     {
       single = farthest; // (all three computed, their maximum below the bound)
+    }
+  };
+  // Nearest box first. The nearest box's target usually bounds the piece
+  // well enough to rule out most others by their box distance alone, so it
+  // is visited before any ordering, and only the targets still in the
+  // running are sorted (a heap over all of them was a seventh of the run).
+  if (!order.empty())
+  {
+    const auto nearestBox = std::min_element(order.begin(), order.end());
+    std::iter_swap(order.begin(), nearestBox);
+    visit(order.front().second);
+    const double after2 = largest() * largest();
+    const auto running = std::partition(order.begin() + 1, order.end(),
+      [&](const std::pair<double, std::uint32_t>& e) { return e.first < after2; });
+    std::sort(order.begin() + 1, running);
+    for (auto e = order.begin() + 1; e != running; ++e)
+    {
+      const double bound = largest();
+      if (e->first >= bound * bound)
+      {
+        break; // (nearest first: no later target can lower either)
+      }
+      visit(e->second);
     }
   }
   double vertexMax = 0.0;
