@@ -257,11 +257,22 @@ Box3 FaceBox(const Box3& cell, int face)
 }
 } // namespace
 
+Box3 GrownByMargin(const Box3& cell, double margin)
+{
+  Box3 grown = cell;
+  for (int a = 0; a < 3; ++a)
+  {
+    grown.lo[a] = std::nextafter(cell.lo[a] - margin, -HUGE_VAL);
+    grown.hi[a] = std::nextafter(cell.hi[a] + margin, HUGE_VAL);
+  }
+  return grown;
+}
+
 std::optional<QuadricCellError> BoundQuadricCell(const CsgExpressionPtr& cellExpression,
-  const CsgExpressionPtr& sceneExpression, const PrimitiveSet& primitives, const Box3& cell, double margin,
+  const CsgExpressionPtr& nearExpression, const PrimitiveSet& primitives, const Box3& cell, double margin,
   bool creases)
 {
-  if (!cellExpression || !sceneExpression || !(margin > 0.0))
+  if (!cellExpression || !nearExpression || !(margin > 0.0))
   {
     return std::nullopt;
   }
@@ -303,14 +314,8 @@ std::optional<QuadricCellError> BoundQuadricCell(const CsgExpressionPtr& cellExp
   }
   bound.Cell = cell;
   bound.Margin = margin;
-  // (Rounded outward: C+ holds the cell grown by the margin exactly.)
-  Box3 grown = cell;
-  for (int a = 0; a < 3; ++a)
-  {
-    grown.lo[a] = std::nextafter(cell.lo[a] - margin, -HUGE_VAL);
-    grown.hi[a] = std::nextafter(cell.hi[a] + margin, HUGE_VAL);
-  }
-  const CsgExpression::Pruned there = CsgExpression::Prune(sceneExpression, grown, primitives);
+  const Box3 grown = GrownByMargin(cell, margin);
+  const CsgExpression::Pruned there = CsgExpression::Prune(nearExpression, grown, primitives);
   if (there.Sign != RegionSign::Mixed || !FlatQuadricLeaves(*there.Expression, leaves, isUnion) ||
     (leaves.size() > 1 && !oversized))
   {

@@ -157,6 +157,10 @@ struct QuadricCellError
   CsgLeaf CreaseLeaves[2];
 };
 
+/// `cell` grown by `margin` on every side, rounded outward (C+ above: it holds
+/// the exact grown cell).
+Box3 GrownByMargin(const Box3& cell, double margin);
+
 /// The setting above for `cell` when the scene's expression pruned to the
 /// cell grown by `margin` is a single quadric leaf, or one intersection or
 /// union of at most MaximumFields of them, and g > 0; nothing otherwise.
@@ -164,11 +168,14 @@ struct QuadricCellError
 /// it): unless it is a single quadric leaf, or several with no crease in the
 /// cell, nothing is looked at further.
 /// (It cannot stand for the scene's: another primitive may lie outside the
-/// cell but within the margin.)
+/// cell but within the margin.) `nearExpression` is the scene's, or any
+/// expression equal to it on the grown cell (GrownByMargin): the scene's
+/// pruned to a box holding the grown cell (AdaptiveOctree::NearExpression),
+/// which saves an enclosure per leaf of a scene of many primitives.
 /// `creases`: a cell whose own expression is two quadric leaves whose crease
 /// may cross it is bounded too (Crease set).
 std::optional<QuadricCellError> BoundQuadricCell(const CsgExpressionPtr& cellExpression,
-  const CsgExpressionPtr& sceneExpression, const PrimitiveSet& primitives, const Box3& cell, double margin,
+  const CsgExpressionPtr& nearExpression, const PrimitiveSet& primitives, const Box3& cell, double margin,
   bool creases = false);
 
 /// The apex of a crease cell's fan: the point of the crease Gauss-Newton

@@ -218,7 +218,7 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
   // (A crease cell was accepted with the fan around its crease apex in mind,
   // QuadricCellError.h; that fan is drawn over the final loop.)
   const std::optional<QuadricCellError> quadric = bounded
-    ? BoundQuadricCell(tree.Expressions[n], tree.SceneExpression, prims, box, tree.HausdorffTolerance, true)
+    ? BoundQuadricCell(tree.Expressions[n], tree.NearExpression(n), prims, box, tree.HausdorffTolerance, true)
     : std::nullopt;
   const std::optional<Vec3> creaseApex = quadric && quadric->Crease ? CreaseApex(*quadric, prims) : std::nullopt;
   TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches, quadric ? &*quadric : nullptr,

@@ -171,7 +171,8 @@ bool AdaptiveOctree::PointInside(std::size_t leaf, PointKey key) const
 std::size_t AdaptiveOctree::MemoryBytes() const
 {
   return this->Nodes.capacity() * sizeof(OctreeNode) +
-    this->Expressions.capacity() * sizeof(CsgExpressionPtr) + this->Signs.MemoryBytes();
+    (this->Expressions.capacity() + this->NearExpressions.capacity()) * sizeof(CsgExpressionPtr) +
+    this->Signs.MemoryBytes();
 }
 
 } // namespace tpc

@@ -97,6 +97,19 @@ public:
   std::vector<OctreeNode> Nodes;
   /// Pruned expression of each node that meets the surface (null elsewhere).
   std::vector<CsgExpressionPtr> Expressions;
+  /// Where the scene has no mesh leaf: the scene's expression pruned to each
+  /// such node's cell grown by the tolerance (GrownByMargin,
+  /// QuadricCellError.h), each from its parent's (a child's grown cell lies
+  /// in its parent's); empty for scenes with meshes, whose bounds look no
+  /// further than the cell's own expression.
+  std::vector<CsgExpressionPtr> NearExpressions;
+  /// What the certified bounds of node n look at beyond its cell: its
+  /// NearExpressions entry, else the scene's whole expression.
+  const CsgExpressionPtr& NearExpression(std::size_t n) const
+  {
+    return n < this->NearExpressions.size() && this->NearExpressions[n] ? this->NearExpressions[n]
+                                                                         : this->SceneExpression;
+  }
   /// Exact inside/outside at lattice corners of cells that met the surface.
   LatticeSignTable Signs;
 

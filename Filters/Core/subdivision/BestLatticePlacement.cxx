@@ -132,7 +132,9 @@ PlacedSubdivision RunOnBestLatticePlacement(const ImplicitScene& scene, const Bo
       best.FinestCell = std::ldexp(grid.RootSize, -std::min(params.MaximumDepth, grid.MaxDepth));
       std::swap(best.Result, run);
     }
-    if (!ReleaseInChunks(run.Octree.Expressions, progress, start) && !best.Result.Aborted)
+    if ((!ReleaseInChunks(run.Octree.Expressions, progress, start) ||
+          !ReleaseInChunks(run.Octree.NearExpressions, progress, start)) &&
+      !best.Result.Aborted)
     {
       best.Result.Aborted = true;
       return best;

@@ -70,6 +70,10 @@ bool DecideCell(AdaptiveOctree& tree, std::uint32_t n, const CellTests& tests, c
   {
     node.State = StateOf(v.Sign);
     tree.Expressions[n].reset();
+    if (n < tree.NearExpressions.size())
+    {
+      tree.NearExpressions[n].reset();
+    }
     return false;
   }
   const bool stopped = limits.AtDepthLimit || limits.AtCellLimit || tests.Facing;

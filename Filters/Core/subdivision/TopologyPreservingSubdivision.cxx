@@ -2,6 +2,7 @@
 
 #include "DistinctRecords.h"
 #include "ExactCellCriterion.h"
+#include "QuadricCellError.h"
 #include "SplitDecision.h"
 
 #include <algorithm>
@@ -98,6 +99,7 @@ private:
 
   void MakeRoots();
   void PruneRoots(const int lo[3], const int hi[3], const CsgExpressionPtr& expression);
+  CsgExpressionPtr NearExpressionOf(const CsgExpressionPtr& enclosing, int level, const LatticeIndex ijk[3]) const;
   bool EvaluateUnseenCorners();
   bool TestCells(std::vector<CellTests>& tests);
   bool DecideCells(std::vector<CellTests>& tests, std::vector<std::uint32_t>& parents);
@@ -147,6 +149,24 @@ void LevelByLevel::MakeRoots()
       this->Active.push_back(static_cast<std::uint32_t>(t));
     }
   }
+  if (!this->Scene.Expression->HasMeshLeaves())
+  {
+    tree.NearExpressions.resize(static_cast<std::size_t>(treeCount));
+    for (const std::uint32_t t : this->Active)
+    {
+      tree.NearExpressions[t] = this->NearExpressionOf(this->Scene.Expression, 0, tree.Nodes[t].Ijk);
+    }
+  }
+}
+
+/// The scene's expression pruned to the cell (level, ijk) grown by the
+/// tolerance, from `enclosing`, the scene's on a box holding that grown cell
+/// (null where the scene has one sign on all of it).
+CsgExpressionPtr LevelByLevel::NearExpressionOf(const CsgExpressionPtr& enclosing, int level,
+  const LatticeIndex ijk[3]) const
+{
+  const Box3 grown = GrownByMargin(this->Grid.CellBox(level, ijk), this->Parameters.HausdorffTolerance);
+  return CsgExpression::Prune(enclosing, grown, this->Scene.Primitives).Expression;
 }
 
 /// The expression pruned to each computed root of the block of trees
@@ -335,6 +355,11 @@ bool LevelByLevel::MakeChildren(const std::vector<std::uint32_t>& parents)
   const std::size_t first = tree.Nodes.size();
   tree.Nodes.resize(first + 8 * parents.size());
   tree.Expressions.resize(tree.Nodes.size());
+  const bool near = !tree.NearExpressions.empty();
+  if (near)
+  {
+    tree.NearExpressions.resize(tree.Nodes.size());
+  }
   for (std::size_t i = 0; i < parents.size(); ++i)
   {
     tree.Nodes[parents[i]].FirstChild = static_cast<std::int32_t>(first + 8 * i);
@@ -358,6 +383,11 @@ bool LevelByLevel::MakeChildren(const std::vector<std::uint32_t>& parents)
             if (pruned.Sign == RegionSign::Mixed)
             {
               tree.Expressions[ci] = pruned.Expression;
+              if (near)
+              {
+                tree.NearExpressions[ci] =
+                  this->NearExpressionOf(tree.NearExpression(parents[i]), level + 1, child.Ijk);
+              }
             }
           }
         }
@@ -369,6 +399,10 @@ bool LevelByLevel::MakeChildren(const std::vector<std::uint32_t>& parents)
   for (std::size_t i = 0; i < parents.size(); ++i)
   {
     tree.Expressions[parents[i]].reset();
+    if (near)
+    {
+      tree.NearExpressions[parents[i]].reset();
+    }
     for (std::size_t ci = first + 8 * i; ci < first + 8 * i + 8; ++ci)
     {
       if (tree.Nodes[ci].State == CellState::Surface)

@@ -2,6 +2,8 @@
 // scenes: adaptivity, the two-sided Hausdorff bound, closed manifold output,
 // and what happens when a limit stops refinement.
 #include "CoreContour.h"
+#include "MeshBuilders.h"
+#include "QuadricCellError.h"
 #include "SceneBuilder.h"
 
 #include <gtest/gtest.h>
@@ -282,6 +284,71 @@ TEST(Subdivision, SpheresOverlappingByAHairFormOneSolid)
   EXPECT_TRUE(r.Report.Closed && r.Report.Manifold);
   const ContourRun old = Contour(b.Scene, bounds, 1.0 / 64, 16);
   EXPECT_FALSE(old.Guaranteed);
+}
+
+TEST(Subdivision, NearExpressionsAreTheScenesOnEveryGrownCell)
+{
+  // A plate with a row of holes: many primitives, few near any one cell.
+  // Each surface leaf keeps the scene's expression pruned to its cell grown
+  // by the tolerance, pruned from its parent's (QuadricCellError.h looks
+  // there): it must say what the whole scene says everywhere in that box.
+  SceneBuilder b;
+  std::vector<tpc::CsgTerm> holes;
+  for (int i = 0; i < 9; ++i)
+  {
+    holes.push_back(b.Sphere({ -0.6 + 0.15 * i, 0.03 * (i % 3), 0.0 }, 0.06 + 0.001 * i));
+  }
+  std::vector<tpc::CsgTerm> parts{ b.Box({ -0.7, -0.2, -0.05 }, { 0.7, 0.2, 0.05 }) };
+  parts.insert(parts.end(), holes.begin(), holes.end());
+  b.Finish(SceneBuilder::Difference(parts));
+  const ContourRun r = Contour(b.Scene, { { -0.7, -0.2, -0.05 }, { 0.7, 0.2, 0.05 } }, 1.0 / 64);
+  EXPECT_TRUE(r.Guaranteed);
+  EXPECT_EQ(r.Report.Genus, 9);
+  const tpc::AdaptiveOctree& tree = r.Subdivision.Octree;
+  ASSERT_EQ(tree.NearExpressions.size(), tree.Nodes.size());
+  const std::size_t sceneLeaves = b.Scene.Expression->Leaves().size();
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::size_t checked = 0, largest = 0;
+  for (std::uint32_t n = 0; n < tree.Nodes.size(); ++n)
+  {
+    const tpc::OctreeNode& node = tree.Nodes[n];
+    if (!node.IsLeaf() || node.State != tpc::CellState::Surface)
+    {
+      continue;
+    }
+    ASSERT_TRUE(tree.NearExpressions[n]) << "surface leaf " << n;
+    const tpc::CsgExpression& near = *tree.NearExpressions[n];
+    largest = std::max(largest, near.Leaves().size());
+    const Box3 grown = tpc::GrownByMargin(tree.Grid.CellBox(node.Level, node.Ijk), tree.HausdorffTolerance);
+    for (int s = 0; s < 40; ++s)
+    {
+      Vec3 p;
+      for (int a = 0; a < 3; ++a)
+      {
+        p[a] = grown.lo[a] + u(rng) * (grown.hi[a] - grown.lo[a]);
+      }
+      ASSERT_EQ(near.IsInside(p, b.Scene.Primitives), b.Scene.Expression->IsInside(p, b.Scene.Primitives))
+        << "leaf " << n << " at " << p[0] << " " << p[1] << " " << p[2];
+    }
+    ++checked;
+  }
+  EXPECT_GT(checked, 100u);
+  // Not the scene again (six planes and nine spheres): a grown cell meets a
+  // few planes of the plate and a hole.
+  EXPECT_EQ(sceneLeaves, 15u);
+  EXPECT_LE(largest, 5u);
+}
+
+TEST(Subdivision, NoNearExpressionsWhereTheSceneHasAMesh)
+{
+  SceneBuilder b;
+  b.Finish(SceneBuilder::Difference(
+    { b.Mesh(tpctest::CubeMesh({ -0.5, -0.5, -0.5 }, { 0.5, 0.5, 0.5 })), b.Sphere({ 0.5, 0.5, 0.5 }, 0.3) }));
+  const ContourRun r = Contour(b.Scene, { { -0.5, -0.5, -0.5 }, { 0.5, 0.5, 0.5 } }, 1.0 / 16);
+  EXPECT_TRUE(r.Contoured);
+  EXPECT_TRUE(r.Subdivision.Octree.NearExpressions.empty());
+  EXPECT_EQ(r.Subdivision.Octree.NearExpression(0), r.Subdivision.Octree.SceneExpression);
 }
 
 TEST(Subdivision, LatticePlacementsDifferAndAllCoverTheDomain)
