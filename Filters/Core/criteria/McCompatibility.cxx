@@ -221,7 +221,7 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
       creases = HasCreaseTile(boundary);
     }
     v.PredictedError = PredictedMeshCellError(*expression, prims, grid, box, boundary,
-      creases ? TraceBoundaryLoops(boundary) : loops, tolerance, v.PredictedLoop);
+      creases ? TraceBoundaryLoops(boundary) : loops, tolerance, v.PredictedLoop, v.PredictedAttained);
     v.ErrorBounded = v.MeshSurface = v.PredictedError <= tolerance;
     if (!v.ErrorBounded)
     {

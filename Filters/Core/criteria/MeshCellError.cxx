@@ -274,7 +274,7 @@ HausdorffEstimate CertifiedMeshPatchError(const std::vector<ConvexPolygon>& surf
 
 double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSet& primitives,
   const RootGrid& grid, const Box3& cell, const CellBoundary& boundary, const BoundaryLoopSet& loops,
-  double tolerance, std::vector<Vec3>& loopPoints)
+  double tolerance, std::vector<Vec3>& loopPoints, double& attained)
 {
   const CsgLeaf* leaf = LoneMeshLeaf(expression);
   if (!leaf || loops.LoopSizes.size() != 1 || !loops.Consistent || loops.Crossings.size() < 3)
@@ -356,10 +356,11 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
   {
     fan.push_back({ points[k], points[(k + 1) % m], apex });
   }
-  const double error =
-    CertifiedMeshPatchError(surface, fan, slack, tolerance - delta, tolerance - delta, PredictionBudget).Upper;
+  const HausdorffEstimate error =
+    CertifiedMeshPatchError(surface, fan, slack, tolerance - delta, tolerance - delta, PredictionBudget);
   loopPoints = points;
-  return error == HUGE_VAL ? HUGE_VAL : error + delta;
+  attained = error.Lower;
+  return error.Upper == HUGE_VAL ? HUGE_VAL : error.Upper + delta;
 }
 
 bool FinalLoopRefines(const std::vector<Vec3>& own, const std::vector<Vec3>& final, const Box3& cell)

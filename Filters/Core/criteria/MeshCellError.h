@@ -116,10 +116,12 @@ double RoundingSlack(const CsgLeaf& leaf, const PrimitiveSet& primitives, const 
 /// +inf when it exceeds `tolerance` or the cell is not a lone mesh leaf with
 /// one loop.
 /// `loop` receives the loop's points (what the final loop must hold in order
-/// for the prediction to apply, FinalLoopRefines).
+/// for the prediction to apply, FinalLoopRefines), `attained` the largest
+/// distance between the fan and the mesh the bound came upon (a lower bound
+/// of E(P)).
 double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSet& primitives,
   const RootGrid& grid, const Box3& cell, const CellBoundary& boundary, const BoundaryLoopSet& loops,
-  double tolerance, std::vector<Vec3>& loop);
+  double tolerance, std::vector<Vec3>& loop, double& attained);
 
 /// Whether the final loop `final` holds every point of the cell's own loop
 /// `own` in the same cyclic order (up to rounding): then each chord ab of

@@ -122,6 +122,9 @@ public:
   {
     double Bound = 0.0;
     std::vector<Vec3> Loop;
+    /// The largest distance between the fan over Loop and the mesh that the
+    /// prediction came upon.
+    double Attained = 0.0;
   };
   std::unordered_map<std::uint32_t, MeshCellPrediction> MeshCellPredictions;
 
