@@ -20,14 +20,19 @@ bool VerifyQuadricLeaf(
   {
     return false;
   }
-  Interval f = q.Enclose(box);
-  if (sigma < 0)
+  // (Negative at one corner and positive at another, the surface reaches
+  // the box: no enclosure can say otherwise.)
+  if (!q.ChangesSignOn(box))
   {
-    f = -f;
-  }
-  if (f.lo >= 0.0 || f.hi < 0.0)
-  {
-    return true; // this leaf's surface does not reach the box
+    Interval f = q.EncloseForSign(box);
+    if (sigma < 0)
+    {
+      f = -f;
+    }
+    if (f.lo >= 0.0 || f.hi < 0.0)
+    {
+      return true; // this leaf's surface does not reach the box
+    }
   }
   if (q.EncloseStarCondition(box, w, sigma).lo > 0.0)
   {

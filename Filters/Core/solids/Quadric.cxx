@@ -344,6 +344,91 @@ Interval Quadric::Enclose(const Box3& box) const
   return this->AsInterval().Enclose(box);
 }
 
+bool Quadric::ChangesSignOn(const Box3& box) const
+{
+  // f(p) in floating point is within gamma_12 < 1.4e-15 times the same form
+  // over absolute values of its exact value (at most 12 roundings along any
+  // path; Higham 3.1): 4e-14 of it is ample.
+  const auto& a = this->A;
+  bool negative = false, positive = false;
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const double x = corner & 1 ? box.hi[0] : box.lo[0], y = corner & 2 ? box.hi[1] : box.lo[1],
+                 z = corner & 4 ? box.hi[2] : box.lo[2];
+    const double f = (a[0] * x + a[3] * y + a[5] * z + a[6]) * x + (a[1] * y + a[4] * z + a[7]) * y +
+      (a[2] * z + a[8]) * z + a[9];
+    const double ax = std::fabs(x), ay = std::fabs(y), az = std::fabs(z);
+    const double error = 4e-14 *
+      ((std::fabs(a[0]) * ax + std::fabs(a[3]) * ay + std::fabs(a[5]) * az + std::fabs(a[6])) * ax +
+        (std::fabs(a[1]) * ay + std::fabs(a[4]) * az + std::fabs(a[7])) * ay +
+        (std::fabs(a[2]) * az + std::fabs(a[8])) * az + std::fabs(a[9]));
+    if (!std::isfinite(f) || !(error > 1e-280))
+    {
+      return false; // (near underflow the bound does not hold: not proven)
+    }
+    negative = negative || f < -error;
+    positive = positive || f > error;
+    if (negative && positive)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+Interval Quadric::EncloseForSign(const Box3& box) const
+{
+  // f(c + d) = f(c) + g.d + d'Qd over |d_i| <= r_i, c the box's centre (any
+  // point would do: r_i, rounded up, bounds |x_i - c_i| on the box), is
+  // within [F - T + Dn, F + T + Dp]: T = sum |g_i| r_i + sum_{i<j} |q_ij| r_i r_j,
+  // Dn (Dp) the negative (positive) diagonal terms q_ii r_i^2 - what the
+  // interval form gives for point coefficients. Computed in floating point,
+  // the bounds are sums and products of the coefficients, c and r with at
+  // most 20 roundings along any path, so each is within gamma_20 = 20u /
+  // (1 - 20u) < 2.3e-15 of its exact value times the same expression over
+  // absolute values, at most M (Higham, Accuracy and Stability of Numerical
+  // Algorithms, 3.1); 4e-14 M covers that and M's own rounding. Near
+  // underflow (subnormal roundings are absolute), or without finite values,
+  // the interval form decides. (It is the form Enclose tries first, whose
+  // outward roundings stay within gamma_20 M: a box decided here is decided
+  // alike there, and outputs do not change.)
+  const auto& a = this->A;
+  Vec3 c, r;
+  for (int i = 0; i < 3; ++i)
+  {
+    c[i] = 0.5 * (box.lo[i] + box.hi[i]);
+    r[i] = std::max(rounding::AddUp(c[i], -box.lo[i]), rounding::AddUp(box.hi[i], -c[i]));
+  }
+  const double x = c[0], y = c[1], z = c[2];
+  const double F = (a[0] * x + a[3] * y + a[5] * z + a[6]) * x + (a[1] * y + a[4] * z + a[7]) * y +
+    (a[2] * z + a[8]) * z + a[9];
+  const double ax = std::fabs(x), ay = std::fabs(y), az = std::fabs(z);
+  const double absF = (std::fabs(a[0]) * ax + std::fabs(a[3]) * ay + std::fabs(a[5]) * az + std::fabs(a[6])) * ax +
+    (std::fabs(a[1]) * ay + std::fabs(a[4]) * az + std::fabs(a[7])) * ay +
+    (std::fabs(a[2]) * az + std::fabs(a[8])) * az + std::fabs(a[9]);
+  const double g[3] = { 2.0 * a[0] * x + a[3] * y + a[5] * z + a[6], a[3] * x + 2.0 * a[1] * y + a[4] * z + a[7],
+    a[5] * x + a[4] * y + 2.0 * a[2] * z + a[8] };
+  const double absG[3] = { 2.0 * std::fabs(a[0]) * ax + std::fabs(a[3]) * ay + std::fabs(a[5]) * az + std::fabs(a[6]),
+    std::fabs(a[3]) * ax + 2.0 * std::fabs(a[1]) * ay + std::fabs(a[4]) * az + std::fabs(a[7]),
+    std::fabs(a[5]) * ax + std::fabs(a[4]) * ay + 2.0 * std::fabs(a[2]) * az + std::fabs(a[8]) };
+  const double cross =
+    std::fabs(a[3]) * r[0] * r[1] + std::fabs(a[4]) * r[1] * r[2] + std::fabs(a[5]) * r[0] * r[2];
+  double T = cross, Dn = 0.0, Dp = 0.0, M = absF + cross;
+  for (int i = 0; i < 3; ++i)
+  {
+    T += std::fabs(g[i]) * r[i];
+    M += absG[i] * r[i] + std::fabs(a[i]) * r[i] * r[i];
+    (a[i] < 0.0 ? Dn : Dp) += a[i] * r[i] * r[i];
+  }
+  const double error = 4e-14 * M;
+  const double lo = F - T + Dn - error, hi = F + T + Dp + error;
+  if (std::isfinite(lo) && std::isfinite(hi) && M > 1e-280 && (hi < 0.0 || lo > 0.0))
+  {
+    return { lo, hi };
+  }
+  return this->Enclose(box);
+}
+
 Interval Quadric::EncloseDerivative(const Box3& box, int axis) const
 {
   // df/dx_axis is affine: its exact range is reached at box corners, and the

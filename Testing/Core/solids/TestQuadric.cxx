@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 #include <random>
 
 using tpc::Box3;
@@ -106,6 +107,107 @@ TEST(Quadric, EnclosuresContainSampledValues)
     }
   }
   EXPECT_EQ(samples, quadrics.size() * 300 * 20);
+}
+
+TEST(Quadric, SignTestsAgreeWithTheEnclosureAndExactSigns)
+{
+  // EncloseForSign (floating point with a rounding bound, else Enclose) must
+  // hold every value where it excludes zero, and exclude zero wherever
+  // Enclose does; ChangesSignOn must be backed by the exact signs of two
+  // corners. Half the boxes are around a point of the zero set (a root
+  // along a random line), from 1e-3 down to 1e-14 wide or a single point,
+  // where both answers are contested; the others anywhere.
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const std::vector<Quadric> quadrics = TestQuadrics(rng);
+  std::size_t fastDecided = 0, changes = 0, excluded = 0;
+  for (const Quadric& q : quadrics)
+  {
+    for (int trial = 0; trial < 400; ++trial)
+    {
+      Box3 box = RandomBox(rng, trial % 3 == 0 ? 1.0 : trial % 3 == 1 ? 0.05 : 1e-7);
+      const Vec3 p = SampleIn(box, rng), d{ unit(rng), unit(rng), unit(rng) };
+      // f(p + t d) = A t^2 + B t + C.
+      const double C = q.Value(p), B = tpc::Dot(q.Gradient(p), d), A = q.Value(p + d) - B - C;
+      const double disc = B * B - 4.0 * A * C;
+      if (trial % 2 && disc >= 0.0 && std::fabs(A) > 1e-9)
+      {
+        const Vec3 root = p + d * ((-B + std::sqrt(disc)) / (2.0 * A));
+        // (A point, a quarter of them: its value there is rounding noise.)
+        const double h = trial % 4 == 1 ? 0.0 : std::pow(10.0, -3.0 - 11.0 * (0.5 + 0.5 * unit(rng)));
+        box = Box3{ root - Vec3(h, h, h), root + Vec3(h, 0.5 * h, 2.0 * h) };
+      }
+      const tpc::Interval slow = q.Enclose(box), sign = q.EncloseForSign(box);
+      const bool slowExcludes = slow.lo > 0.0 || slow.hi < 0.0;
+      if (slow.hi < 0.0 || slow.lo >= 0.0)
+      {
+        ASSERT_TRUE(sign.hi < 0.0 || sign.lo >= 0.0) << "Enclose decides, EncloseForSign must";
+        ASSERT_EQ(sign.hi < 0.0, slow.hi < 0.0);
+      }
+      excluded += slowExcludes ? 1 : 0;
+      if (sign.hi < 0.0 || sign.lo > 0.0)
+      {
+        fastDecided += sign.lo != slow.lo || sign.hi != slow.hi ? 1 : 0;
+        for (int s = 0; s < 20; ++s)
+        {
+          const Vec3 x = SampleIn(box, rng);
+          ASSERT_EQ(q.ExactSign(x), sign.hi < 0.0 ? -1 : 1) << "a value outside EncloseForSign";
+        }
+      }
+      if (q.ChangesSignOn(box))
+      {
+        ++changes;
+        bool negative = false, positive = false;
+        for (int corner = 0; corner < 8; ++corner)
+        {
+          const Vec3 c{ corner & 1 ? box.hi[0] : box.lo[0], corner & 2 ? box.hi[1] : box.lo[1],
+            corner & 4 ? box.hi[2] : box.lo[2] };
+          negative = negative || q.ExactSign(c) < 0;
+          positive = positive || q.ExactSign(c) > 0;
+        }
+        ASSERT_TRUE(negative && positive);
+        ASSERT_TRUE(slow.ContainsZero());
+      }
+    }
+  }
+  // Not vacuous: the fast path decides boxes and proves sign changes.
+  EXPECT_GT(fastDecided, 100u);
+  EXPECT_GT(changes, 500u);
+  EXPECT_GT(excluded, 100u);
+  std::cout << fastDecided << " boxes decided in floating point, " << changes << " sign changes\n";
+}
+
+TEST(Quadric, SignTestsLeaveExactZerosToTheIntervalForm)
+{
+  // A plane through lattice points: on a box with a face on it, f is 0 on
+  // that face and positive beyond. The interval form keeps that exactly
+  // ([0, ...]: outside, as the pruning reads it); the floating-point test
+  // proves no strict sign and must leave it to the interval form.
+  const Quadric plane = Quadric::Plane({ 0.25, 0.0, 0.0 }, { 1.0, 0.0, 0.0 });
+  const Box3 beyond{ { 0.25, -0.5, -0.5 }, { 0.75, 0.5, 0.5 } };
+  EXPECT_FALSE(plane.ChangesSignOn(beyond));
+  const tpc::Interval v = plane.EncloseForSign(beyond);
+  EXPECT_EQ(v.lo, 0.0);
+  EXPECT_GT(v.hi, 0.0);
+  const Box3 across{ { 0.0, -0.5, -0.5 }, { 0.75, 0.5, 0.5 } };
+  EXPECT_TRUE(plane.ChangesSignOn(across));
+  // Tilted planes through a box's lowest corner, the box on their positive
+  // side: f's least value there is 0, so no strict sign may be claimed,
+  // however the rounding of the centred form falls.
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0.1, 1.0);
+  for (int i = 0; i < 200; ++i)
+  {
+    const Vec3 corner{ u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5 };
+    const Quadric tilted = Quadric::Plane(corner, { u(rng), u(rng), u(rng) });
+    const Box3 box{ corner, corner + Vec3(u(rng), u(rng), u(rng)) };
+    if (tilted.ExactSign(corner) != 0)
+    {
+      continue; // (the plane's rounded coefficients miss the corner)
+    }
+    EXPECT_LE(tilted.EncloseForSign(box).lo, 0.0) << i;
+    EXPECT_FALSE(tilted.ChangesSignOn(box)) << i;
+  }
 }
 
 TEST(Quadric, CentredFormIsTightOnSmallBoxes)
