@@ -84,22 +84,46 @@ void TileSegments(const std::vector<FacePoint>& poly, int axis, LatticeIndex pla
   }
 }
 
-void FaceSegments(const CellBoundary& b, int f, std::vector<Segment>& segments)
+/// Scratch of one thread's traces (a cell's tests trace its loops several
+/// times; fresh vectors each time were a tenth of the tracing).
+struct TraceScratch
 {
-  const int axis = f / 2, side = f % 2;
-  const int U = (axis + 1) % 3, V = (axis + 2) % 3;
-  const LatticeIndex plane = b.Base[axis] + (side ? b.Size : 0);
-  std::vector<FacePoint> byV;
+  std::vector<FacePoint> OnFace[6];
+  std::vector<FacePoint> ByU, Polygon;
+};
+
+/// The boundary's sample points on each face, in (u, v) of its plane.
+void PointsByFace(const CellBoundary& b, TraceScratch& scratch)
+{
+  for (std::vector<FacePoint>& face : scratch.OnFace)
+  {
+    face.clear();
+  }
   for (const auto& pk : b.Points)
   {
     LatticeIndex p[3];
     SplitPointKey(pk.first, p);
-    if (p[axis] == plane)
+    for (int axis = 0; axis < 3; ++axis)
     {
-      byV.push_back({ p[U], p[V], pk.second });
+      const int U = (axis + 1) % 3, V = (axis + 2) % 3;
+      for (int side = 0; side < 2; ++side)
+      {
+        if (p[axis] == b.Base[axis] + (side ? b.Size : 0))
+        {
+          scratch.OnFace[2 * axis + side].push_back({ p[U], p[V], pk.second });
+        }
+      }
     }
   }
-  std::vector<FacePoint> byU = byV;
+}
+
+void FaceSegments(const CellBoundary& b, int f, TraceScratch& scratch, std::vector<Segment>& segments)
+{
+  const int axis = f / 2, side = f % 2;
+  const LatticeIndex plane = b.Base[axis] + (side ? b.Size : 0);
+  std::vector<FacePoint>& byV = scratch.OnFace[f];
+  std::vector<FacePoint>& byU = scratch.ByU;
+  byU.assign(byV.begin(), byV.end());
   std::sort(byV.begin(), byV.end(), ByVU);
   std::sort(byU.begin(), byU.end(), ByUV);
   auto row = [&](LatticeIndex v, LatticeIndex ua, LatticeIndex ub) { // u in [ua, ub)
@@ -113,7 +137,7 @@ void FaceSegments(const CellBoundary& b, int f, std::vector<Segment>& segments)
     return std::make_pair(lo, hi);
   };
 
-  std::vector<FacePoint> polygon;
+  std::vector<FacePoint>& polygon = scratch.Polygon;
   for (std::size_t k = 0; k < b.Tiles[f].size(); ++k)
   {
     if (k < b.ExactTile[f].size() && b.ExactTile[f][k])
@@ -205,13 +229,17 @@ BoundaryLoopSet TraceBoundaryLoops(CellBoundary& b)
   b.Points.erase(std::unique(b.Points.begin(), b.Points.end(),
                    [](const auto& x, const auto& y) { return x.first == y.first; }),
     b.Points.end());
-  std::vector<Segment> segments = b.ExactSegments;
+  thread_local TraceScratch scratch;
+  thread_local std::vector<Segment> segments;
+  segments.assign(b.ExactSegments.begin(), b.ExactSegments.end());
+  PointsByFace(b, scratch);
   for (int f = 0; f < 6; ++f)
   {
-    FaceSegments(b, f, segments);
+    FaceSegments(b, f, scratch, segments);
   }
 
   BoundaryLoopSet loops;
+  loops.Crossings.reserve(segments.size());
   std::sort(segments.begin(), segments.end(),
     [](const Segment& x, const Segment& y) { return x.first < y.first; });
   for (std::size_t s = 1; s < segments.size(); ++s)
