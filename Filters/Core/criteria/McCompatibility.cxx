@@ -165,7 +165,7 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   {
     // (A crease cell only when larger than the tolerance: it needs its own
     // patch checked, below, where a smaller cell is bounded by its size.)
-    quadric = BoundQuadricCell(expression, tree.NearExpression(n), prims, box, tolerance, v.Oversized);
+    quadric = BoundQuadricCell(expression, tree.NearExpression(n, tolerance), prims, box, tolerance, v.Oversized);
     v.PredictedError = quadric ? PredictedCellError(*quadric) : HUGE_VAL;
     // (A crease cell without a crease point well inside has no fan to
     // check: it splits before the costlier tests.)

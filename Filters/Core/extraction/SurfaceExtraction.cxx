@@ -141,7 +141,9 @@ constexpr std::size_t FirstCertificateBudget = 256;
 /// first pieces; going on here costs less (armadillo at 1/128: 9.17 G ->
 /// 8.86 G instructions with a fixed 0.6 of the tolerance, which at 1/64 was
 /// above what the refinement asked for). A quarter of the tolerance at least;
-/// 0.6 of it without predictions.
+/// 0.6 of it without predictions. (A piece of a split run sees its own trees'
+/// and its ghosts' predictions: its certificates may stop at another aim than
+/// one run's would, each a proven bound all the same.)
 double FirstCertificateAim(const AdaptiveOctree& tree)
 {
   double attained = 0.0;
@@ -151,7 +153,7 @@ double FirstCertificateAim(const AdaptiveOctree& tree)
   }
   const double tolerance = tree.HausdorffTolerance;
   return tree.MeshCellPredictions.empty() ? 0.6 * tolerance
-                                          : std::clamp(1.1 * attained, 0.25 * tolerance, tolerance);
+                                          : std::min(std::max(1.1 * attained, 0.25 * tolerance), tolerance);
 }
 
 /// S in leaf `n`, which is one mesh's (MeshCellError.h).
@@ -230,7 +232,8 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
   // (A crease cell was accepted with the fan around its crease apex in mind,
   // QuadricCellError.h; that fan is drawn over the final loop.)
   const std::optional<QuadricCellError> quadric = bounded
-    ? BoundQuadricCell(tree.Expressions[n], tree.NearExpression(n), prims, box, tree.HausdorffTolerance, true)
+    ? BoundQuadricCell(tree.Expressions[n], tree.NearExpression(n, tree.HausdorffTolerance), prims, box,
+        tree.HausdorffTolerance, true)
     : std::nullopt;
   const std::optional<Vec3> creaseApex = quadric && quadric->Crease ? CreaseApex(*quadric, prims) : std::nullopt;
   TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches, quadric ? &*quadric : nullptr,

@@ -101,14 +101,19 @@ public:
   /// such node's cell grown by the tolerance (GrownByMargin,
   /// QuadricCellError.h), each from its parent's (a child's grown cell lies
   /// in its parent's); empty for scenes with meshes, whose bounds look no
-  /// further than the cell's own expression.
+  /// further than the cell's own expression. It equals the scene's on the
+  /// grown cell, but may hold fewer leaves than pruning the scene there
+  /// directly: an enclosure on a parent's box may prove a sign that one on
+  /// the child's does not.
   std::vector<CsgExpressionPtr> NearExpressions;
-  /// What the certified bounds of node n look at beyond its cell: its
-  /// NearExpressions entry, else the scene's whole expression.
-  const CsgExpressionPtr& NearExpression(std::size_t n) const
+  /// An expression equal to the scene's on node n's cell grown by `margin`:
+  /// its NearExpressions entry for a margin up to the tolerance, else the
+  /// scene's whole expression.
+  const CsgExpressionPtr& NearExpression(std::size_t n, double margin) const
   {
-    return n < this->NearExpressions.size() && this->NearExpressions[n] ? this->NearExpressions[n]
-                                                                         : this->SceneExpression;
+    return margin <= this->HausdorffTolerance && n < this->NearExpressions.size() && this->NearExpressions[n]
+      ? this->NearExpressions[n]
+      : this->SceneExpression;
   }
   /// Exact inside/outside at lattice corners of cells that met the surface.
   LatticeSignTable Signs;

@@ -344,12 +344,30 @@ Interval Quadric::Enclose(const Box3& box) const
   return this->AsInterval().Enclose(box);
 }
 
+namespace
+{
+/// Where the floating-point sign tests below may be trusted: the relative
+/// rounding bound holds while no rounding is subnormal, and a subnormal
+/// rounding (absolute, below 2.5e-324) scaled by at most two factors of
+/// magnitude 1e30 stays under 4e-14 of any M above 1e-200. Coordinates,
+/// radii or M outside that: the interval forms decide.
+constexpr double LargestTrustedCoordinate = 1e30;
+constexpr double SmallestTrustedMagnitude = 1e-200;
+} // namespace
+
 bool Quadric::ChangesSignOn(const Box3& box) const
 {
   // f(p) in floating point is within gamma_12 < 1.4e-15 times the same form
   // over absolute values of its exact value (at most 12 roundings along any
   // path; Higham 3.1): 4e-14 of it is ample.
   const auto& a = this->A;
+  for (int i = 0; i < 3; ++i)
+  {
+    if (!(std::fabs(box.lo[i]) <= LargestTrustedCoordinate && std::fabs(box.hi[i]) <= LargestTrustedCoordinate))
+    {
+      return false;
+    }
+  }
   bool negative = false, positive = false;
   for (int corner = 0; corner < 8; ++corner)
   {
@@ -362,9 +380,9 @@ bool Quadric::ChangesSignOn(const Box3& box) const
       ((std::fabs(a[0]) * ax + std::fabs(a[3]) * ay + std::fabs(a[5]) * az + std::fabs(a[6])) * ax +
         (std::fabs(a[1]) * ay + std::fabs(a[4]) * az + std::fabs(a[7])) * ay +
         (std::fabs(a[2]) * az + std::fabs(a[8])) * az + std::fabs(a[9]));
-    if (!std::isfinite(f) || !(error > 1e-280))
+    if (!std::isfinite(f) || !(error > 4e-14 * SmallestTrustedMagnitude))
     {
-      return false; // (near underflow the bound does not hold: not proven)
+      continue; // (this corner's sign is not proven: near underflow)
     }
     negative = negative || f < -error;
     positive = positive || f > error;
@@ -388,8 +406,8 @@ Interval Quadric::EncloseForSign(const Box3& box) const
   // (1 - 20u) < 2.3e-15 of its exact value times the same expression over
   // absolute values, at most M (Higham, Accuracy and Stability of Numerical
   // Algorithms, 3.1); 4e-14 M covers that and M's own rounding. Near
-  // underflow (subnormal roundings are absolute), or without finite values,
-  // the interval form decides. (It is the form Enclose tries first, whose
+  // underflow (subnormal roundings are absolute: LargestTrustedCoordinate),
+  // or without finite values, the interval form decides. (It is the form Enclose tries first, whose
   // outward roundings stay within gamma_20 M: a box decided here is decided
   // alike there, and outputs do not change.)
   const auto& a = this->A;
@@ -422,7 +440,9 @@ Interval Quadric::EncloseForSign(const Box3& box) const
   }
   const double error = 4e-14 * M;
   const double lo = F - T + Dn - error, hi = F + T + Dp + error;
-  if (std::isfinite(lo) && std::isfinite(hi) && M > 1e-280 && (hi < 0.0 || lo > 0.0))
+  const double largest = std::max({ std::fabs(x), std::fabs(y), std::fabs(z), r[0], r[1], r[2] });
+  if (std::isfinite(lo) && std::isfinite(hi) && M > SmallestTrustedMagnitude &&
+    largest <= LargestTrustedCoordinate && (hi < 0.0 || lo > 0.0))
   {
     return { lo, hi };
   }

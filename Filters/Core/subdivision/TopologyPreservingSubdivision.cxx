@@ -386,7 +386,8 @@ bool LevelByLevel::MakeChildren(const std::vector<std::uint32_t>& parents)
               if (near)
               {
                 tree.NearExpressions[ci] =
-                  this->NearExpressionOf(tree.NearExpression(parents[i]), level + 1, child.Ijk);
+                  this->NearExpressionOf(tree.NearExpression(parents[i], this->Parameters.HausdorffTolerance),
+                    level + 1, child.Ijk);
               }
             }
           }

@@ -193,21 +193,36 @@ TEST(Quadric, SignTestsLeaveExactZerosToTheIntervalForm)
   EXPECT_TRUE(plane.ChangesSignOn(across));
   // Tilted planes through a box's lowest corner, the box on their positive
   // side: f's least value there is 0, so no strict sign may be claimed,
-  // however the rounding of the centred form falls.
+  // however the rounding of the centred form falls. (Dyadic corners and
+  // normals: the plane's coefficients are exact, and so is its zero there.)
   std::mt19937_64 rng(11);
-  std::uniform_real_distribution<double> u(0.1, 1.0);
+  std::uniform_int_distribution<int> k(1, 255);
+  const auto dyadic = [&] { return std::ldexp(static_cast<double>(k(rng)), -8); };
+  int kept = 0;
   for (int i = 0; i < 200; ++i)
   {
-    const Vec3 corner{ u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5 };
-    const Quadric tilted = Quadric::Plane(corner, { u(rng), u(rng), u(rng) });
-    const Box3 box{ corner, corner + Vec3(u(rng), u(rng), u(rng)) };
-    if (tilted.ExactSign(corner) != 0)
-    {
-      continue; // (the plane's rounded coefficients miss the corner)
-    }
+    const Vec3 corner{ dyadic() - 0.5, dyadic() - 0.5, dyadic() - 0.5 };
+    const Quadric tilted = Quadric::Plane(corner, { dyadic(), dyadic(), dyadic() });
+    const Box3 box{ corner, corner + Vec3(dyadic(), dyadic(), dyadic()) };
+    ASSERT_EQ(tilted.ExactSign(corner), 0) << i;
     EXPECT_LE(tilted.EncloseForSign(box).lo, 0.0) << i;
     EXPECT_FALSE(tilted.ChangesSignOn(box)) << i;
+    kept += 1;
   }
+  EXPECT_EQ(kept, 200);
+}
+
+TEST(Quadric, SignTestsLeaveHugeCoordinatesToTheIntervalForm)
+{
+  // 1.5 x y - 0.9 * 2^-73 at the point (2^1000, 2^-1074): x y = 2^-74, so f is
+  // negative there; in floating point 1.5 y rounds to a subnormal whose error,
+  // scaled by x, is far beyond any relative bound (a reviewer's case).
+  const Quadric q({ 0, 0, 0, 1.5, 0, 0, 0, 0, 0, -0.9 * std::ldexp(1.0, -73) });
+  const Vec3 p{ std::ldexp(1.0, 1000), std::ldexp(1.0, -1074), 0.0 };
+  ASSERT_EQ(q.ExactSign(p), -1);
+  const tpc::Interval v = q.EncloseForSign(Box3{ p, p });
+  EXPECT_FALSE(v.lo > 0.0) << v.lo;
+  EXPECT_FALSE(q.ChangesSignOn(Box3{ p, p }));
 }
 
 TEST(Quadric, CentredFormIsTightOnSmallBoxes)

@@ -348,7 +348,7 @@ TEST(Subdivision, NoNearExpressionsWhereTheSceneHasAMesh)
   const ContourRun r = Contour(b.Scene, { { -0.5, -0.5, -0.5 }, { 0.5, 0.5, 0.5 } }, 1.0 / 16);
   EXPECT_TRUE(r.Contoured);
   EXPECT_TRUE(r.Subdivision.Octree.NearExpressions.empty());
-  EXPECT_EQ(r.Subdivision.Octree.NearExpression(0), r.Subdivision.Octree.SceneExpression);
+  EXPECT_EQ(r.Subdivision.Octree.NearExpression(0, r.Tolerance), r.Subdivision.Octree.SceneExpression);
 }
 
 TEST(Subdivision, LatticePlacementsDifferAndAllCoverTheDomain)
