@@ -71,11 +71,12 @@ std::optional<CreaseTile> CreaseOnTile(const CsgLeaf& leaf, const PrimitiveSet& 
 
 /// Marks the crease tiles of every face of `boundary` (a cell of the mesh of
 /// `leaf`) in boundary.Creases, where `draws(f, k)` says that tile k of face
-/// f may be drawn so (both cells sharing it agree).
+/// f may be drawn so (both cells sharing it agree); whether it marked any.
 template <typename Draws>
-void MarkCreaseTiles(CellBoundary& boundary, const CsgLeaf& leaf, const PrimitiveSet& primitives,
+bool MarkCreaseTiles(CellBoundary& boundary, const CsgLeaf& leaf, const PrimitiveSet& primitives,
   const RootGrid& grid, const Draws& draws)
 {
+  bool marked = false;
   for (int f = 0; f < 6; ++f)
   {
     const int axis = f / 2;
@@ -88,10 +89,12 @@ void MarkCreaseTiles(CellBoundary& boundary, const CsgLeaf& leaf, const Primitiv
         if (const auto crease = CreaseOnTile(leaf, primitives, grid, axis, plane, boundary.Tiles[f][k]))
         {
           boundary.Creases[f][k] = crease->X;
+          marked = true;
         }
       }
     }
   }
+  return marked;
 }
 
 } // namespace tpc

@@ -65,23 +65,6 @@ bool TileFaces(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& 
   return true;
 }
 
-/// Whether a tile of `boundary` is drawn through a crease (else its loops
-/// are those traced before the creases were marked).
-bool HasCreaseTile(const CellBoundary& boundary)
-{
-  for (int f = 0; f < 6; ++f)
-  {
-    for (const std::optional<Crossing>& x : boundary.Creases[f])
-    {
-      if (x)
-      {
-        return true;
-      }
-    }
-  }
-  return false;
-}
-
 /// Whether a crease cell's patch will be made of sectors, each on one leaf
 /// (QuadricCellError.h: In a crease cell), as the prediction assumes: its
 /// loop, drawn as the extraction draws it (CSG crease tiles through the
@@ -214,12 +197,9 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     // same mesh, and the decision is the same for a tile and its sub-tiles),
     // so the loop the prediction starts from may too: the final loop follows
     // the same halves of the trace there.
-    bool creases = false;
-    if (IsOneMesh(*tree.SceneExpression))
-    {
+    // (Without a crease tile the loops are those traced above.)
+    const bool creases = IsOneMesh(*tree.SceneExpression) &&
       MarkCreaseTiles(boundary, *LoneMeshLeaf(*expression), prims, grid, [](int, std::size_t) { return true; });
-      creases = HasCreaseTile(boundary);
-    }
     v.PredictedError = PredictedMeshCellError(*expression, prims, grid, box, boundary,
       creases ? TraceBoundaryLoops(boundary) : loops, tolerance, v.PredictedLoop, v.PredictedAttained);
     v.ErrorBounded = v.MeshSurface = v.PredictedError <= tolerance;

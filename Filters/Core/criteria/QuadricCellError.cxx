@@ -218,8 +218,7 @@ bool NoCommonZero(const std::vector<Quadric>& fields, const Box3& box, int depth
   int holdingZero = 0;
   for (const Quadric& f : fields)
   {
-    // (A sign change between corners holds zero: no enclosure needed.)
-    holdingZero += f.ChangesSignOn(box) || f.Enclose(box).ContainsZero() ? 1 : 0;
+    holdingZero += f.EncloseForSign(box).ContainsZero() ? 1 : 0;
   }
   if (holdingZero <= 1)
   {
@@ -364,8 +363,7 @@ std::optional<QuadricCellError> BoundQuadricCell(const CsgExpressionPtr& cellExp
     unsigned onFace = all;
     if (bound.Fields.size() == 1)
     {
-      const Quadric& field = bound.Fields[0];
-      onFace = field.ChangesSignOn(rectangle) || field.Enclose(rectangle).ContainsZero() ? 1u : 0u;
+      onFace = bound.Fields[0].EncloseForSign(rectangle).ContainsZero() ? 1u : 0u;
     }
     else
     {

@@ -20,19 +20,14 @@ bool VerifyQuadricLeaf(
   {
     return false;
   }
-  // (Negative at one corner and positive at another, the surface reaches
-  // the box: no enclosure can say otherwise.)
-  if (!q.ChangesSignOn(box))
+  Interval f = q.EncloseForSign(box);
+  if (sigma < 0)
   {
-    Interval f = q.EncloseForSign(box);
-    if (sigma < 0)
-    {
-      f = -f;
-    }
-    if (f.lo >= 0.0 || f.hi < 0.0)
-    {
-      return true; // this leaf's surface does not reach the box
-    }
+    f = -f;
+  }
+  if (f.lo >= 0.0 || f.hi < 0.0)
+  {
+    return true; // this leaf's surface does not reach the box
   }
   if (q.EncloseStarCondition(box, w, sigma).lo > 0.0)
   {

@@ -248,14 +248,7 @@ RegionSign LeafOverBox(const CsgLeaf& leaf, const Box3& box, const PrimitiveSet&
 {
   if (leaf.Kind == PrimitiveKind::Quadric)
   {
-    // (A leaf negative at one corner and positive at another is mixed
-    // whatever an enclosure says: its interval forms are not worth computing.)
-    const Quadric& q = prims.Quadrics[leaf.Primitive];
-    if (q.ChangesSignOn(box))
-    {
-      return RegionSign::Mixed;
-    }
-    Interval v = q.EncloseForSign(box);
+    Interval v = prims.Quadrics[leaf.Primitive].EncloseForSign(box);
     if (leaf.Sigma < 0)
     {
       v = -v;

@@ -353,14 +353,26 @@ namespace
 /// radii or M outside that: the interval forms decide.
 constexpr double LargestTrustedCoordinate = 1e30;
 constexpr double SmallestTrustedMagnitude = 1e-200;
+
+/// f(x, y, z) in floating point, and in `magnitude` the same form over the
+/// absolute values of the coefficients and coordinates: the computed f is
+/// within gamma_12 < 1.4e-15 times it of the exact value (at most 12
+/// roundings along any path; Higham, Accuracy and Stability of Numerical
+/// Algorithms, 3.1), while no rounding is subnormal.
+double ValueAndMagnitude(const std::array<double, 10>& a, double x, double y, double z, double& magnitude)
+{
+  const double ax = std::fabs(x), ay = std::fabs(y), az = std::fabs(z);
+  magnitude = (std::fabs(a[0]) * ax + std::fabs(a[3]) * ay + std::fabs(a[5]) * az + std::fabs(a[6])) * ax +
+    (std::fabs(a[1]) * ay + std::fabs(a[4]) * az + std::fabs(a[7])) * ay +
+    (std::fabs(a[2]) * az + std::fabs(a[8])) * az + std::fabs(a[9]);
+  return (a[0] * x + a[3] * y + a[5] * z + a[6]) * x + (a[1] * y + a[4] * z + a[7]) * y + (a[2] * z + a[8]) * z +
+    a[9];
+}
 } // namespace
 
 bool Quadric::ChangesSignOn(const Box3& box) const
 {
-  // f(p) in floating point is within gamma_12 < 1.4e-15 times the same form
-  // over absolute values of its exact value (at most 12 roundings along any
-  // path; Higham 3.1): 4e-14 of it is ample.
-  const auto& a = this->A;
+  // (4e-14 of the magnitude is ample over gamma_12, ValueAndMagnitude.)
   for (int i = 0; i < 3; ++i)
   {
     if (!(std::fabs(box.lo[i]) <= LargestTrustedCoordinate && std::fabs(box.hi[i]) <= LargestTrustedCoordinate))
@@ -371,16 +383,11 @@ bool Quadric::ChangesSignOn(const Box3& box) const
   bool negative = false, positive = false;
   for (int corner = 0; corner < 8; ++corner)
   {
-    const double x = corner & 1 ? box.hi[0] : box.lo[0], y = corner & 2 ? box.hi[1] : box.lo[1],
-                 z = corner & 4 ? box.hi[2] : box.lo[2];
-    const double f = (a[0] * x + a[3] * y + a[5] * z + a[6]) * x + (a[1] * y + a[4] * z + a[7]) * y +
-      (a[2] * z + a[8]) * z + a[9];
-    const double ax = std::fabs(x), ay = std::fabs(y), az = std::fabs(z);
-    const double error = 4e-14 *
-      ((std::fabs(a[0]) * ax + std::fabs(a[3]) * ay + std::fabs(a[5]) * az + std::fabs(a[6])) * ax +
-        (std::fabs(a[1]) * ay + std::fabs(a[4]) * az + std::fabs(a[7])) * ay +
-        (std::fabs(a[2]) * az + std::fabs(a[8])) * az + std::fabs(a[9]));
-    if (!std::isfinite(f) || !(error > 4e-14 * SmallestTrustedMagnitude))
+    double magnitude = 0.0;
+    const double f = ValueAndMagnitude(this->A, corner & 1 ? box.hi[0] : box.lo[0],
+      corner & 2 ? box.hi[1] : box.lo[1], corner & 4 ? box.hi[2] : box.lo[2], magnitude);
+    const double error = 4e-14 * magnitude;
+    if (!std::isfinite(f) || !(magnitude > SmallestTrustedMagnitude))
     {
       continue; // (this corner's sign is not proven: near underflow)
     }
@@ -396,6 +403,12 @@ bool Quadric::ChangesSignOn(const Box3& box) const
 
 Interval Quadric::EncloseForSign(const Box3& box) const
 {
+  // A sign change between two corners: the whole line encloses f as well as
+  // anything would, and says what any enclosure must (it holds zero).
+  if (this->ChangesSignOn(box))
+  {
+    return { -HUGE_VAL, HUGE_VAL };
+  }
   // f(c + d) = f(c) + g.d + d'Qd over |d_i| <= r_i, c the box's centre (any
   // point would do: r_i, rounded up, bounds |x_i - c_i| on the box), is
   // within [F - T + Dn, F + T + Dp]: T = sum |g_i| r_i + sum_{i<j} |q_ij| r_i r_j,
@@ -404,12 +417,12 @@ Interval Quadric::EncloseForSign(const Box3& box) const
   // the bounds are sums and products of the coefficients, c and r with at
   // most 20 roundings along any path, so each is within gamma_20 = 20u /
   // (1 - 20u) < 2.3e-15 of its exact value times the same expression over
-  // absolute values, at most M (Higham, Accuracy and Stability of Numerical
-  // Algorithms, 3.1); 4e-14 M covers that and M's own rounding. Near
-  // underflow (subnormal roundings are absolute: LargestTrustedCoordinate),
-  // or without finite values, the interval form decides. (It is the form Enclose tries first, whose
-  // outward roundings stay within gamma_20 M: a box decided here is decided
-  // alike there, and outputs do not change.)
+  // absolute values, at most M (Higham 3.1); 4e-14 M covers that and M's own
+  // rounding. Near underflow (subnormal roundings are absolute:
+  // LargestTrustedCoordinate), or without finite values, the interval form
+  // decides. (It is the form Enclose tries first, whose outward roundings
+  // stay within gamma_20 M: a box decided here is decided alike there, and
+  // outputs do not change.)
   const auto& a = this->A;
   Vec3 c, r;
   for (int i = 0; i < 3; ++i)
@@ -418,12 +431,9 @@ Interval Quadric::EncloseForSign(const Box3& box) const
     r[i] = std::max(rounding::AddUp(c[i], -box.lo[i]), rounding::AddUp(box.hi[i], -c[i]));
   }
   const double x = c[0], y = c[1], z = c[2];
-  const double F = (a[0] * x + a[3] * y + a[5] * z + a[6]) * x + (a[1] * y + a[4] * z + a[7]) * y +
-    (a[2] * z + a[8]) * z + a[9];
+  double absF = 0.0;
+  const double F = ValueAndMagnitude(a, x, y, z, absF);
   const double ax = std::fabs(x), ay = std::fabs(y), az = std::fabs(z);
-  const double absF = (std::fabs(a[0]) * ax + std::fabs(a[3]) * ay + std::fabs(a[5]) * az + std::fabs(a[6])) * ax +
-    (std::fabs(a[1]) * ay + std::fabs(a[4]) * az + std::fabs(a[7])) * ay +
-    (std::fabs(a[2]) * az + std::fabs(a[8])) * az + std::fabs(a[9]);
   const double g[3] = { 2.0 * a[0] * x + a[3] * y + a[5] * z + a[6], a[3] * x + 2.0 * a[1] * y + a[4] * z + a[7],
     a[5] * x + a[4] * y + 2.0 * a[2] * z + a[8] };
   const double absG[3] = { 2.0 * std::fabs(a[0]) * ax + std::fabs(a[3]) * ay + std::fabs(a[5]) * az + std::fabs(a[6]),
@@ -440,7 +450,7 @@ Interval Quadric::EncloseForSign(const Box3& box) const
   }
   const double error = 4e-14 * M;
   const double lo = F - T + Dn - error, hi = F + T + Dp + error;
-  const double largest = std::max({ std::fabs(x), std::fabs(y), std::fabs(z), r[0], r[1], r[2] });
+  const double largest = std::max({ ax, ay, az, r[0], r[1], r[2] });
   if (std::isfinite(lo) && std::isfinite(hi) && M > SmallestTrustedMagnitude &&
     largest <= LargestTrustedCoordinate && (hi < 0.0 || lo > 0.0))
   {

@@ -79,10 +79,12 @@ public:
   int ExactSign(const Vec3& p) const;
 
   Interval Enclose(const Box3& box) const;
-  /// An enclosure of f on the closed box for deciding its sign: the centred
+  /// An enclosure of f on the closed box for deciding its sign: the whole
+  /// line where f changes sign between corners (ChangesSignOn); the centred
   /// form in floating point, with a bound of its rounding errors, where that
-  /// excludes zero (most boxes, at a fraction of the interval arithmetic's
-  /// cost); else Enclose. So it excludes zero wherever Enclose does.
+  /// excludes zero (most other boxes, at a fraction of the interval
+  /// arithmetic's cost); else Enclose. So it excludes zero wherever Enclose
+  /// does.
   Interval EncloseForSign(const Box3& box) const;
   /// Whether f is provably negative at one corner of the closed box and
   /// positive at another (floating point with a bound of its rounding
