@@ -4,7 +4,7 @@
 //
 //   tpc_benchmark --method tpc|vtk|vdb --scene NAME --epsilon E --threads N
 //                 --meshes DIR [--cell-size H] [--max-depth D] [--max-cells N] [--abort-at P]
-//                 [--fingerprint 1] [--adaptivity A]
+//                 [--fingerprint 1|geometry] [--adaptivity A]
 //
 // tpc: vtkTopologyPreservingContour, epsilon relative to the diagonal of
 //      the scene's domain (Bounds set to it);
@@ -18,7 +18,9 @@
 // H is the edge of the filter's surface cells at epsilon (the driver passes
 // it), so all three resolve the surface at the same finest cell size.
 // With --fingerprint 1 the filter's run also prints a hash of everything it
-// output (run_benchmark.py --compare: the same output from two builds).
+// output (run_benchmark.py --compare: the same output from two builds); with
+// --fingerprint geometry, of the surface's points and triangles and the
+// grid's trees only (a change that moves only certified errors keeps it).
 // With --measure 1 on a scene of one mesh, the output's two-sided Hausdorff
 // distance to it, by CGAL (a test oracle; the sphere's is always measured).
 #include "BenchmarkScenes.h"
@@ -225,24 +227,30 @@ struct Fnv1a
 
 /// Everything the filter output: the surface's points, triangles, point,
 /// cell and field data; the grid's trees (vertices and levels of each), cell
-/// and field data.
-std::string Fingerprint(vtkPolyData* surface, vtkHyperTreeGrid* grid)
+/// and field data. With `geometryOnly`, the points, triangles and trees.
+std::string Fingerprint(vtkPolyData* surface, vtkHyperTreeGrid* grid, bool geometryOnly)
 {
   Fnv1a h;
   h.AddArray(surface->GetPoints()->GetData());
   h.AddArray(surface->GetPolys()->GetOffsetsArray());
   h.AddArray(surface->GetPolys()->GetConnectivityArray());
-  h.AddArrays(surface->GetPointData());
-  h.AddArrays(surface->GetCellData());
-  h.AddArrays(surface->GetFieldData());
+  if (!geometryOnly)
+  {
+    h.AddArrays(surface->GetPointData());
+    h.AddArrays(surface->GetCellData());
+    h.AddArrays(surface->GetFieldData());
+  }
   for (vtkIdType t = 0; t < grid->GetMaxNumberOfTrees(); ++t)
   {
     vtkHyperTree* tree = grid->GetTree(t);
     h.AddValue(tree ? tree->GetNumberOfVertices() : vtkIdType(-1));
     h.AddValue(tree ? tree->GetNumberOfLevels() : 0u);
   }
-  h.AddArrays(grid->GetCellData());
-  h.AddArrays(grid->GetFieldData());
+  if (!geometryOnly)
+  {
+    h.AddArrays(grid->GetCellData());
+    h.AddArrays(grid->GetFieldData());
+  }
   char text[17];
   std::snprintf(text, sizeof(text), "%016llx", static_cast<unsigned long long>(h.Hash));
   return text;
@@ -321,7 +329,7 @@ double Diagonal(const std::array<double, 6>& b)
 }
 
 RunResult RunFilter(const tpcbench::Scene& scene, double epsilon, int maximumDepth, long long maximumCells,
-  double abortAt, bool fingerprint)
+  double abortAt, const std::string& fingerprint)
 {
   vtkNew<vtkTopologyPreservingContour> filter;
   ProgressWatch watch;
@@ -392,9 +400,9 @@ RunResult RunFilter(const tpcbench::Scene& scene, double epsilon, int maximumDep
   const double rootSize = grid->GetXCoordinates()->GetTuple1(1) - grid->GetXCoordinates()->GetTuple1(0);
   r.SurfaceCellSize = std::ldexp(rootSize, -static_cast<int>(std::ceil(std::log2(rootSize * std::sqrt(3.0) / tolerance) - 1e-9)));
   r.PlanarCells = static_cast<long>(fd->GetArray("PlanarCells")->GetTuple1(0));
-  if (fingerprint)
+  if (!fingerprint.empty())
   {
-    r.Fingerprint = Fingerprint(surface, grid);
+    r.Fingerprint = Fingerprint(surface, grid, fingerprint == "geometry");
   }
   return r;
 }
@@ -540,7 +548,7 @@ int main(int argc, char* argv[])
     if (!args.count(required))
     {
       std::cerr << "usage: tpc_benchmark --method tpc|vtk|vdb --scene NAME --epsilon E --threads N "
-                   "--meshes DIR [--cell-size H] [--max-depth D] [--max-cells N] [--abort-at P] [--fingerprint 1] [--adaptivity A] [--measure 1]\n";
+                   "--meshes DIR [--cell-size H] [--max-depth D] [--max-cells N] [--abort-at P] [--fingerprint 1|geometry] [--adaptivity A] [--measure 1]\n";
       return 1;
     }
   }
@@ -561,7 +569,7 @@ int main(int argc, char* argv[])
     {
       r = RunFilter(scene, epsilon, args.count("--max-depth") ? std::stoi(args["--max-depth"]) : 0,
         args.count("--max-cells") ? std::stoll(args["--max-cells"]) : 0,
-        args.count("--abort-at") ? std::stod(args["--abort-at"]) : 0.0, args.count("--fingerprint") > 0);
+        args.count("--abort-at") ? std::stod(args["--abort-at"]) : 0.0, args.count("--fingerprint") ? args["--fingerprint"] : std::string());
     }
     else if (method == "vtk")
     {

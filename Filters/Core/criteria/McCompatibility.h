@@ -42,10 +42,9 @@ struct McCompatibility
   /// tolerance are ErrorBounded too, predicted by their diagonal, with their
   /// own patch.)
   bool MeshSurface = false;
-  /// For MeshSurface: the loop the prediction was made on, and the largest
-  /// distance between its fan and the mesh that the prediction came upon.
-  std::vector<Vec3> PredictedLoop;
-  double PredictedAttained = 0.0;
+  /// For MeshSurface: the prediction (its Bound is PredictedError), kept
+  /// for the extraction.
+  AdaptiveOctree::MeshCellPrediction MeshPrediction;
   /// ErrorBounded where a crease of two quadrics crosses a cell larger than
   /// the tolerance (QuadricCellError.h): its patch is the fan around its
   /// crease apex, over a loop drawn through the crease on its tiles.

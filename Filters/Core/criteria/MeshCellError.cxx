@@ -274,8 +274,10 @@ HausdorffEstimate CertifiedMeshPatchError(const std::vector<ConvexPolygon>& surf
 
 double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSet& primitives,
   const RootGrid& grid, const Box3& cell, const CellBoundary& boundary, const BoundaryLoopSet& loops,
-  double tolerance, std::vector<Vec3>& loopPoints, double& attained)
+  double tolerance, AdaptiveOctree::MeshCellPrediction& prediction)
 {
+  prediction = AdaptiveOctree::MeshCellPrediction();
+  prediction.Bound = HUGE_VAL;
   const CsgLeaf* leaf = LoneMeshLeaf(expression);
   if (!leaf || loops.LoopSizes.size() != 1 || !loops.Consistent || loops.Crossings.size() < 3)
   {
@@ -358,9 +360,11 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
   }
   const HausdorffEstimate error =
     CertifiedMeshPatchError(surface, fan, slack, tolerance - delta, tolerance - delta, PredictionBudget);
-  loopPoints = points;
-  attained = error.Lower;
-  return error.Upper == HUGE_VAL ? HUGE_VAL : error.Upper + delta;
+  prediction.Loop = std::move(points);
+  prediction.Attained = error.Lower;
+  prediction.FanError = error.Upper;
+  prediction.Bound = error.Upper == HUGE_VAL ? HUGE_VAL : error.Upper + delta;
+  return prediction.Bound;
 }
 
 bool FinalLoopRefines(const std::vector<Vec3>& own, const std::vector<Vec3>& final, const Box3& cell)
@@ -403,6 +407,30 @@ bool FinalLoopRefines(const std::vector<Vec3>& own, const std::vector<Vec3>& fin
     next += same(final[(start + k) % n], own[next]) ? 1 : 0;
   }
   return next == own.size();
+}
+
+bool SameLoop(const std::vector<Vec3>& own, const std::vector<Vec3>& final)
+{
+  const std::size_t n = own.size();
+  if (n == 0 || final.size() != n)
+  {
+    return false;
+  }
+  const auto equal = [](const Vec3& x, const Vec3& y) { return x[0] == y[0] && x[1] == y[1] && x[2] == y[2]; };
+  const auto start = std::find_if(final.begin(), final.end(), [&](const Vec3& p) { return equal(p, own[0]); });
+  if (start == final.end())
+  {
+    return false;
+  }
+  const std::size_t offset = static_cast<std::size_t>(start - final.begin());
+  for (std::size_t k = 1; k < n; ++k)
+  {
+    if (!equal(final[(offset + k) % n], own[k]))
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
 } // namespace tpc

@@ -72,6 +72,7 @@
 // delta and to the final certificate.
 #pragma once
 
+#include "AdaptiveOctree.h"
 #include "BoundaryLoops.h"
 #include "CsgExpression.h"
 #include "PolygonHausdorff.h"
@@ -115,13 +116,15 @@ double RoundingSlack(const CsgLeaf& leaf, const PrimitiveSet& primitives, const 
 /// same apex);
 /// +inf when it exceeds `tolerance` or the cell is not a lone mesh leaf with
 /// one loop.
-/// `loop` receives the loop's points (what the final loop must hold in order
-/// for the prediction to apply, FinalLoopRefines), `attained` the largest
-/// distance between the fan and the mesh the bound came upon (a lower bound
-/// of E(P)).
+/// `prediction` receives it as Bound, the loop's points as Loop (what the
+/// final loop must hold in order for the prediction to apply,
+/// FinalLoopRefines), the largest distance between the fan and the mesh the
+/// bound came upon as Attained (a lower bound of E(P)) and the bound of E(P)
+/// alone as FanError (the final patch's error where the final loop is the
+/// cell's own, SameLoop).
 double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSet& primitives,
   const RootGrid& grid, const Box3& cell, const CellBoundary& boundary, const BoundaryLoopSet& loops,
-  double tolerance, std::vector<Vec3>& loop, double& attained);
+  double tolerance, AdaptiveOctree::MeshCellPrediction& prediction);
 
 /// Whether the final loop `final` holds every point of the cell's own loop
 /// `own` in the same cyclic order (up to rounding): then each chord ab of
@@ -131,5 +134,11 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
 /// than the cell's own tile t would drop a crossing of t's inner sides, or
 /// draw the same chord ab.)
 bool FinalLoopRefines(const std::vector<Vec3>& own, const std::vector<Vec3>& final, const Box3& cell);
+
+/// Whether the final loop `final` is the cell's own loop `own`, the same
+/// points exactly (from the same crossings, placed alike) in the same cyclic
+/// order: then the final fan around the same apex is the fan the prediction
+/// bounded, triangle for triangle, and E(P) is its error.
+bool SameLoop(const std::vector<Vec3>& own, const std::vector<Vec3>& final);
 
 } // namespace tpc

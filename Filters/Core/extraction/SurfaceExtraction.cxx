@@ -216,6 +216,15 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
       const bool refined = predictionsHold && loops.Consistent && loops.LoopSizes.size() == 1 &&
         FinalLoopRefines(prediction->second.Loop, final, box);
       certificate.Bound = refined ? prediction->second.Bound : HUGE_VAL;
+      if (refined && prediction->second.FanError <= aim && SameLoop(prediction->second.Loop, final))
+      {
+        // The fan the prediction bounded, unchanged (no finer neighbour
+        // added a point to its loop): its bound is already as tight as the
+        // first certificates aim at.
+        certificate.Error = prediction->second.FanError;
+        certificate.Lower = prediction->second.Attained;
+        return certificate;
+      }
     }
     else
     {

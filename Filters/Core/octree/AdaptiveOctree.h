@@ -130,6 +130,9 @@ public:
     /// The largest distance between the fan over Loop and the mesh that the
     /// prediction came upon.
     double Attained = 0.0;
+    /// The fan over Loop's certified error alone (Bound without the chords'
+    /// deviation): the final patch's where the final loop is Loop itself.
+    double FanError = HUGE_VAL;
   };
   std::unordered_map<std::uint32_t, MeshCellPrediction> MeshCellPredictions;
 

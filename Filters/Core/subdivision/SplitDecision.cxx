@@ -53,7 +53,7 @@ bool DecideCell(AdaptiveOctree& tree, std::uint32_t n, const CellTests& tests, c
     node.CreaseFan = v.CreaseFan;
     if (v.MeshSurface)
     {
-      tree.MeshCellPredictions[n] = { v.PredictedError, v.PredictedLoop, v.PredictedAttained };
+      tree.MeshCellPredictions[n] = v.MeshPrediction;
     }
     result.SurfaceCells += mine;
     result.PlanarSurfaceCells += v.Planar ? mine : 0;

@@ -375,3 +375,20 @@ TEST(MeshCellError, FinalLoopMustHoldTheCellsOwnLoopInOrder)
   EXPECT_FALSE(tpc::FinalLoopRefines({ a, b, c, d }, { a, b, c, d + Vec3(1e-9, 0, 0) }, cell));
   EXPECT_TRUE(tpc::FinalLoopRefines({ a, b, c, d }, { a, b, c, d + Vec3(1e-17, 0, 0) }, cell)); // rounding
 }
+
+TEST(MeshCellError, SameLoopIsTheOwnLoopExactly)
+{
+  // The prediction's fan error is the final patch's only when the final loop
+  // is the cell's own, point for point (a rotation of it: the extraction may
+  // start the loop elsewhere): a refined loop, another order or a point moved
+  // by an ulp makes another fan.
+  const Vec3 a(0.5, 0, 0.2), b(1, 0.5, 0.3), c(0.5, 1, 0.4), d(0, 0.5, 0.5), x(0.75, 0.2, 0.25);
+  EXPECT_TRUE(tpc::SameLoop({ a, b, c, d }, { a, b, c, d }));
+  EXPECT_TRUE(tpc::SameLoop({ a, b, c, d }, { c, d, a, b }));
+  EXPECT_FALSE(tpc::SameLoop({ a, b, c, d }, { a, x, b, c, d })); // refined by a finer neighbour
+  EXPECT_FALSE(tpc::SameLoop({ a, b, c, d }, { a, b, c }));
+  EXPECT_FALSE(tpc::SameLoop({ a, b, c, d }, { d, c, b, a })); // reversed
+  EXPECT_FALSE(tpc::SameLoop({ a, b, c, d }, { a, c, b, d }));
+  EXPECT_FALSE(tpc::SameLoop({ a, b, c, d }, { a, b, c, Vec3(std::nextafter(0.0, 1.0), 0.5, 0.5) }));
+  EXPECT_FALSE(tpc::SameLoop({}, {}));
+}
