@@ -79,6 +79,40 @@ TEST(ExactPredicates, NearlyDegenerateCasesPastTheFloatingPointFilter)
   EXPECT_GT(zeros, 0);
 }
 
+TEST(ExactPredicates, Orient3DExactWhereDifferencesRound)
+{
+  // a, b, d on the plane x = y and c off it by an ulp or on it: the
+  // determinant is (c.x - c.y) (p s - q r) exactly, with p, q, r, s the x and
+  // z differences of a and b from d, so its sign is known. Random coordinates
+  // of mixed magnitudes make the differences round (the exact stage carries
+  // their rounding errors; dropping them gets these signs wrong).
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_int_distribution<int> scale(-30, 30);
+  int checked = 0, zeros = 0;
+  for (int trial = 0; trial < 20000; ++trial)
+  {
+    const auto coordinate = [&] { return std::ldexp(unit(rng), scale(rng)); };
+    const double ax = coordinate(), bx = coordinate(), dx = coordinate();
+    const Vec3 a(ax, ax, coordinate()), b(bx, bx, coordinate()), d(dx, dx, coordinate());
+    const double p = a[0] - d[0], q = a[2] - d[2], r = b[0] - d[0], s = b[2] - d[2];
+    const double ps = p * s, qr = q * r;
+    if (!(std::fabs(ps - qr) > 1e-6 * (std::fabs(ps) + std::fabs(qr))))
+    {
+      continue; // (the second factor's sign not certain in floating point)
+    }
+    const double cx = coordinate();
+    const int offset = trial % 3 - 1; // c.y one ulp below c.x, equal, or above
+    const double cy = offset == 0 ? cx : std::nextafter(cx, offset > 0 ? HUGE_VAL : -HUGE_VAL);
+    const int expected = (cx > cy ? 1 : cx < cy ? -1 : 0) * (ps - qr > 0.0 ? 1 : -1);
+    ASSERT_EQ(tpc::Orient3D(a, b, Vec3(cx, cy, coordinate()), d), expected) << trial;
+    ++checked;
+    zeros += expected == 0 ? 1 : 0;
+  }
+  EXPECT_GT(checked, 10000);
+  EXPECT_GT(zeros, 3000);
+}
+
 TEST(MeshSolid, InsideIsExactOnQueriesThroughEdgesAndVertices)
 {
   // A cube mesh queried on a lattice that contains its vertices: rays hit
