@@ -13,9 +13,10 @@ grows from epsilon to epsilon/2.
     python3 Testing/Benchmarks/run_benchmark.py --ranks    # 1 vs 2 MPI ranks
     python3 Testing/Benchmarks/run_benchmark.py --errors [--before OLD/tpc_benchmark]
         # issue 17: triangles, certified and measured error vs OpenVDB
-    python3 Testing/Benchmarks/run_benchmark.py --compare OLD/tpc_benchmark
+    python3 Testing/Benchmarks/run_benchmark.py --compare OLD/tpc_benchmark [--geometry-only]
         # this build's filter vs another build's, interleaved: seconds and
-        # whether the outputs are identical (a refactoring keeps them)
+        # whether the outputs are identical (a refactoring keeps them; with
+        # --geometry-only, everything but the certified errors)
     ... --scenes plate-ellipsoids --epsilons 64,128        # a subset
 
 The filter runs first; the others get its surface-cell edge as their spacing.
@@ -58,7 +59,7 @@ def run(program, meshes, method, scene, epsilon, threads, cell_size, timeout, ma
     cmd = [program, "--method", method, "--scene", scene, "--epsilon", repr(epsilon),
            "--threads", str(threads), "--meshes", meshes]
     if fingerprint:
-        cmd += ["--fingerprint", "1"]
+        cmd += ["--fingerprint", "geometry" if fingerprint == "geometry" else "1"]
     if adaptivity:
         cmd += ["--adaptivity", repr(adaptivity)]
     if measure:
@@ -246,7 +247,9 @@ def compare(a):
     with 2 threads, runs interleaved (new, old, new, old, ...) so that the
     machine's drift hits both alike: median seconds, their ratio, and whether
     the two outputs are identical (a hash of every point, triangle, grid cell
-    and array: tpc_benchmark --fingerprint). Returns 1 if any output differs."""
+    and array: tpc_benchmark --fingerprint; with --geometry-only, of all that
+    but the certified errors, for a change that moves only those). Returns 1
+    if any output differs."""
     print("Machine:", machine())
     scenes = a.scenes.split(",") if a.scenes != ",".join(SCENES) else SCENES + CHECK_SCENES
     denominators = [int(d) for d in ("64,128" if a.quick or a.epsilons == "64,128,256" else a.epsilons).split(",")]
@@ -258,12 +261,18 @@ def compare(a):
             for _ in range(a.repeat):
                 for key, program in (("new", a.program), ("old", a.compare)):
                     runs[key].append(run(program, a.meshes, "tpc", scene, 1.0 / d, 2, None, 4 * 3600,
-                                         fingerprint=True))
+                                         fingerprint="geometry" if a.geometry_only else True))
             print(f"  ran {scene:20} 1/{d:<4} x {a.repeat}", file=sys.stderr, flush=True)
             every = runs["new"] + runs["old"]
             if any("error" in r for r in every):
                 rows.append([scene, f"1/{d}", "-", "-", "-", "-", "-",
                              next(r["error"] for r in every if "error" in r)])
+                differ.append((scene, d))
+                continue
+            kind = "geometry" if a.geometry_only else "everything"
+            if any(r.get("fingerprint_of", "everything") != kind for r in every):
+                rows.append([scene, f"1/{d}", "-", "-", "-", "-", "-",
+                             f"a build cannot fingerprint {kind} (tpc_benchmark --fingerprint geometry)"])
                 differ.append((scene, d))
                 continue
             median = {k: sorted(r["seconds"] for r in v)[len(v) // 2] for k, v in runs.items()}
@@ -273,7 +282,7 @@ def compare(a):
             counts = lambda key: str(new[key]) if new[key] == old[key] else f"{new[key]} (old {old[key]})"
             rows.append([scene, f"1/{d}", f"{median['new']:.2f}", f"{median['old']:.2f}",
                          ratio(median["new"], median["old"]), counts("triangles"), counts("grid_cells"),
-                         "identical" if same else "DIFFERENT"])
+                         ("same geometry" if a.geometry_only else "identical") if same else "DIFFERENT"])
     print(f"\nThis build vs {a.compare}: 2 threads, median of {a.repeat} interleaved runs each")
     table(rows)
     if differ:
@@ -301,11 +310,16 @@ def main():
                         help="only the filter, against another build's tpc_benchmark: interleaved seconds and "
                              "identical outputs, on the timed scenes and " + ", ".join(CHECK_SCENES))
     parser.add_argument("--repeat", type=int, default=3, help="with --compare: runs of each build per case")
+    parser.add_argument("--geometry-only", action="store_true",
+                        help="with --compare: outputs count as the same when everything but the certified "
+                             "errors is (both builds' tpc_benchmark must know --fingerprint geometry)")
     parser.add_argument("--errors", action="store_true",
                         help="only issue 17's table: triangles, seconds, certified and measured error against "
                              "OpenVDB uniform and adaptive, on " + ", ".join(ERROR_SCENES))
     parser.add_argument("--before", metavar="PROGRAM", help="with --errors: an earlier build's tpc_benchmark")
     a = parser.parse_args()
+    if a.geometry_only and not a.compare:
+        parser.error("--geometry-only compares two builds: it goes with --compare PROGRAM")
     if a.errors:
         return errors(a)
     if a.compare:

@@ -19,8 +19,9 @@
 // it), so all three resolve the surface at the same finest cell size.
 // With --fingerprint 1 the filter's run also prints a hash of everything it
 // output (run_benchmark.py --compare: the same output from two builds); with
-// --fingerprint geometry, of the surface's points and triangles and the
-// grid's trees only (a change that moves only certified errors keeps it).
+// --fingerprint geometry, of everything but the certified errors (the grid's
+// CertifiedError, the HausdorffBound field): a change that moves only those
+// keeps it.
 // With --measure 1 on a scene of one mesh, the output's two-sided Hausdorff
 // distance to it, by CGAL (a test oracle; the sphere's is always measured).
 #include "BenchmarkScenes.h"
@@ -216,41 +217,43 @@ struct Fnv1a
       }
     }
   }
-  void AddArrays(vtkFieldData* arrays)
+  /// Every array but the one named `skipped` (if any).
+  void AddArrays(vtkFieldData* arrays, const char* skipped = nullptr)
   {
     for (int i = 0; i < arrays->GetNumberOfArrays(); ++i)
     {
-      this->AddArray(arrays->GetAbstractArray(i));
+      vtkAbstractArray* a = arrays->GetAbstractArray(i);
+      if (!skipped || !a->GetName() || std::string(a->GetName()) != skipped)
+      {
+        this->AddArray(a);
+      }
     }
   }
 };
 
 /// Everything the filter output: the surface's points, triangles, point,
 /// cell and field data; the grid's trees (vertices and levels of each), cell
-/// and field data. With `geometryOnly`, the points, triangles and trees.
-std::string Fingerprint(vtkPolyData* surface, vtkHyperTreeGrid* grid, bool geometryOnly)
+/// and field data (the cells' depths, states and reasons among them).
+/// Without the certified errors (`errors` false): the same but the grid's
+/// CertifiedError and the HausdorffBound field.
+std::string Fingerprint(vtkPolyData* surface, vtkHyperTreeGrid* grid, bool errors)
 {
   Fnv1a h;
+  const char* bound = errors ? nullptr : "HausdorffBound";
   h.AddArray(surface->GetPoints()->GetData());
   h.AddArray(surface->GetPolys()->GetOffsetsArray());
   h.AddArray(surface->GetPolys()->GetConnectivityArray());
-  if (!geometryOnly)
-  {
-    h.AddArrays(surface->GetPointData());
-    h.AddArrays(surface->GetCellData());
-    h.AddArrays(surface->GetFieldData());
-  }
+  h.AddArrays(surface->GetPointData());
+  h.AddArrays(surface->GetCellData());
+  h.AddArrays(surface->GetFieldData(), bound);
   for (vtkIdType t = 0; t < grid->GetMaxNumberOfTrees(); ++t)
   {
     vtkHyperTree* tree = grid->GetTree(t);
     h.AddValue(tree ? tree->GetNumberOfVertices() : vtkIdType(-1));
     h.AddValue(tree ? tree->GetNumberOfLevels() : 0u);
   }
-  if (!geometryOnly)
-  {
-    h.AddArrays(grid->GetCellData());
-    h.AddArrays(grid->GetFieldData());
-  }
+  h.AddArrays(grid->GetCellData(), errors ? nullptr : "CertifiedError");
+  h.AddArrays(grid->GetFieldData(), bound);
   char text[17];
   std::snprintf(text, sizeof(text), "%016llx", static_cast<unsigned long long>(h.Hash));
   return text;
@@ -402,7 +405,7 @@ RunResult RunFilter(const tpcbench::Scene& scene, double epsilon, int maximumDep
   r.PlanarCells = static_cast<long>(fd->GetArray("PlanarCells")->GetTuple1(0));
   if (!fingerprint.empty())
   {
-    r.Fingerprint = Fingerprint(surface, grid, fingerprint == "geometry");
+    r.Fingerprint = Fingerprint(surface, grid, fingerprint != "geometry");
   }
   return r;
 }
@@ -548,9 +551,16 @@ int main(int argc, char* argv[])
     if (!args.count(required))
     {
       std::cerr << "usage: tpc_benchmark --method tpc|vtk|vdb --scene NAME --epsilon E --threads N "
-                   "--meshes DIR [--cell-size H] [--max-depth D] [--max-cells N] [--abort-at P] [--fingerprint 1|geometry] [--adaptivity A] [--measure 1]\n";
+                   "--meshes DIR [--cell-size H] [--max-depth D] [--max-cells N] [--abort-at P] "
+                   "[--fingerprint 1|geometry] [--adaptivity A] [--measure 1]\n";
       return 1;
     }
+  }
+  if (args.count("--fingerprint") && args["--fingerprint"] != "1" && args["--fingerprint"] != "geometry")
+  {
+    std::cerr << "tpc_benchmark: --fingerprint takes 1 (everything) or geometry (everything but the certified "
+                 "errors), not " << args["--fingerprint"] << "\n";
+    return 1;
   }
   const std::string method = args["--method"];
   const int threads = std::stoi(args["--threads"]);
@@ -569,7 +579,8 @@ int main(int argc, char* argv[])
     {
       r = RunFilter(scene, epsilon, args.count("--max-depth") ? std::stoi(args["--max-depth"]) : 0,
         args.count("--max-cells") ? std::stoll(args["--max-cells"]) : 0,
-        args.count("--abort-at") ? std::stod(args["--abort-at"]) : 0.0, args.count("--fingerprint") ? args["--fingerprint"] : std::string());
+        args.count("--abort-at") ? std::stod(args["--abort-at"]) : 0.0,
+        args.count("--fingerprint") ? args["--fingerprint"] : std::string());
     }
     else if (method == "vtk")
     {
@@ -620,7 +631,8 @@ int main(int argc, char* argv[])
     }
     if (!r.Fingerprint.empty())
     {
-      json << ", \"fingerprint\": \"" << r.Fingerprint << "\"";
+      json << ", \"fingerprint\": \"" << r.Fingerprint << "\", \"fingerprint_of\": \""
+           << (args["--fingerprint"] == "geometry" ? "geometry" : "everything") << "\"";
     }
     json << "}";
     std::cout << json.str() << std::endl;

@@ -277,7 +277,6 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
   double tolerance, AdaptiveOctree::MeshCellPrediction& prediction)
 {
   prediction = AdaptiveOctree::MeshCellPrediction();
-  prediction.Bound = HUGE_VAL;
   const CsgLeaf* leaf = LoneMeshLeaf(expression);
   if (!leaf || loops.LoopSizes.size() != 1 || !loops.Consistent || loops.Crossings.size() < 3)
   {
@@ -361,8 +360,9 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
   const HausdorffEstimate error =
     CertifiedMeshPatchError(surface, fan, slack, tolerance - delta, tolerance - delta, PredictionBudget);
   prediction.Loop = std::move(points);
+  prediction.Apex = apex;
   prediction.Attained = error.Lower;
-  prediction.FanError = error.Upper;
+  prediction.OwnFanError = error.Upper;
   prediction.Bound = error.Upper == HUGE_VAL ? HUGE_VAL : error.Upper + delta;
   return prediction.Bound;
 }

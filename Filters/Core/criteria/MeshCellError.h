@@ -26,7 +26,8 @@
 //   delta = max over chords ab of max over S ∩ t of d(., [a, b]),
 // computed exactly on S's polygons clipped to t (d(., [a, b]) is convex, so
 // its maximum over a polygon is at a vertex). The final patch P' is the fan
-// around the same c (the apex does not depend on the loop). Then
+// around the same c (the apex does not depend on the loop; the extraction
+// takes the prediction's). Then
 //   E(P') <= E(P) + delta:
 // - P' to S. x in P' is c + s (w - c), 0 <= s <= 1, w on a sub-chord
 //   [q_i, q_i+1]; both ends are within delta of [a, b], hence so is w
@@ -57,7 +58,10 @@
 //
 // So a cell is accepted when E(P) + delta <= the tolerance, and the final
 // patch is certified again on its own (usually tighter: its loop follows S
-// closer); the filter reports the smaller of the two.
+// closer); the filter reports the smaller of the two. Where the final loop
+// is the cell's own loop, point for point (SameLoop), P' is P, triangle for
+// triangle, and the bound of E(P) the prediction proved is P's certificate
+// (kept as it is where it is within what the first certificates aim at).
 //
 // Cells no larger than the tolerance keep their usual patch
 // (LoopTriangulation.h), bounded by their diagonal; E of that patch is
@@ -120,7 +124,7 @@ double RoundingSlack(const CsgLeaf& leaf, const PrimitiveSet& primitives, const 
 /// final loop must hold in order for the prediction to apply,
 /// FinalLoopRefines), the largest distance between the fan and the mesh the
 /// bound came upon as Attained (a lower bound of E(P)) and the bound of E(P)
-/// alone as FanError (the final patch's error where the final loop is the
+/// alone as OwnFanError (the final patch's error where the final loop is the
 /// cell's own, SameLoop).
 double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSet& primitives,
   const RootGrid& grid, const Box3& cell, const CellBoundary& boundary, const BoundaryLoopSet& loops,

@@ -206,8 +206,8 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
       // points on the surface's trace in the same tiles (no cell was stopped
       // by a limit: its tiles may hold bends or two chords); the patch is
       // certified on its own anyway.
-      const Vec3 apex = MeshCellApex(surface, box);
-      TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches, nullptr, &apex);
+      TriangulateCell(
+        loops, node, expression, prims, tree.Grid, vertices, mesh, patches, nullptr, &prediction->second.Apex);
       std::vector<Vec3> final;
       for (const Crossing& c : loops.Crossings)
       {
@@ -216,12 +216,12 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
       const bool refined = predictionsHold && loops.Consistent && loops.LoopSizes.size() == 1 &&
         FinalLoopRefines(prediction->second.Loop, final, box);
       certificate.Bound = refined ? prediction->second.Bound : HUGE_VAL;
-      if (refined && prediction->second.FanError <= aim && SameLoop(prediction->second.Loop, final))
+      if (refined && prediction->second.OwnFanError <= aim && SameLoop(prediction->second.Loop, final))
       {
         // The fan the prediction bounded, unchanged (no finer neighbour
         // added a point to its loop): its bound is already as tight as the
         // first certificates aim at.
-        certificate.Error = prediction->second.FanError;
+        certificate.Error = prediction->second.OwnFanError;
         certificate.Lower = prediction->second.Attained;
         return certificate;
       }

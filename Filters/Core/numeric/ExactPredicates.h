@@ -1,7 +1,8 @@
 // Exact geometric predicates on double coordinates: the sign of 2-D and 3-D
-// orientation determinants. An interval evaluation decides almost always;
-// when it cannot, the determinant is expanded into products of coordinates
-// and summed exactly (ExactSum.h). These decide every inside/outside and
+// orientation determinants. A floating-point filter, then an interval
+// evaluation, decide almost always; when they cannot, the determinant is
+// expanded into products of coordinates (2-D) or of the differences' rounded
+// values and rounding errors (3-D) and summed exactly (ExactSum.h). These decide every inside/outside and
 // crossing question about meshes, so two cells asking about the same point
 // or segment always get the same answer.
 #pragma once

@@ -11,6 +11,7 @@
 #include "RootGrid.h"
 #include "SplitReason.h"
 
+#include <cmath>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
@@ -125,14 +126,16 @@ public:
   /// patching only refines the cell's own loop, Loop).
   struct MeshCellPrediction
   {
-    double Bound = 0.0;
+    double Bound = HUGE_VAL;
     std::vector<Vec3> Loop;
+    /// The fan's apex (MeshCellApex): the extraction's fan is around it.
+    Vec3 Apex;
     /// The largest distance between the fan over Loop and the mesh that the
     /// prediction came upon.
     double Attained = 0.0;
     /// The fan over Loop's certified error alone (Bound without the chords'
     /// deviation): the final patch's where the final loop is Loop itself.
-    double FanError = HUGE_VAL;
+    double OwnFanError = HUGE_VAL;
   };
   std::unordered_map<std::uint32_t, MeshCellPrediction> MeshCellPredictions;
 

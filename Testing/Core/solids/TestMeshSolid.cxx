@@ -3,6 +3,7 @@
 // overlap, and the whole pipeline on meshes and mesh/quadric CSG.
 #include "CoreContour.h"
 #include "ExactPredicates.h"
+#include "ExactSum.h"
 #include "MeshBuilders.h"
 #include "SceneBuilder.h"
 #include "SurfaceExtraction.h"
@@ -111,6 +112,65 @@ TEST(ExactPredicates, Orient3DExactWhereDifferencesRound)
   }
   EXPECT_GT(checked, 10000);
   EXPECT_GT(zeros, 3000);
+}
+
+namespace
+{
+/// The sign of det[a - d, b - d, c - d] from the 48 products of raw
+/// coordinates (each difference x - y expanded into x and -y), summed
+/// exactly: an exact reference independent of how Orient3D splits the
+/// differences.
+int CoordinateExpansionSign(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
+{
+  const Vec3* rows[3] = { &a, &b, &c };
+  static const int perms[6][3] = { { 0, 1, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 0, 2, 1 }, { 2, 1, 0 }, { 1, 0, 2 } };
+  static const int parity[6] = { 1, 1, 1, -1, -1, -1 };
+  tpc::ExactSum sum;
+  for (int p = 0; p < 6; ++p)
+  {
+    for (int choice = 0; choice < 8; ++choice)
+    {
+      double f[3];
+      for (int r = 0; r < 3; ++r)
+      {
+        const int column = perms[p][r];
+        f[r] = (choice >> r) & 1 ? -d[column] : (*rows[r])[column];
+      }
+      sum.AddProduct(parity[p] * f[0], f[1], f[2]);
+    }
+  }
+  return sum.Sign();
+}
+} // namespace
+
+TEST(ExactPredicates, Orient3DAgreesWithTheCoordinateExpansionNearCoplanarPoints)
+{
+  // d in the plane of a, b, c up to rounding, then moved by a few ulps:
+  // determinants far below the filters' reach, with differences that round
+  // (coordinates of mixed magnitudes), so that products of one, two and three
+  // rounding errors all take part in the exact sum.
+  std::mt19937 rng(12);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_int_distribution<int> scale(-8, 8), nudge(-2, 2), axis(0, 2);
+  int signs[3] = { 0, 0, 0 };
+  for (int trial = 0; trial < 20000; ++trial)
+  {
+    const auto coordinate = [&] { return std::ldexp(unit(rng), scale(rng)); };
+    const Vec3 a(coordinate(), coordinate(), coordinate()), b(coordinate(), coordinate(), coordinate()),
+      c(coordinate(), coordinate(), coordinate());
+    const double s = unit(rng), t = unit(rng);
+    Vec3 d = a + (b - a) * s + (c - a) * t;
+    const int k = axis(rng);
+    for (int step = nudge(rng); step != 0; step += step > 0 ? -1 : 1)
+    {
+      d[k] = std::nextafter(d[k], step > 0 ? HUGE_VAL : -HUGE_VAL);
+    }
+    const int expected = CoordinateExpansionSign(a, b, c, d);
+    ASSERT_EQ(tpc::Orient3D(a, b, c, d), expected) << trial;
+    ++signs[expected + 1];
+  }
+  EXPECT_GT(signs[0], 1000);
+  EXPECT_GT(signs[2], 1000);
 }
 
 TEST(MeshSolid, InsideIsExactOnQueriesThroughEdgesAndVertices)
