@@ -3,6 +3,7 @@
 #include "UnionFind.h"
 
 #include <algorithm>
+#include <atomic>
 #include <numeric>
 #include <vector>
 
@@ -51,7 +52,7 @@ bool HasOneCycleLink(const Triangle* triangles, std::uint32_t v, const std::uint
 } // namespace
 
 bool CountNonManifoldVertices(const Triangle* triangles, std::size_t triangleCount, std::size_t vertexCount,
-  std::int64_t& count, const ProgressCallback& progress)
+  std::int64_t& count, const ParallelFor& parallelFor, const ProgressCallback& progress)
 {
   // The triangles around each vertex: counted, prefix-summed, written.
   const std::size_t nv = vertexCount;
@@ -72,19 +73,19 @@ bool CountNonManifoldVertices(const Triangle* triangles, std::size_t triangleCou
       incident[fill[v]++] = t;
     }
   }
-  for (std::uint32_t v = 0; v < nv; ++v)
-  {
-    if ((v & 0x3FFFF) == 0 && progress && progress(static_cast<double>(v) / static_cast<double>(nv)))
+  // (A sum: the same count for any number of threads.)
+  std::atomic<std::int64_t> pinched{ 0 };
+  const bool done = ChunkedFor(nv, std::size_t(1) << 18, parallelFor, [&](std::size_t begin, std::size_t end) {
+    std::int64_t here = 0;
+    for (std::size_t v = begin; v < end; ++v)
     {
-      return false;
+      const std::size_t m = start[v + 1] - start[v];
+      here += m > 0 && !HasOneCycleLink(triangles, static_cast<std::uint32_t>(v), incident.data() + start[v], m);
     }
-    const std::size_t m = start[v + 1] - start[v];
-    if (m > 0 && !HasOneCycleLink(triangles, v, incident.data() + start[v], m))
-    {
-      ++count;
-    }
-  }
-  return true;
+    pinched += here;
+  }, progress);
+  count += pinched;
+  return done;
 }
 
 } // namespace tpc

@@ -17,9 +17,10 @@ namespace tpc
 
 /// Counts into `count` the vertices (of `vertexCount`) whose triangles among
 /// the `triangleCount` at `triangles` do not form one cycle around them
-/// (meant for meshes whose every edge has two triangles). False when
-/// `progress` asked to stop (`count` is then partial).
+/// (meant for meshes whose every edge has two triangles), the vertices'
+/// links checked in parallel. False when `progress` asked to stop (`count`
+/// is then partial).
 bool CountNonManifoldVertices(const Triangle* triangles, std::size_t triangleCount, std::size_t vertexCount,
-  std::int64_t& count, const ProgressCallback& progress = nullptr);
+  std::int64_t& count, const ParallelFor& parallelFor = SequentialFor, const ProgressCallback& progress = nullptr);
 
 } // namespace tpc

@@ -112,13 +112,14 @@ void AddCreaseEdge(const Vec3& p, const Vec3& q, const Vec3& r1, const Vec3& r2,
 }
 } // namespace
 
-LatticeCreases FindLatticeCreases(const PrimitiveSet& primitives, double ridgeThickness, double planeThickness)
+LatticeCreases FindLatticeCreases(const PrimitiveSet& primitives, double ridgeThickness, double planeThickness,
+  const ParallelFor& parallelFor)
 {
   LatticeCreases creases;
   for (const MeshSolid& mesh : primitives.Meshes)
   {
     std::vector<EdgeUse> uses;
-    BuildEdgeTable(mesh.Triangles().data(), mesh.Triangles().size(), uses);
+    BuildEdgeTable(mesh.Triangles().data(), mesh.Triangles().size(), uses, parallelFor);
     // (Closed meshes: every edge has two triangles; a non-manifold edge's
     // uses are taken in pairs.)
     ForEachEdge(uses, [&](std::size_t first, std::size_t count) {
@@ -175,7 +176,7 @@ std::vector<Vec3> RankLatticeShifts(const PrimitiveSet& primitives, const RootGr
   constexpr int Candidates = 64;
   const LatticeCreases creases = primitives.Meshes.empty()
     ? LatticeCreases{}
-    : FindLatticeCreases(primitives, 4.0 * spacings.Surface, spacings.Finest);
+    : FindLatticeCreases(primitives, 4.0 * spacings.Surface, spacings.Finest, parallelFor);
   const Vec3 step(0.8191725134, 0.6710436067, 0.5497004779);
   std::vector<std::pair<double, Vec3>> ranked(
     static_cast<std::size_t>(primitives.Meshes.empty() ? std::max(0, std::min(count, Candidates)) : Candidates));

@@ -48,8 +48,8 @@ struct LatticeCreases
   std::array<std::vector<FlatCreaseEdge>, 3> InPlane;
 };
 
-LatticeCreases FindLatticeCreases(
-  const PrimitiveSet& primitives, double ridgeThickness, double planeThickness);
+LatticeCreases FindLatticeCreases(const PrimitiveSet& primitives, double ridgeThickness, double planeThickness,
+  const ParallelFor& parallelFor = SequentialFor);
 
 /// The spacings the penalty looks at.
 struct LatticeSpacings

@@ -8,6 +8,7 @@
 #include "VertexLinks.h"
 
 #include <algorithm>
+#include <functional>
 #include <numeric>
 #include <sstream>
 
@@ -15,7 +16,8 @@ namespace tpc
 {
 namespace
 {
-void MergeCoincidentVertices(std::vector<Vec3>& points, std::vector<Triangle>& triangles, MeshRepairReport& r)
+void MergeCoincidentVertices(std::vector<Vec3>& points, std::vector<Triangle>& triangles,
+  const ParallelFor& parallelFor, MeshRepairReport& r)
 {
   std::vector<std::uint32_t> order(points.size());
   std::iota(order.begin(), order.end(), 0u);
@@ -23,7 +25,7 @@ void MergeCoincidentVertices(std::vector<Vec3>& points, std::vector<Triangle>& t
     const Vec3 &p = points[a], &q = points[b];
     return p[0] != q[0] ? p[0] < q[0] : (p[1] != q[1] ? p[1] < q[1] : (p[2] != q[2] ? p[2] < q[2] : a < b));
   };
-  std::sort(order.begin(), order.end(), less);
+  ParallelSort(order, less, parallelFor, nullptr); // (a total order: ties by index)
   // Each vertex maps to the first (lowest index) vertex with its coordinates;
   // the survivors keep their order.
   std::vector<std::uint32_t> representative(points.size());
@@ -79,7 +81,8 @@ bool Degenerate(const std::vector<Vec3>& P, const Triangle& t)
   return true; // collinear in every projection: no area
 }
 
-void DropDegenerateAndDuplicates(const std::vector<Vec3>& P, std::vector<Triangle>& triangles, MeshRepairReport& r)
+void DropDegenerateAndDuplicates(const std::vector<Vec3>& P, std::vector<Triangle>& triangles,
+  const ParallelFor& parallelFor, MeshRepairReport& r)
 {
   std::vector<Triangle> kept;
   std::vector<std::pair<Triangle, std::size_t>> sorted;
@@ -95,7 +98,7 @@ void DropDegenerateAndDuplicates(const std::vector<Vec3>& P, std::vector<Triangl
     sorted.emplace_back(s, kept.size());
     kept.push_back(t);
   }
-  std::sort(sorted.begin(), sorted.end());
+  ParallelSort(sorted, std::less<>(), parallelFor, nullptr); // (a total order: ties by index)
   std::vector<bool> drop(kept.size(), false);
   for (std::size_t i = 1; i < sorted.size(); ++i)
   {
@@ -286,12 +289,12 @@ MeshRepairReport RepairMesh(std::vector<Vec3>& points, std::vector<Triangle>& tr
   auto stop = [&progress](double f) { return progress && progress(f); };
   MeshRepairReport r;
   r.InputTriangles = triangles.size();
-  MergeCoincidentVertices(points, triangles, r);
+  MergeCoincidentVertices(points, triangles, parallelFor, r);
   if (stop(0.03))
   {
     return r;
   }
-  DropDegenerateAndDuplicates(points, triangles, r);
+  DropDegenerateAndDuplicates(points, triangles, parallelFor, r);
   if (triangles.empty() || stop(0.06))
   {
     return r;
@@ -336,7 +339,7 @@ MeshRepairReport RepairMesh(std::vector<Vec3>& points, std::vector<Triangle>& tr
   r.EulerCharacteristic = vertices - edges + static_cast<long long>(triangles.size());
   if (r.Closed() && r.NonManifoldEdges == 0)
   {
-    CountNonManifoldVertices(triangles.data(), triangles.size(), points.size(), r.PinchedVertices);
+    CountNonManifoldVertices(triangles.data(), triangles.size(), points.size(), r.PinchedVertices, parallelFor);
     if (r.PinchedVertices == 0)
     {
       r.Genus = GenusFromEuler(static_cast<std::int64_t>(r.Components), r.EulerCharacteristic);

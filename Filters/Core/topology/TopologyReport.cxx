@@ -84,7 +84,7 @@ TopologyReport ComputeTopologyReport(
   r.EulerCharacteristic = r.Vertices - r.Edges + r.Faces;
   if (r.BoundaryEdges == 0 && r.NonManifoldEdges == 0 &&
     !CountNonManifoldVertices(mesh.Triangles.data(), mesh.Triangles.size(), mesh.Points.size(),
-      r.NonManifoldVertices, ProgressRange(progress, 0.6, 1.0)))
+      r.NonManifoldVertices, parallelFor, ProgressRange(progress, 0.6, 1.0)))
   {
     return r;
   }
