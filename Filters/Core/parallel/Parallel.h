@@ -1,7 +1,8 @@
 // Parallel loops are injected: the VTK filter passes a vtkSMPTools-based
 // implementation, the core's own tests run sequentially. Every parallel loop
-// in the core writes only to its own index range, so results do not depend on
-// the number of threads.
+// in the core writes only to its own index range (or adds integers into one
+// atomic count, an order-free sum), so results do not depend on the number of
+// threads.
 #pragma once
 
 #include <algorithm>

@@ -249,3 +249,45 @@ TEST(SelfIntersection, CoincidentFacesOfTwoMeshesAreFoundByWinding)
     EXPECT_EQ(count(tpctest::SphereMesh({ 0, 0, 0 }, 1.0, 2), tpctest::SphereMesh({ 0.5, 0.1, 0 }, 1.0, 2), facing), 0u);
   }
 }
+
+TEST(MeshRepair, RepairIsTheSameInParallel)
+{
+  // Five cubes corner to corner (four pinched vertices), each stored with its
+  // own copy of the shared corners, plus a duplicated triangle: the repair's
+  // sorts and its vertex-link count run in parallel ranges handed out in
+  // small, uneven pieces, as threads would take them, and must give what the
+  // sequential repair gives.
+  std::vector<Vec3> p;
+  Tris t;
+  for (int k = 0; k < 5; ++k)
+  {
+    AppendMesh(p, t, tpctest::CubeMesh({ 1.0 * k, 1.0 * k, 1.0 * k }, { k + 1.0, k + 1.0, k + 1.0 }));
+  }
+  t.push_back(t.front());
+  const tpc::ParallelFor pieces = [](std::size_t count, const std::function<void(std::size_t, std::size_t)>& body) {
+    for (std::size_t begin = 0; begin < count; begin += 3)
+    {
+      body(begin, std::min(count, begin + 3));
+    }
+  };
+  std::vector<Vec3> p1 = p, p2 = p;
+  Tris t1 = t, t2 = t;
+  const tpc::MeshRepairReport sequential = tpc::RepairMesh(p1, t1);
+  const tpc::MeshRepairReport parallel = tpc::RepairMesh(p2, t2, true, 100, pieces);
+  EXPECT_EQ(sequential.PinchedVertices, 4);
+  EXPECT_EQ(sequential.MergedVertices, 4u);
+  EXPECT_EQ(sequential.DuplicateTriangles, 1u);
+  EXPECT_EQ(parallel.PinchedVertices, sequential.PinchedVertices);
+  EXPECT_EQ(parallel.MergedVertices, sequential.MergedVertices);
+  EXPECT_EQ(parallel.DuplicateTriangles, sequential.DuplicateTriangles);
+  EXPECT_EQ(parallel.Components, sequential.Components);
+  EXPECT_EQ(parallel.Describe(), sequential.Describe());
+  ASSERT_EQ(p2.size(), p1.size());
+  for (std::size_t i = 0; i < p1.size(); ++i)
+  {
+    EXPECT_EQ(p2[i][0], p1[i][0]);
+    EXPECT_EQ(p2[i][1], p1[i][1]);
+    EXPECT_EQ(p2[i][2], p1[i][2]);
+  }
+  EXPECT_EQ(t2, t1);
+}
