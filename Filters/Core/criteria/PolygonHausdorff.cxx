@@ -177,27 +177,24 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
       single = farthest; // (all three computed, their maximum below the bound)
     }
   };
-  // Nearest box first. The nearest box's target usually bounds the piece
-  // well enough to rule out most others by their box distance alone, so it
-  // is visited before any ordering, and only the targets still in the
-  // running are sorted (a heap over all of them was a seventh of the run).
+  // Nearest box first: its target usually bounds the piece well enough to
+  // rule out most others by their box distance alone. The rest are taken as
+  // they come, each skipped where its box distance already rules it out:
+  // most of those still in the running after the first are visited anyway
+  // (armadillo at 1/128: 7.6 of 9.6), so ordering them (a sort, earlier a
+  // heap) cost more than the distances it saved.
   if (!order.empty())
   {
     const auto nearestBox = std::min_element(order.begin(), order.end());
     std::iter_swap(order.begin(), nearestBox);
     visit(order.front().second);
-    const double after2 = largest() * largest();
-    const auto running = std::partition(order.begin() + 1, order.end(),
-      [&](const std::pair<double, std::uint32_t>& e) { return e.first < after2; });
-    std::sort(order.begin() + 1, running);
-    for (auto e = order.begin() + 1; e != running; ++e)
+    for (auto e = order.begin() + 1; e != order.end(); ++e)
     {
       const double bound = largest();
-      if (e->first >= bound * bound)
+      if (e->first < bound * bound)
       {
-        break; // (nearest first: no later target can lower either)
+        visit(e->second);
       }
-      visit(e->second);
     }
   }
   double vertexMax = 0.0;
