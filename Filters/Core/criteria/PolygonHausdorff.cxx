@@ -120,10 +120,12 @@ struct Targets
 
 /// The piece's bound ((1) and (2) of the header) from the targets among the
 /// candidates (`count` entries of the arena from `first`) that may be nearest
-/// to one of its points (box distance within `parentUpper`); raises `lower` to its vertices' distances. Targets are
-/// visited nearest box first, and a distance is computed only where it may
+/// to one of its points (box distance within `parentUpper`); raises `lower`
+/// to its vertices' distances. The nearest box's target is visited first,
+/// then the others in any order, and a distance is computed only where it may
 /// lower a vertex's nearest distance or the single-target bound (box
-/// distances are lower bounds of distances), so both stay exact.
+/// distances are lower bounds of distances), so both stay exact whatever the
+/// order.
 void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentUpper, Targets& targets, double& lower)
 {
   std::vector<std::pair<double, std::uint32_t>>& order = targets.Order;
