@@ -114,7 +114,8 @@ struct Targets
 {
   const std::vector<ConvexPolygon>& Polygons;
   std::vector<Box3>& Boxes;
-  std::vector<std::pair<double, std::uint32_t>>& Order;
+  /// A piece's candidates with their squared box distances.
+  std::vector<std::pair<double, std::uint32_t>>& InReach;
   std::vector<std::uint32_t>& Arena;
 };
 
@@ -128,19 +129,19 @@ struct Targets
 /// order.
 void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentUpper, Targets& targets, double& lower)
 {
-  std::vector<std::pair<double, std::uint32_t>>& order = targets.Order;
+  std::vector<std::pair<double, std::uint32_t>>& inReach = targets.InReach;
   std::vector<std::uint32_t>& arena = targets.Arena;
   // (Box distances are compared squared: no square root per target.)
   const Box3 box = BoundsOf(piece.Vertices.data(), 3);
   const double parentUpper2 = parentUpper * parentUpper;
-  order.clear();
+  inReach.clear();
   for (std::size_t k = first; k < first + count; ++k)
   {
     const std::uint32_t t = arena[k];
     const double d2 = BoxDistance2(box, targets.Boxes[t]);
     if (d2 <= parentUpper2)
     {
-      order.emplace_back(d2, t);
+      inReach.emplace_back(d2, t);
     }
   }
   double nearest[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL };
@@ -185,12 +186,12 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
   // most of those still in the running after the first are visited anyway
   // (armadillo at 1/128: 7.6 of 9.6), so ordering them (a sort, earlier a
   // heap) cost more than the distances it saved.
-  if (!order.empty())
+  if (!inReach.empty())
   {
-    const auto nearestBox = std::min_element(order.begin(), order.end());
-    std::iter_swap(order.begin(), nearestBox);
-    visit(order.front().second);
-    for (auto e = order.begin() + 1; e != order.end(); ++e)
+    const auto nearestBox = std::min_element(inReach.begin(), inReach.end());
+    std::iter_swap(inReach.begin(), nearestBox);
+    visit(inReach.front().second);
+    for (auto e = inReach.begin() + 1; e != inReach.end(); ++e)
     {
       const double bound = largest();
       if (e->first < bound * bound)
@@ -209,7 +210,7 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
   // (Appended after the parent's entries were read: the arena may move.)
   const double upper2 = piece.Upper * piece.Upper;
   piece.First = arena.size();
-  for (const auto& [boxDistance2, t] : order)
+  for (const auto& [boxDistance2, t] : inReach)
   {
     if (boxDistance2 <= upper2)
     {
@@ -304,9 +305,9 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
     return estimate;
   }
   // Scratch reused across calls (one per thread): the candidate arena, its
-  // first entries every target; Evaluate's ordering.
+  // first entries every target; a piece's candidates in reach (Evaluate).
   thread_local std::vector<std::uint32_t> arena;
-  thread_local std::vector<std::pair<double, std::uint32_t>> order;
+  thread_local std::vector<std::pair<double, std::uint32_t>> inReach;
   thread_local std::vector<Box3> boxes;
   arena.resize(targets.size());
   boxes.resize(targets.size());
@@ -315,7 +316,7 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
     arena[t] = t;
     boxes[t] = targets[t].Bounds;
   }
-  Targets context{ targets, boxes, order, arena };
+  Targets context{ targets, boxes, inReach, arena };
   std::priority_queue<Piece> pieces;
   for (const SourceTriangle& s : sources)
   {
