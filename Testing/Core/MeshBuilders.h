@@ -1,5 +1,6 @@
 // Closed triangle meshes with known topology, generated for the core tests
-// (no files, no VTK): a cube, a UV torus and a subdivided icosahedron.
+// (no files, no VTK): a cube, a UV torus, a subdivided icosahedron and a
+// prism over a convex polygon.
 #pragma once
 
 #include "MeshSolid.h"
@@ -91,6 +92,48 @@ inline MeshSolid SphereMesh(const Vec3& c, double radius, int levels)
   for (Vec3& q : p)
   {
     q = c + tpc::Normalized(q) * radius;
+  }
+  return MeshSolid(p, t);
+}
+
+/// A prism along y, y in [y0, y1], over the convex polygon `section` in the
+/// (x, z) plane (either orientation), outward oriented: each side quad split
+/// by a diagonal (a flat edge), both ends capped by fans. Vertex k of the
+/// section is vertex k at y0 and k + section.size() at y1.
+inline MeshSolid PrismMesh(const std::vector<std::array<double, 2>>& section, double y0, double y1)
+{
+  const auto m = static_cast<std::uint32_t>(section.size());
+  std::vector<Vec3> p;
+  for (const double y : { y0, y1 })
+  {
+    for (const auto& s : section)
+    {
+      p.push_back({ s[0], y, s[1] });
+    }
+  }
+  double area = 0.0; // (twice the signed area in (x, z): positive counter-clockwise)
+  for (std::uint32_t k = 0; k < m; ++k)
+  {
+    area += section[k][0] * section[(k + 1) % m][1] - section[(k + 1) % m][0] * section[k][1];
+  }
+  Triangles t;
+  for (std::uint32_t k = 0; k < m; ++k)
+  {
+    const std::uint32_t a = k, b = (k + 1) % m;
+    t.push_back({ a, b + m, b });
+    t.push_back({ a, a + m, b + m });
+  }
+  for (std::uint32_t k = 1; k + 1 < m; ++k)
+  {
+    t.push_back({ 0, k, k + 1 });
+    t.push_back({ m, m + k + 1, m + k });
+  }
+  if ((area > 0) != (y1 > y0))
+  {
+    for (auto& tri : t)
+    {
+      std::swap(tri[1], tri[2]);
+    }
   }
   return MeshSolid(p, t);
 }

@@ -182,7 +182,10 @@ std::optional<CreaseTile> CreaseOnTile(const CsgLeaf& leaf, const PrimitiveSet& 
   {
     return std::nullopt;
   }
-  std::optional<CreaseTile> crease;
+  // The sharpest crease: the smallest cosine, ties broken by the edge's
+  // vertices (a total order, so a sub-tile holding it picks it too).
+  const EdgeUseOnTile* sharpest = nullptr;
+  double sharpestCosine = 2.0;
   for (std::size_t i = 0; i < uses.size(); i += 2)
   {
     const EdgeUseOnTile &p = uses[i], &q = uses[i + 1];
@@ -191,10 +194,21 @@ std::optional<CreaseTile> CreaseOnTile(const CsgLeaf& leaf, const PrimitiveSet& 
     {
       continue; // a gentle bend of the trace
     }
-    if (cosine > creaseCosine || crease)
+    if (cosine > creaseCosine)
     {
-      return std::nullopt; // a bend between gentle and a crease, or a second crease
+      return std::nullopt; // a bend between gentle and a crease
     }
+    if (!sharpest || cosine < sharpestCosine ||
+      (cosine == sharpestCosine && std::tie(p.A, p.B) < std::tie(sharpest->A, sharpest->B)))
+    {
+      sharpest = &uses[i];
+      sharpestCosine = cosine;
+    }
+  }
+  std::optional<CreaseTile> crease;
+  if (sharpest)
+  {
+    const EdgeUseOnTile &p = sharpest[0], &q = sharpest[1];
     CreaseTile found;
     found.X.Kind = CrossingKind::MeshEdge;
     found.X.Key = PlaneKey(axis, plane);

@@ -13,43 +13,18 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 
 using tpc::Vec3;
 using tpctest::SceneBuilder;
 
 namespace
 {
-/// A closed "tent": a prism lying along y whose ridge (x = 0.5, z = `height`)
-/// is a crease; its left roof is gently bent by `bend` at x = 0.25; every
-/// quad is split by a diagonal (a flat edge).
+/// A "tent": a prism lying along y whose ridge (x = 0.5, z = `height`) is a
+/// crease; its left roof is gently bent by `bend` at x = 0.25.
 tpc::MeshSolid Tent(double height, double bend)
 {
-  // Cross-section (x, z): (-0.2, -0.3) -> (0.25, h/2 + bend) -> (0.5, h) ->
-  // (1.2, -0.3).
-  const std::vector<std::array<double, 2>> section{ { -0.2, -0.3 }, { 0.25, 0.5 * height + bend }, { 0.5, height },
-    { 1.2, -0.3 } };
-  std::vector<Vec3> p;
-  for (const double y : { -0.5, 1.5 })
-  {
-    for (const auto& s : section)
-    {
-      p.push_back({ s[0], y, s[1] });
-    }
-  }
-  // Vertices 0..3 at y = -0.5, 4..7 at y = 1.5; roof quads (k, k+1) and the
-  // bottom (3, 0), both ends capped.
-  tpctest::Triangles t;
-  for (std::uint32_t k = 0; k < 4; ++k)
-  {
-    const std::uint32_t a = k, b = (k + 1) % 4;
-    t.push_back({ a, b + 4, b });
-    t.push_back({ a, a + 4, b + 4 });
-  }
-  t.push_back({ 0, 1, 2 });
-  t.push_back({ 0, 2, 3 });
-  t.push_back({ 4, 6, 5 });
-  t.push_back({ 4, 7, 6 });
-  return tpc::MeshSolid(p, t);
+  return tpctest::PrismMesh({ { -0.2, -0.3 }, { 0.25, 0.5 * height + bend }, { 0.5, height }, { 1.2, -0.3 } }, -0.5, 1.5);
 }
 
 struct Edge
@@ -143,6 +118,79 @@ TEST(CreaseCrossing, CreaseTilesAndTheirTraceHalves)
   // A tile away from the ridge holds no crease.
   tile.V1 = latticeX(0.375);
   EXPECT_FALSE(tpc::CreaseOnTile(*leaf, b.Scene.Primitives, grid, axis, plane, tile).has_value());
+}
+
+TEST(CreaseCrossing, TileWithTwoCreasesRunsThroughTheSharper)
+{
+  // A roof chamfered at the top: creases at x = 0.45 (about 59 degrees) and
+  // x = 0.55 (about 68, sharper), 0.1 apart - a narrow chamfer, as on CAD
+  // parts. A tile holding both is a crease tile through the sharper; each of
+  // its sub-tiles holding one crease is a crease tile through that one (a
+  // sub-tile holding the sharper picks it again: the final loop, however
+  // crack patching refines the tile, runs through it).
+  SceneBuilder b;
+  b.Finish(b.Mesh(tpctest::PrismMesh({ { -0.2, -0.3 }, { 0.45, 0.8 }, { 0.55, 0.8 }, { 1.0, -0.3 } }, -0.5, 1.5)));
+  const double shift = 0.3 / 128; // (creases off the lattice planes, as above)
+  const tpc::RootGrid grid = tpctest::SingleRoot({ -1 - shift, -1, -1 }, 2.0, 8);
+  const auto lattice = [](double x) { return static_cast<tpc::LatticeIndex>(std::llround((x + 1) * 128)); };
+  const auto latticeX = [&](double x) { return static_cast<tpc::LatticeIndex>(std::llround((x + 1 + shift) * 128)); };
+  const auto pruned =
+    tpc::CsgExpression::Prune(b.Scene.Expression, { { -1, -1, -1 }, { 1, 1, 1 } }, b.Scene.Primitives).Expression;
+  const tpc::CsgLeaf* leaf = tpc::LoneMeshLeaf(*pruned);
+  ASSERT_NE(leaf, nullptr);
+  const int axis = 1; // the face y = 0.5: u = z, v = x
+  const tpc::LatticeIndex plane = lattice(0.5);
+  const auto creaseOn = [&](double x0, double x1) {
+    tpc::FaceTile tile;
+    tile.U0 = lattice(0.5);
+    tile.U1 = lattice(0.875);
+    tile.V0 = latticeX(x0);
+    tile.V1 = latticeX(x1);
+    return tpc::CreaseOnTile(*leaf, b.Scene.Primitives, grid, axis, plane, tile);
+  };
+  const auto both = creaseOn(0.4375, 0.5625);
+  ASSERT_TRUE(both.has_value());
+  EXPECT_NEAR(both->Position[0], 0.55, 1e-12);
+  EXPECT_NEAR(both->Position[2], 0.8, 1e-12);
+  // The half towards the other crease passes it before leaving the tile:
+  // the chord's deviation (MeshCellError.h) sees it.
+  const auto passes = [](const std::vector<Vec3>& half, double x) {
+    return std::any_of(half.begin(), half.end(), [&](const Vec3& p) {
+      return std::fabs(p[0] - x) < 1e-12 && std::fabs(p[2] - 0.8) < 1e-12;
+    });
+  };
+  EXPECT_TRUE(passes(both->Sides[0], 0.45) || passes(both->Sides[1], 0.45));
+  const auto left = creaseOn(0.4375, 0.5);
+  ASSERT_TRUE(left.has_value());
+  EXPECT_NEAR(left->Position[0], 0.45, 1e-12);
+  const auto right = creaseOn(0.5, 0.5625);
+  ASSERT_TRUE(right.has_value());
+  EXPECT_TRUE(right->X.SameVertex(both->X));
+
+  // Equally sharp creases, exactly (a thin wall's top: two right angles,
+  // normals along the axes): the edge with the smaller vertex ids, whichever
+  // tile holding both is asked.
+  SceneBuilder symmetric;
+  symmetric.Finish(
+    symmetric.Mesh(tpctest::PrismMesh({ { 0.45, -0.3 }, { 0.45, 0.8 }, { 0.55, 0.8 }, { 0.55, -0.3 } }, -0.5, 1.5)));
+  const auto symmetricLeaf = tpc::CsgExpression::Prune(
+    symmetric.Scene.Expression, { { -1, -1, -1 }, { 1, 1, 1 } }, symmetric.Scene.Primitives).Expression;
+  std::optional<tpc::Crossing> first;
+  for (const double x0 : { 0.4375, 0.375, 0.25 })
+  {
+    tpc::FaceTile tile;
+    tile.U0 = lattice(0.5);
+    tile.U1 = lattice(0.875);
+    tile.V0 = latticeX(x0);
+    tile.V1 = latticeX(0.5625);
+    const auto crease = tpc::CreaseOnTile(
+      *tpc::LoneMeshLeaf(*symmetricLeaf), symmetric.Scene.Primitives, grid, axis, plane, tile);
+    ASSERT_TRUE(crease.has_value()) << x0;
+    // Vertices 0..3 at y = -0.5, 4..7 at y = 1.5: the left crease's edge
+    // (1, 5) before the right one's (2, 6).
+    EXPECT_EQ(crease->X.Partner, (std::uint64_t(1) << 32) | 5u) << x0;
+    EXPECT_NEAR(crease->Position[0], 0.45, 1e-12) << x0;
+  }
 }
 
 TEST(CreaseCrossing, TiltedCubesEdgesRunAlongOutputEdges)

@@ -368,6 +368,53 @@ TEST(MeshCellError, CertificatesBoundTheMeasuredDistanceOnMeshes)
   }
 }
 
+TEST(MeshCellError, CertificatesBoundTheMeasuredDistanceAlongNarrowChamfers)
+{
+  // A tilted bar whose long edges are chamfered narrower than the tolerance
+  // (0.02 wide, 45 degrees: two creases 0.37 of the tolerance apart at 1/64,
+  // 0.74 at 1/128, as on CAD parts): the tiles holding both creases are drawn through the sharper
+  // (CreaseCrossing.h), and every certificate still bounds the brute-force
+  // distance - around the other crease too, which a chord now cuts.
+  const double w = 0.02;
+  const tpc::MeshSolid bar = tpctest::PrismMesh({ { -0.5 + w, -0.3 }, { 0.5 - w, -0.3 }, { 0.5, -0.3 + w },
+                                                   { 0.5, 0.3 - w }, { 0.5 - w, 0.3 }, { -0.5 + w, 0.3 },
+                                                   { -0.5, 0.3 - w }, { -0.5, -0.3 + w } },
+    -0.6, 0.6);
+  const double c1 = std::cos(0.4), s1 = std::sin(0.4), c2 = std::cos(0.3), s2 = std::sin(0.3);
+  std::vector<Vec3> points;
+  for (const Vec3& p : bar.Points())
+  {
+    const Vec3 q(c1 * p[0] - s1 * p[1], s1 * p[0] + c1 * p[1], p[2]);
+    points.push_back({ q[0], c2 * q[1] - s2 * q[2], s2 * q[1] + c2 * q[2] });
+  }
+  SceneBuilder b;
+  b.Finish(b.Mesh(tpc::MeshSolid(points, bar.Triangles())));
+  // Measured: at 1/64, 48 triangles (8 cells, one corner of the bar each; the
+  // chamfers are within 0.26 of the tolerance of one crease); at 1/128, 1 680.
+  // With those tiles drawn straight: 1 640 and 2 680.
+  struct Case
+  {
+    double Tolerance;
+    std::size_t Most; ///< triangles
+  };
+  for (const Case& c : { Case{ 1.0 / 64, 100 }, Case{ 1.0 / 128, 2000 } })
+  {
+    const tpctest::ContourRun r = tpctest::Contour(b.Scene, { { -1, -1, -1 }, { 1, 1, 1 } }, c.Tolerance);
+    EXPECT_TRUE(r.Guaranteed);
+    EXPECT_EQ(r.Report.Components, 1);
+    EXPECT_EQ(r.Report.Genus, 0);
+    EXPECT_LE(r.HausdorffBound, r.Tolerance * (1 + 1e-9));
+    const Measured m = CheckEveryMeshCertificate(r, b.Scene.Primitives.Meshes[0]);
+    EXPECT_GE(m.OversizedCells, 8u);
+    EXPECT_GT(m.WorstRatio, 0.5); // not vacuous
+    EXPECT_LE(r.Extraction.Mesh.Triangles.size(), c.Most);
+    std::cout << "chamfered bar 1/" << 1 / c.Tolerance << ": " << r.Extraction.Mesh.Triangles.size()
+              << " triangles, " << m.Cells << " certified mesh cells (" << m.OversizedCells
+              << " larger than the tolerance), bound " << r.HausdorffBound / r.Tolerance
+              << " tolerance, worst measured/certified " << m.WorstRatio << "\n";
+  }
+}
+
 TEST(MeshCellError, FinalLoopMustHoldTheCellsOwnLoopInOrder)
 {
   // The prediction applies to a final loop that holds the cell's own loop's
