@@ -187,9 +187,11 @@ public:
   ///@{
   /**
    * Domain (xmin, xmax, ymin, ymax, zmin, zmax). The solid is clipped to it
-   * (and capped, so the surface stays closed). Default: invalid (xmin > xmax),
-   * meaning "derive from the inputs"; an unbounded solid (a plane, a cylinder)
-   * then needs explicit Bounds.
+   * (and capped, so the surface stays closed) where it reaches a side of it;
+   * a side that the solid's bounds lie strictly within cuts nothing and is
+   * left out (a mesh inside Bounds is remeshed as one mesh). Default: invalid
+   * (xmin > xmax), meaning "derive from the inputs"; an unbounded solid (a
+   * plane, a cylinder) then needs explicit Bounds.
    */
   vtkSetVector6Macro(Bounds, double);
   vtkGetVector6Macro(Bounds, double);

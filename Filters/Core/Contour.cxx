@@ -286,25 +286,41 @@ bool VerifyInputs(const ContourScene& scene, const Box3& domain, Run& run)
   return true;
 }
 
-/// Intersects `solid` with the six planes of `box` (capping it there) and
-/// returns the root domain: `box` grown by 1e-3 of its diagonal, which keeps
-/// the cap faces off the grid's outer boundary without enlarging the grid.
+/// Intersects `solid` with the planes of `box` it may reach (capping it
+/// there) and returns the root domain: `box` grown by 1e-3 of its diagonal,
+/// which keeps the cap faces off the grid's outer boundary without enlarging
+/// the grid. A face whose side the solid's box (a superset of the solid,
+/// CsgTerm::Bounds) lies strictly inside of cuts nothing: leaving it out
+/// keeps the solid as it is - a mesh inside Bounds stays one mesh, with exact
+/// cells and crease tiles (IsOneMesh), instead of a mesh cut by six planes
+/// that never meet it.
 Box3 ClipToBounds(CsgTerm& solid, PrimitiveSet& primitives, const Box3& box)
 {
+  const SolidBounds reach = solid.Bounds(primitives);
+  const double margin = 1e-9 * box.Diagonal(); // (far beyond the bounds' rounding)
   std::vector<CsgTerm> operands{ solid };
   for (int a = 0; a < 3; ++a)
   {
     Vec3 n, o;
     n[a] = 1.0;
     o[a] = box.hi[a];
-    primitives.Quadrics.push_back(Quadric::Plane(o, n));
-    operands.push_back(CsgTerm::Primitive(static_cast<int>(primitives.Quadrics.size() - 1)));
+    if (!(reach.Box.hi[a] < box.hi[a] - margin))
+    {
+      primitives.Quadrics.push_back(Quadric::Plane(o, n));
+      operands.push_back(CsgTerm::Primitive(static_cast<int>(primitives.Quadrics.size() - 1)));
+    }
     n[a] = -1.0;
     o[a] = box.lo[a];
-    primitives.Quadrics.push_back(Quadric::Plane(o, n));
-    operands.push_back(CsgTerm::Primitive(static_cast<int>(primitives.Quadrics.size() - 1)));
+    if (!(reach.Box.lo[a] > box.lo[a] + margin))
+    {
+      primitives.Quadrics.push_back(Quadric::Plane(o, n));
+      operands.push_back(CsgTerm::Primitive(static_cast<int>(primitives.Quadrics.size() - 1)));
+    }
   }
-  solid = CsgTerm::Combine(CsgTerm::Op::Intersection, std::move(operands));
+  if (operands.size() > 1)
+  {
+    solid = CsgTerm::Combine(CsgTerm::Op::Intersection, std::move(operands));
+  }
   return box.Grown(1e-3);
 }
 

@@ -82,6 +82,25 @@ struct Measured
   double WorstRatio = 0.0;        ///< largest measured distance / certificate
 };
 
+/// A bar 1 x 1.2 x 0.6 tilted about two axes, its four long edges chamfered
+/// 0.02 wide at 45 degrees: two creases 0.02 apart along each.
+tpc::MeshSolid ChamferedBar()
+{
+  const double w = 0.02;
+  const tpc::MeshSolid bar = tpctest::PrismMesh({ { -0.5 + w, -0.3 }, { 0.5 - w, -0.3 }, { 0.5, -0.3 + w },
+                                                   { 0.5, 0.3 - w }, { 0.5 - w, 0.3 }, { -0.5 + w, 0.3 },
+                                                   { -0.5, 0.3 - w }, { -0.5, -0.3 + w } },
+    -0.6, 0.6);
+  const double c1 = std::cos(0.4), s1 = std::sin(0.4), c2 = std::cos(0.3), s2 = std::sin(0.3);
+  std::vector<Vec3> points;
+  for (const Vec3& p : bar.Points())
+  {
+    const Vec3 q(c1 * p[0] - s1 * p[1], s1 * p[0] + c1 * p[1], p[2]);
+    points.push_back({ q[0], c2 * q[1] - s2 * q[2], s2 * q[1] + c2 * q[2] });
+  }
+  return tpc::MeshSolid(points, bar.Triangles());
+}
+
 /// In every mesh cell with a certified error: the distance from the cell's
 /// output triangles (sampled) to the input mesh, and from points of the input
 /// mesh in the cell (sampled) to the output, are at most the cell's
@@ -375,20 +394,8 @@ TEST(MeshCellError, CertificatesBoundTheMeasuredDistanceAlongNarrowChamfers)
   // 0.74 at 1/128, as on CAD parts): the tiles holding both creases are drawn through the sharper
   // (CreaseCrossing.h), and every certificate still bounds the brute-force
   // distance - around the other crease too, which a chord now cuts.
-  const double w = 0.02;
-  const tpc::MeshSolid bar = tpctest::PrismMesh({ { -0.5 + w, -0.3 }, { 0.5 - w, -0.3 }, { 0.5, -0.3 + w },
-                                                   { 0.5, 0.3 - w }, { 0.5 - w, 0.3 }, { -0.5 + w, 0.3 },
-                                                   { -0.5, 0.3 - w }, { -0.5, -0.3 + w } },
-    -0.6, 0.6);
-  const double c1 = std::cos(0.4), s1 = std::sin(0.4), c2 = std::cos(0.3), s2 = std::sin(0.3);
-  std::vector<Vec3> points;
-  for (const Vec3& p : bar.Points())
-  {
-    const Vec3 q(c1 * p[0] - s1 * p[1], s1 * p[0] + c1 * p[1], p[2]);
-    points.push_back({ q[0], c2 * q[1] - s2 * q[2], s2 * q[1] + c2 * q[2] });
-  }
   SceneBuilder b;
-  b.Finish(b.Mesh(tpc::MeshSolid(points, bar.Triangles())));
+  b.Finish(b.Mesh(ChamferedBar()));
   // Measured: at 1/64, 48 triangles (8 cells, one corner of the bar each; the
   // chamfers are within 0.26 of the tolerance of one crease); at 1/128, 1 680.
   // With those tiles drawn straight: 1 640 and 2 680.
@@ -413,6 +420,40 @@ TEST(MeshCellError, CertificatesBoundTheMeasuredDistanceAlongNarrowChamfers)
               << " larger than the tolerance), bound " << r.HausdorffBound / r.Tolerance
               << " tolerance, worst measured/certified " << m.WorstRatio << "\n";
   }
+}
+
+TEST(MeshCellError, BoundsHoldingTheMeshLeaveItOneMesh)
+{
+  // Bounds that hold the whole mesh cut nothing: the scene stays one mesh
+  // (ClipToBounds, Contour.cxx) - exact cells allowed, the chamfers' tiles
+  // predicted as crease tiles - as without Bounds; before, six planes that
+  // never met the mesh made it a CSG scene (1 640 triangles here instead of
+  // 48). Bounds through the mesh still cap it.
+  SceneBuilder b;
+  b.Finish(b.Mesh(ChamferedBar()));
+  const auto run = [&](const tpc::Box3& bounds) {
+    tpc::ContourScene input;
+    input.Primitives = b.Scene.Primitives;
+    tpc::SceneInput solid;
+    solid.Name = "The bar";
+    solid.Solid = b.Scene.Solid;
+    input.Inputs.push_back(std::move(solid));
+    tpc::ContourParameters p;
+    p.Bounds = bounds;
+    p.Tolerance = 1.0 / 64;
+    return tpc::Contour(std::move(input), p);
+  };
+  const tpc::ContourResult holding = run({ { -1, -1, -1 }, { 1, 1, 1 } });
+  EXPECT_TRUE(holding.Report.Guaranteed);
+  EXPECT_TRUE(tpc::IsOneMesh(*holding.Subdivision().Octree.SceneExpression));
+  EXPECT_TRUE(holding.Parameters.ExactCells);
+  EXPECT_LE(holding.Surface().Triangles.size(), 100u);
+  EXPECT_EQ(std::count(holding.TriangleSolid.begin(), holding.TriangleSolid.end(), -1), 0);
+  // z = 0.2 cuts the bar (its corners reach |z| = 0.48): capped there.
+  const tpc::ContourResult cut = run({ { -1, -1, -1 }, { 1, 1, 0.2 } });
+  EXPECT_TRUE(cut.Report.Guaranteed);
+  EXPECT_FALSE(tpc::IsOneMesh(*cut.Subdivision().Octree.SceneExpression));
+  EXPECT_GT(std::count(cut.TriangleSolid.begin(), cut.TriangleSolid.end(), -1), 0);
 }
 
 TEST(MeshCellError, FinalLoopMustHoldTheCellsOwnLoopInOrder)
