@@ -297,7 +297,16 @@ bool VerifyInputs(const ContourScene& scene, const Box3& domain, Run& run)
 Box3 ClipToBounds(CsgTerm& solid, PrimitiveSet& primitives, const Box3& box)
 {
   const SolidBounds reach = solid.Bounds(primitives);
-  const double margin = 1e-9 * box.Diagonal(); // (far beyond the bounds' rounding)
+  // (Far beyond the bounds' rounding - exact for meshes, padded for boxes and
+  // quadrics - relative to the box and to its coordinates' magnitude; were a
+  // quadric's bounds off by more, the solid would poke out of Bounds by that
+  // much, uncapped, still inside the root domain.)
+  double magnitude = 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    magnitude = std::max({ magnitude, std::fabs(box.lo[a]), std::fabs(box.hi[a]) });
+  }
+  const double margin = 1e-9 * box.Diagonal() + 1e-12 * magnitude;
   std::vector<CsgTerm> operands{ solid };
   for (int a = 0; a < 3; ++a)
   {
@@ -614,7 +623,8 @@ ContourResult Contour(ContourScene scene, const ContourParameters& parameters, c
     return result;
   }
   // A margin of 5 % keeps the surface away from the grid's outer boundary;
-  // clipped solids are capped inside the Bounds instead.
+  // with Bounds, the root domain is the Bounds grown by 1e-3, and the solid is
+  // capped where it reaches them (ClipToBounds).
   const PrimitiveOwners owners(scene);
   const Box3 rootDomain =
     parameters.Bounds ? ClipToBounds(solid, scene.Primitives, *domain) : domain->Grown(0.05);

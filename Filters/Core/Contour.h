@@ -77,8 +77,8 @@ struct ContourParameters
   /// default is the lattice's end (2^-41 of the domain; RootGrid.h).
   int MaximumDepth = DeepestMaximumDepth;
   std::size_t MaximumNumberOfCells = 10000000; ///< (at least 8 are used)
-  /// Clip the solid to this box (capped: the planes of its faces bound the
-  /// solid) and contour only there.
+  /// Clip the solid to this box (capped: the planes of the faces it reaches
+  /// bound the solid; ClipToBounds) and contour only there.
   std::optional<Box3> Bounds;
   /// Lay the lattice over this box (with the usual margin) instead of the
   /// solid's bounding box, without clipping; it must contain the solid (to

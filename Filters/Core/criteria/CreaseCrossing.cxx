@@ -194,9 +194,9 @@ std::optional<CreaseTile> CreaseOnTile(const CsgLeaf& leaf, const PrimitiveSet& 
     {
       continue; // a gentle bend of the trace
     }
-    if (cosine > creaseCosine)
+    if (!(cosine <= creaseCosine))
     {
-      return std::nullopt; // a bend between gentle and a crease
+      return std::nullopt; // a bend between gentle and a crease (or no angle: NaN)
     }
     if (!sharpest || cosine < sharpestCosine ||
       (cosine == sharpestCosine && std::tie(p.A, p.B) < std::tie(sharpest->A, sharpest->B)))

@@ -25,8 +25,9 @@
 // chords (MeshCellError.h bounds that from the halves, which CreaseOnTile
 // walks). Every sub-tile of a crease tile holding x is a crease tile through
 // x too (the same edges, fewer of them: x is still the sharpest); one without
-// x holds pieces of one half, and is drawn through that half's sharpest
-// crease where it holds one: however crack patching refines a crease tile,
+// x holds pieces of one half, and is drawn through the sharpest crease
+// crossing it where it passes these tests itself, else straight - either way
+// through points of that half: however crack patching refines a crease tile,
 // the final loop runs through x and stays on the trace's halves.
 //
 // Both cells sharing a tile must draw it alike: each decides from the tile

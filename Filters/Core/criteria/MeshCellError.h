@@ -50,9 +50,10 @@
 // sharpest crease - and x was placed as decided, so inside every tile the
 // exact tests put it in, MeshArrangement.h), and every other sub-tile holds
 // pieces of one half (where one holds another crease of that half, as a
-// narrow chamfer's second edge, it is drawn through that crease's crossing:
-// a point of the half too); so the final loop replaces a -> x and x -> b by
-// points of the half each spans, and the argument above holds half by half. Where the extraction draws t straight after all (a neighbour
+// narrow chamfer's second edge, it may be drawn through that crease's
+// crossing: a point of the half too); so the final loop replaces a -> x and
+// x -> b by points of the half each spans, and the argument above holds half
+// by half. Where the extraction draws t straight after all (a neighbour
 // holding another leaf, or a coarser face tiling from crack patching), the
 // final loop lacks x or another point of the cell's loop: FinalLoopRefines
 // refuses the prediction and the final patch is certified on its own.

@@ -24,7 +24,8 @@ namespace
 /// crease; its left roof is gently bent by `bend` at x = 0.25.
 tpc::MeshSolid Tent(double height, double bend)
 {
-  return tpctest::PrismMesh({ { -0.2, -0.3 }, { 0.25, 0.5 * height + bend }, { 0.5, height }, { 1.2, -0.3 } }, -0.5, 1.5);
+  return tpctest::PrismMesh(
+    { { -0.2, -0.3 }, { 0.25, 0.5 * height + bend }, { 0.5, height }, { 1.2, -0.3 } }, -0.5, 1.5);
 }
 
 struct Edge

@@ -83,7 +83,7 @@ struct Measured
 };
 
 /// A bar 1 x 1.2 x 0.6 tilted about two axes, its four long edges chamfered
-/// 0.02 wide at 45 degrees: two creases 0.02 apart along each.
+/// at 45 degrees, 0.028 wide: two creases 0.028 apart along each.
 tpc::MeshSolid ChamferedBar()
 {
   const double w = 0.02;
@@ -389,16 +389,17 @@ TEST(MeshCellError, CertificatesBoundTheMeasuredDistanceOnMeshes)
 
 TEST(MeshCellError, CertificatesBoundTheMeasuredDistanceAlongNarrowChamfers)
 {
-  // A tilted bar whose long edges are chamfered narrower than the tolerance
-  // (0.02 wide, 45 degrees: two creases 0.37 of the tolerance apart at 1/64,
-  // 0.74 at 1/128, as on CAD parts): the tiles holding both creases are drawn through the sharper
+  // A tilted bar whose long edges are chamfered about as narrow as the
+  // tolerance or narrower (two creases 0.028 apart: half the tolerance at
+  // 1/64, about the tolerance at 1/128, as on CAD parts): the tiles holding both creases are drawn through the sharper
   // (CreaseCrossing.h), and every certificate still bounds the brute-force
   // distance - around the other crease too, which a chord now cuts.
   SceneBuilder b;
   b.Finish(b.Mesh(ChamferedBar()));
-  // Measured: at 1/64, 48 triangles (8 cells, one corner of the bar each; the
-  // chamfers are within 0.26 of the tolerance of one crease); at 1/128, 1 680.
-  // With those tiles drawn straight: 1 640 and 2 680.
+  // Measured: at 1/64, 48 triangles (8 cells, one corner of the bar each; a
+  // chamfer lies within 0.02, 0.37 of the tolerance, of the chords through
+  // its sharper crease); at 1/128, 1 680. With those tiles drawn straight:
+  // 1 640 and 2 680.
   struct Case
   {
     double Tolerance;
@@ -422,20 +423,19 @@ TEST(MeshCellError, CertificatesBoundTheMeasuredDistanceAlongNarrowChamfers)
   }
 }
 
-TEST(MeshCellError, BoundsHoldingTheMeshLeaveItOneMesh)
+TEST(MeshCellError, BoundsHoldingTheSolidCutNothing)
 {
   // Bounds that hold the whole mesh cut nothing: the scene stays one mesh
   // (ClipToBounds, Contour.cxx) - exact cells allowed, the chamfers' tiles
   // predicted as crease tiles - as without Bounds; before, six planes that
-  // never met the mesh made it a CSG scene (1 640 triangles here instead of
-  // 48). Bounds through the mesh still cap it.
-  SceneBuilder b;
-  b.Finish(b.Mesh(ChamferedBar()));
-  const auto run = [&](const tpc::Box3& bounds) {
+  // never met the mesh made it a CSG scene (more than 100 triangles here,
+  // its chamfers' tiles drawn straight; 48 as one mesh). Bounds through the
+  // solid still cap it, on the sides it reaches only.
+  const auto run = [](const SceneBuilder& b, const tpc::Box3& bounds) {
     tpc::ContourScene input;
     input.Primitives = b.Scene.Primitives;
     tpc::SceneInput solid;
-    solid.Name = "The bar";
+    solid.Name = "The solid";
     solid.Solid = b.Scene.Solid;
     input.Inputs.push_back(std::move(solid));
     tpc::ContourParameters p;
@@ -443,17 +443,36 @@ TEST(MeshCellError, BoundsHoldingTheMeshLeaveItOneMesh)
     p.Tolerance = 1.0 / 64;
     return tpc::Contour(std::move(input), p);
   };
-  const tpc::ContourResult holding = run({ { -1, -1, -1 }, { 1, 1, 1 } });
+  const auto caps = [](const tpc::ContourResult& r) {
+    return std::count(r.TriangleSolid.begin(), r.TriangleSolid.end(), -1);
+  };
+  SceneBuilder bar;
+  bar.Finish(bar.Mesh(ChamferedBar()));
+  const tpc::ContourResult holding = run(bar, { { -1, -1, -1 }, { 1, 1, 1 } });
   EXPECT_TRUE(holding.Report.Guaranteed);
   EXPECT_TRUE(tpc::IsOneMesh(*holding.Subdivision().Octree.SceneExpression));
   EXPECT_TRUE(holding.Parameters.ExactCells);
   EXPECT_LE(holding.Surface().Triangles.size(), 100u);
-  EXPECT_EQ(std::count(holding.TriangleSolid.begin(), holding.TriangleSolid.end(), -1), 0);
-  // z = 0.2 cuts the bar (its corners reach |z| = 0.48): capped there.
-  const tpc::ContourResult cut = run({ { -1, -1, -1 }, { 1, 1, 0.2 } });
+  EXPECT_EQ(caps(holding), 0);
+  // z = 0.2 cuts the bar (its corners reach |z| = 0.5): capped there.
+  const tpc::ContourResult cut = run(bar, { { -1, -1, -1 }, { 1, 1, 0.2 } });
   EXPECT_TRUE(cut.Report.Guaranteed);
   EXPECT_FALSE(tpc::IsOneMesh(*cut.Subdivision().Octree.SceneExpression));
-  EXPECT_GT(std::count(cut.TriangleSolid.begin(), cut.TriangleSolid.end(), -1), 0);
+  EXPECT_GT(caps(cut), 0);
+  // Quadrics (their bounds are computed, not read off vertices): a sphere
+  // minus an ellipsoid inside Bounds keeps its three nodes; Bounds through
+  // the sphere's top add that one plane.
+  SceneBuilder ball;
+  ball.Finish(SceneBuilder::Difference(
+    { ball.Sphere({ 0.1, 0, 0 }, 0.6), ball.Ellipsoid({ 0.1, 0, 0.2 }, { 0.2, 0.3, 0.25 }) }));
+  const tpc::ContourResult inside = run(ball, { { -0.6, -0.7, -0.7 }, { 0.8, 0.7, 0.7 } });
+  EXPECT_TRUE(inside.Report.Guaranteed);
+  EXPECT_EQ(inside.Subdivision().Octree.SceneExpression->NodeCount(), 3u);
+  EXPECT_EQ(caps(inside), 0);
+  const tpc::ContourResult top = run(ball, { { -0.6, -0.7, -0.7 }, { 0.8, 0.7, 0.5 } });
+  EXPECT_TRUE(top.Report.Guaranteed);
+  EXPECT_EQ(top.Subdivision().Octree.SceneExpression->NodeCount(), 5u);
+  EXPECT_GT(caps(top), 0);
 }
 
 TEST(MeshCellError, FinalLoopMustHoldTheCellsOwnLoopInOrder)
