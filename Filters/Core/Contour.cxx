@@ -301,29 +301,26 @@ Box3 ClipToBounds(CsgTerm& solid, PrimitiveSet& primitives, const Box3& box)
   // quadrics - relative to the box and to its coordinates' magnitude; were a
   // quadric's bounds off by more, the solid would poke out of Bounds by that
   // much, uncapped, still inside the root domain.)
-  double magnitude = 0.0;
-  for (int a = 0; a < 3; ++a)
-  {
-    magnitude = std::max({ magnitude, std::fabs(box.lo[a]), std::fabs(box.hi[a]) });
-  }
-  const double margin = 1e-9 * box.Diagonal() + 1e-12 * magnitude;
+  const double margin = 1e-9 * box.Diagonal() + 1e-12 * box.Magnitude();
   std::vector<CsgTerm> operands{ solid };
+  const auto cap = [&](const Vec3& origin, const Vec3& normal) {
+    primitives.Quadrics.push_back(Quadric::Plane(origin, normal));
+    operands.push_back(CsgTerm::Primitive(static_cast<int>(primitives.Quadrics.size() - 1)));
+  };
   for (int a = 0; a < 3; ++a)
   {
-    Vec3 n, o;
-    n[a] = 1.0;
-    o[a] = box.hi[a];
+    Vec3 normal, origin;
+    normal[a] = 1.0;
+    origin[a] = box.hi[a];
     if (!(reach.Box.hi[a] < box.hi[a] - margin))
     {
-      primitives.Quadrics.push_back(Quadric::Plane(o, n));
-      operands.push_back(CsgTerm::Primitive(static_cast<int>(primitives.Quadrics.size() - 1)));
+      cap(origin, normal);
     }
-    n[a] = -1.0;
-    o[a] = box.lo[a];
+    normal[a] = -1.0;
+    origin[a] = box.lo[a];
     if (!(reach.Box.lo[a] > box.lo[a] + margin))
     {
-      primitives.Quadrics.push_back(Quadric::Plane(o, n));
-      operands.push_back(CsgTerm::Primitive(static_cast<int>(primitives.Quadrics.size() - 1)));
+      cap(origin, normal);
     }
   }
   if (operands.size() > 1)

@@ -62,6 +62,18 @@ inline bool Guaranteed(const ContourRun& r) { return r.Guaranteed; }
 /// gives the solid, so that the surface stays off the grid's outer boundary).
 inline tpc::Box3 GrownDomain(const tpc::Box3& bounds) { return bounds.Grown(0.05); }
 
+/// `scene` as the core's entry point takes it: one input, the test scene.
+inline tpc::ContourScene ContourSceneOf(const Scene& scene)
+{
+  tpc::ContourScene input;
+  input.Primitives = scene.Primitives;
+  tpc::SceneInput solid;
+  solid.Name = "The test scene";
+  solid.Solid = scene.Solid;
+  input.Inputs.push_back(std::move(solid));
+  return input;
+}
+
 /// A whole run through the core's entry point (tpc::Contour): the lattice laid
 /// over `bounds` (Region: grown by the usual margin, not clipped), the
 /// tolerance relative to its diagonal, trying up to `placements` lattice
@@ -71,19 +83,13 @@ inline ContourRun Contour(const Scene& scene, const tpc::Box3& bounds, double re
   int maxDepth = tpc::DeepestMaximumDepth, int placements = tpc::LatticePlacements, std::size_t maxCells = 10000000,
   const tpc::ProgressCallback& progress = nullptr)
 {
-  tpc::ContourScene input;
-  input.Primitives = scene.Primitives;
-  tpc::SceneInput solid;
-  solid.Name = "The test scene";
-  solid.Solid = scene.Solid;
-  input.Inputs.push_back(std::move(solid));
   tpc::ContourParameters p;
   p.Region = bounds;
   p.Tolerance = relativeTolerance;
   p.MaximumDepth = maxDepth;
   p.MaximumNumberOfCells = maxCells;
   p.LatticePlacements = placements;
-  tpc::ContourResult result = tpc::Contour(std::move(input), p, tpc::SequentialFor, progress);
+  tpc::ContourResult result = tpc::Contour(ContourSceneOf(scene), p, tpc::SequentialFor, progress);
   ContourRun r;
   r.Messages = std::move(result.Messages);
   r.Subdivision = std::move(result.Placed.Result);

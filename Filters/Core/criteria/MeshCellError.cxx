@@ -224,13 +224,7 @@ double ChordDeviation(const std::vector<ConvexPolygon>& surface, const Box3& til
 
 double RoundingSlack(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell)
 {
-  const Box3& bounds = primitives.Meshes[leaf.Primitive].Bounds();
-  double magnitude = 0.0;
-  for (int a = 0; a < 3; ++a)
-  {
-    magnitude = std::max({ magnitude, std::fabs(bounds.lo[a]), std::fabs(bounds.hi[a]), std::fabs(cell.lo[a]),
-      std::fabs(cell.hi[a]) });
-  }
+  const double magnitude = std::max(primitives.Meshes[leaf.Primitive].Bounds().Magnitude(), cell.Magnitude());
   return 4096.0 * DBL_EPSILON * magnitude + 1e-12 * cell.Diagonal();
 }
 
@@ -375,12 +369,7 @@ bool FinalLoopRefines(const std::vector<Vec3>& own, const std::vector<Vec3>& fin
   }
   // (Crossings named by a finer sub-edge are placed on the same triangle's
   // plane, then kept strictly inside their sub-edge: equal up to an ulp.)
-  double magnitude = 0.0;
-  for (int a = 0; a < 3; ++a)
-  {
-    magnitude = std::max({ magnitude, std::fabs(cell.lo[a]), std::fabs(cell.hi[a]) });
-  }
-  const double tolerance = 64.0 * DBL_EPSILON * magnitude;
+  const double tolerance = 64.0 * DBL_EPSILON * cell.Magnitude();
   const auto same = [&](const Vec3& x, const Vec3& y) {
     for (int a = 0; a < 3; ++a)
     {

@@ -64,6 +64,17 @@ struct Box3
   Vec3 Center() const { return (lo + hi) * 0.5; }
   double Width(int axis) const { return hi[axis] - lo[axis]; }
   double Diagonal() const { return Norm(hi - lo); }
+  /// The largest absolute coordinate of its corners (the scale of rounding
+  /// errors in computations on points in it).
+  double Magnitude() const
+  {
+    double m = 0.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      m = std::max({ m, std::fabs(lo[a]), std::fabs(hi[a]) });
+    }
+    return m;
+  }
   /// The box grown on every side by `fraction` of its diagonal.
   Box3 Grown(double fraction) const
   {

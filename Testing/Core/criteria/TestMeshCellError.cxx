@@ -432,16 +432,13 @@ TEST(MeshCellError, BoundsHoldingTheSolidCutNothing)
   // its chamfers' tiles drawn straight; 48 as one mesh). Bounds through the
   // solid still cap it, on the sides it reaches only.
   const auto run = [](const SceneBuilder& b, const tpc::Box3& bounds) {
-    tpc::ContourScene input;
-    input.Primitives = b.Scene.Primitives;
-    tpc::SceneInput solid;
-    solid.Name = "The solid";
-    solid.Solid = b.Scene.Solid;
-    input.Inputs.push_back(std::move(solid));
     tpc::ContourParameters p;
     p.Bounds = bounds;
     p.Tolerance = 1.0 / 64;
-    return tpc::Contour(std::move(input), p);
+    tpc::ContourResult r = tpc::Contour(tpctest::ContourSceneOf(b.Scene), p);
+    // (As every run of tpctest::Contour: the embedding verdict is CGAL's.)
+    tpctest::ExpectEmbeddingCheckAgreesWithCgal(r.Embedding, r.Surface());
+    return r;
   };
   const auto caps = [](const tpc::ContourResult& r) {
     return std::count(r.TriangleSolid.begin(), r.TriangleSolid.end(), -1);
@@ -450,6 +447,8 @@ TEST(MeshCellError, BoundsHoldingTheSolidCutNothing)
   bar.Finish(bar.Mesh(ChamferedBar()));
   const tpc::ContourResult holding = run(bar, { { -1, -1, -1 }, { 1, 1, 1 } });
   EXPECT_TRUE(holding.Report.Guaranteed);
+  EXPECT_EQ(holding.Topology.Components, 1);
+  EXPECT_EQ(holding.Topology.Genus, 0);
   EXPECT_TRUE(tpc::IsOneMesh(*holding.Subdivision().Octree.SceneExpression));
   EXPECT_TRUE(holding.Parameters.ExactCells);
   EXPECT_LE(holding.Surface().Triangles.size(), 100u);
@@ -457,20 +456,27 @@ TEST(MeshCellError, BoundsHoldingTheSolidCutNothing)
   // z = 0.2 cuts the bar (its corners reach |z| = 0.5): capped there.
   const tpc::ContourResult cut = run(bar, { { -1, -1, -1 }, { 1, 1, 0.2 } });
   EXPECT_TRUE(cut.Report.Guaranteed);
+  EXPECT_EQ(cut.Topology.Components, 1);
+  EXPECT_EQ(cut.Topology.Genus, 0);
   EXPECT_FALSE(tpc::IsOneMesh(*cut.Subdivision().Octree.SceneExpression));
   EXPECT_GT(caps(cut), 0);
   // Quadrics (their bounds are computed, not read off vertices): a sphere
-  // minus an ellipsoid inside Bounds keeps its three nodes; Bounds through
+  // minus an ellipsoid inside it (a cavity: two components) inside Bounds
+  // keeps its three nodes; Bounds through
   // the sphere's top add that one plane.
   SceneBuilder ball;
   ball.Finish(SceneBuilder::Difference(
     { ball.Sphere({ 0.1, 0, 0 }, 0.6), ball.Ellipsoid({ 0.1, 0, 0.2 }, { 0.2, 0.3, 0.25 }) }));
   const tpc::ContourResult inside = run(ball, { { -0.6, -0.7, -0.7 }, { 0.8, 0.7, 0.7 } });
   EXPECT_TRUE(inside.Report.Guaranteed);
+  EXPECT_EQ(inside.Topology.Components, 2);
+  EXPECT_EQ(inside.Topology.Genus, 0);
   EXPECT_EQ(inside.Subdivision().Octree.SceneExpression->NodeCount(), 3u);
   EXPECT_EQ(caps(inside), 0);
   const tpc::ContourResult top = run(ball, { { -0.6, -0.7, -0.7 }, { 0.8, 0.7, 0.5 } });
   EXPECT_TRUE(top.Report.Guaranteed);
+  EXPECT_EQ(top.Topology.Components, 2);
+  EXPECT_EQ(top.Topology.Genus, 0);
   EXPECT_EQ(top.Subdivision().Octree.SceneExpression->NodeCount(), 5u);
   EXPECT_GT(caps(top), 0);
 }
