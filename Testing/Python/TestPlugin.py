@@ -77,8 +77,9 @@ for name, setup, genus in (("Plane", lambda fn: setattr(fn, "Offset", 0.3), 0),
 # Issue 17: the plugin splits points along creases (SplitCreases, on by
 # default here, off in VTK), so a cube's every point carries its face's
 # normals and the edges shade crisply (no crease has its two triangles sharing
-# points, 184 do unsplit). The cube is tilted off the lattice's axes, its
-# edges rebuilt as output edges (crease tiles).
+# points, 91 do unsplit; 184 before crease cells were fanned from a crease
+# point, one output edge per cell). The cube is tilted off the lattice's axes,
+# its edges rebuilt as output edges (crease tiles).
 def shared_creases(mesh):
     """Edges of 30 degrees or more whose two triangles share both points: where point
     normals are averaged across a crease."""
@@ -109,7 +110,7 @@ check(field(split, "TopologyGuaranteed") == 1 and m["boundary"] == 0 and m["genu
       and split.GetPointData().GetArray("SurfacePointId") is not None
       and closed.GetPointData().GetArray("SurfacePointId") is None
       and split.GetNumberOfPoints() > closed.GetNumberOfPoints()
-      and shared_creases(split) == 0 and shared_creases(closed) > 100,
+      and shared_creases(split) == 0 and shared_creases(closed) > 45,
       f"SplitCreases gives each face of a tilted cube its own points ({split.GetNumberOfPoints()} points,"
       f" {closed.GetNumberOfPoints()} unsplit; creases across shared points {shared_creases(split)}, unsplit"
       f" {shared_creases(closed)})", failures)

@@ -28,7 +28,11 @@
 // x holds pieces of one half, and is drawn through the sharpest crease
 // crossing it where it passes these tests itself, else straight - either way
 // through points of that half: however crack patching refines a crease tile,
-// the final loop runs through x and stays on the trace's halves.
+// the final loop runs through x and stays on the trace's halves. A cell
+// whose loop runs through x may then be fanned from x (MeshEdgeFanPoint,
+// LoopTriangulation.h): the crease becomes the fan's diagonal x -> x', one
+// output edge per cell, where that patch is certified no worse than the apex
+// fan (SurfaceExtraction.cxx).
 //
 // Both cells sharing a tile must draw it alike: each decides from the tile
 // and the mesh alone, with exact side tests on the mesh's perturbed solid

@@ -56,7 +56,8 @@ void GatherLoop(const Crossing* crossings, std::size_t count, const CrossingVert
     const Crossing& c = crossings[k];
     const std::uint32_t id = vertices.IdOf(c);
     ids.push_back(id);
-    points.push_back({ mesh.Points[id], mesh.Normals[id], CrossingFaces(c, base, size) });
+    points.push_back(
+      { mesh.Points[id], mesh.Normals[id], CrossingFaces(c, base, size), c.Kind == CrossingKind::MeshEdge });
   }
 }
 
@@ -142,8 +143,9 @@ void TriangulateCell(const BoundaryLoopSet& loops, const OctreeNode& node, const
 }
 
 bool TriangulateCellFromLoopPoint(const BoundaryLoopSet& loops, const OctreeNode& node, const RootGrid& grid,
-  const CrossingVertices& vertices, const TriangleMesh& mesh, CellPatches& out)
+  const CrossingVertices& vertices, const TriangleMesh& mesh, CellPatches& out, bool& fromMeshEdge)
 {
+  fromMeshEdge = false;
   if (loops.LoopSizes.size() != 1 || loops.LoopSizes[0] < 4 || !loops.Consistent)
   {
     return false;
@@ -151,15 +153,17 @@ bool TriangulateCellFromLoopPoint(const BoundaryLoopSet& loops, const OctreeNode
   LatticeIndex base[3];
   CornerLattice(grid, node, 0, base);
   const LatticeIndex size = LatticeIndex(1) << (grid.MaxDepth - node.Level);
-  if (std::any_of(loops.Crossings.begin(), loops.Crossings.end(),
-        [](const Crossing& c) { return c.Kind != CrossingKind::SubEdge; }))
+  if (std::any_of(loops.Crossings.begin(), loops.Crossings.end(), [](const Crossing& c) {
+        return c.Kind != CrossingKind::SubEdge && c.Kind != CrossingKind::MeshEdge;
+      }))
   {
-    return false; // a crease vertex (or a bend: a cell stopped by a limit)
+    return false; // a bend (a cell stopped by a limit)
   }
   std::vector<std::uint32_t> ids;
   std::vector<LoopPoint> points;
   GatherLoop(loops.Crossings.data(), loops.Crossings.size(), vertices, mesh, base, size, ids, points);
-  const int s = LoopFanPoint(points);
+  fromMeshEdge = std::any_of(points.begin(), points.end(), [](const LoopPoint& p) { return p.OnMeshEdge; });
+  const int s = fromMeshEdge ? MeshEdgeFanPoint(points) : LoopFanPoint(points);
   if (s < 0)
   {
     return false;

@@ -35,12 +35,14 @@ void TriangulateCell(const BoundaryLoopSet& loops, const OctreeNode& node, const
   CellPatches& out, const QuadricCellError* surface = nullptr, const Vec3* meshApex = nullptr);
 
 /// A cell of one loop spanned by Marching Cubes' fan from one of its points
-/// (LoopFanPoint: k - 2 triangles where the apex fan takes k), when the loop
-/// allows one and holds no mesh crease vertex (a fan from a loop point would
-/// cut across the crease that the apex fan keeps sharp); false otherwise.
+/// (k - 2 triangles where the apex fan takes k): from a point on a mesh edge
+/// (MeshEdgeFanPoint) when the loop holds one - `fromMeshEdge` says so -
+/// else from any point where the surface is smooth along the loop
+/// (LoopFanPoint; a fan from a point off the crease would cut across the
+/// crease that the apex fan keeps sharp); false when the loop allows none.
 /// The caller certifies its error (MeshCellError.h) before using it.
 bool TriangulateCellFromLoopPoint(const BoundaryLoopSet& loops, const OctreeNode& node, const RootGrid& grid,
-  const CrossingVertices& vertices, const TriangleMesh& mesh, CellPatches& out);
+  const CrossingVertices& vertices, const TriangleMesh& mesh, CellPatches& out, bool& fromMeshEdge);
 
 /// An exact cell's polygons (ExactCell.h), each a triangle or a fan around
 /// its centroid (in its triangle's plane: the polygon is convex, and its

@@ -303,30 +303,30 @@ Vec3 PlaceApex(const std::vector<LoopPoint>& loop, const Box3& region, bool plan
   return ClampStrictlyInside(FanIsConsistent(loop, fallback) ? fallback : inner.Clamp(centroid), region);
 }
 
-} // namespace
-
-int LoopFanPoint(const std::vector<LoopPoint>& loop)
+/// The mean of the loop's normals, normalized.
+Vec3 MeanNormal(const std::vector<LoopPoint>& loop)
 {
-  const std::size_t m = loop.size();
   Vec3 mean;
   for (const LoopPoint& p : loop)
   {
     mean += p.Normal;
   }
-  mean = Normalized(mean);
-  for (const LoopPoint& p : loop)
-  {
-    if (!(Dot(p.Normal, mean) >= 0.906)) // cos 25 degrees (also rejects zero normals)
-    {
-      return -1;
-    }
-  }
+  return Normalized(mean);
+}
+
+/// Among the loop points `candidate` accepts, the one whose fan satisfies
+/// case 2 of the header, each triangle facing the way the normals near it
+/// and `mean` do, with the shortest diagonals; -1 if none.
+template <typename Candidate>
+int ShortestFanPoint(const std::vector<LoopPoint>& loop, const Vec3& mean, const Candidate& candidate)
+{
+  const std::size_t m = loop.size();
   int best = -1;
   double bestLength = HUGE_VAL;
   for (std::size_t s = 0; s < m; ++s)
   {
+    bool valid = candidate(loop[s]);
     double length = 0.0;
-    bool valid = true;
     for (std::size_t i = 2; i + 1 < m && valid; ++i)
     {
       valid = (loop[s].Faces & loop[(s + i) % m].Faces) == 0;
@@ -346,6 +346,25 @@ int LoopFanPoint(const std::vector<LoopPoint>& loop)
     }
   }
   return best;
+}
+} // namespace
+
+int LoopFanPoint(const std::vector<LoopPoint>& loop)
+{
+  const Vec3 mean = MeanNormal(loop);
+  for (const LoopPoint& p : loop)
+  {
+    if (!(Dot(p.Normal, mean) >= 0.906)) // cos 25 degrees (also rejects zero normals)
+    {
+      return -1;
+    }
+  }
+  return ShortestFanPoint(loop, mean, [](const LoopPoint&) { return true; });
+}
+
+int MeshEdgeFanPoint(const std::vector<LoopPoint>& loop)
+{
+  return ShortestFanPoint(loop, MeanNormal(loop), [](const LoopPoint& p) { return p.OnMeshEdge; });
 }
 
 bool StrictlyInside(const Vec3& p, const Box3& box)

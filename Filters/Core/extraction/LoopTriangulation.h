@@ -72,6 +72,9 @@ struct LoopPoint
   /// Faces of the cell the point lies on: bit f (CubeTopology.h numbering;
   /// all six for a bend vertex, which never serves as a fan point).
   unsigned Faces = 0;
+  /// Where a mesh's edge crosses a face of the cell: a crease tile's x
+  /// (CreaseCrossing.h) or a point of an exact neighbour's trace (ExactCell.h).
+  bool OnMeshEdge = false;
 };
 
 enum class LoopPatchKind
@@ -128,6 +131,17 @@ LoopPatch TriangulateLoop(const std::vector<LoopPoint>& loop, const Box3& region
 /// the surface is not smooth along the loop (every crossing normal within
 /// 25 degrees of their mean: no crease or corner for an apex to keep sharp).
 int LoopFanPoint(const std::vector<LoopPoint>& loop);
+
+/// The fan from a point of the loop on a mesh edge (LoopPoint::OnMeshEdge)
+/// that satisfies case 2 of the header and faces the way the normals do,
+/// with the shortest diagonals; -1 if none. The loop need not be smooth: an
+/// apex fan draws a crease through a cell as two spokes x -> c -> x' and
+/// tilts the faces beside it wherever c is off the crease, while from x the
+/// diagonal x -> x' runs along a straight crease and each planar side is
+/// drawn in its plane, by k - 2 triangles. The caller certifies its error
+/// (MeshCellError.h) and keeps it only where that is small: a curved crease,
+/// a corner or a point of a smooth trace make the diagonals cut across S.
+int MeshEdgeFanPoint(const std::vector<LoopPoint>& loop);
 
 /// True when `p` lies strictly inside `box` on every axis (exact comparisons).
 bool StrictlyInside(const Vec3& p, const Box3& box);

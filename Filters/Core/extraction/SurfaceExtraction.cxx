@@ -128,6 +128,12 @@ void GatherCertifiedBound(const AdaptiveOctree& tree, const std::vector<std::uin
   }
 }
 
+/// A fan from a mesh edge's point is kept within this fraction of the
+/// tolerance even where the apex fan's own bound is smaller: along a straight
+/// crease between planar sides both are exact up to rounding, and the fan
+/// from x draws the crease as one edge with two triangles fewer.
+constexpr double MeshEdgeFanNearlyExact = 0.1;
+
 /// Pieces a cell's first certificate may examine (it needs a proof under the
 /// tolerance, not a tight one: RefineMeshCertificates tightens those that
 /// may set the reported bound).
@@ -185,15 +191,25 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
     if (prediction != tree.MeshCellPredictions.end())
     {
       // Larger than the tolerance. First, two triangles fewer: Marching
-      // Cubes' fan from a loop point where the surface is smooth along the
-      // loop, kept where its own certificate is within the tolerance (the
-      // apex fan's prediction says nothing of it).
+      // Cubes' fan from a loop point (the apex fan's prediction says nothing
+      // of it, so it is kept on its own certificate). From a point where the
+      // surface is smooth along the loop: kept within the tolerance. From a
+      // mesh edge's point (a crease drawn along x -> x', MeshEdgeFanPoint):
+      // kept only where it is certified within the apex fan's own bound (the
+      // fan the cell was accepted with, over its own loop) or nearly exact -
+      // a corner, whose third crease the diagonals would cut within the
+      // tolerance, is kept sharp by the apex.
       CellPatches fromLoopPoint;
-      if (TriangulateCellFromLoopPoint(loops, node, tree.Grid, vertices, mesh, fromLoopPoint))
+      bool fromMeshEdge = false;
+      if (TriangulateCellFromLoopPoint(loops, node, tree.Grid, vertices, mesh, fromLoopPoint, fromMeshEdge))
       {
-        const HausdorffEstimate e = CertifiedMeshCellError(surface, fromLoopPoint, mesh, slack,
-          aim, tree.HausdorffTolerance, FirstCertificateBudget);
-        if (e.Upper <= tree.HausdorffTolerance)
+        const double giveUp = fromMeshEdge
+          ? std::min(std::max(MeshEdgeFanNearlyExact * tree.HausdorffTolerance, prediction->second.OwnFanError),
+              tree.HausdorffTolerance)
+          : tree.HausdorffTolerance;
+        const HausdorffEstimate e = CertifiedMeshCellError(
+          surface, fromLoopPoint, mesh, slack, std::min(aim, giveUp), giveUp, FirstCertificateBudget);
+        if (e.Upper <= giveUp)
         {
           patches = std::move(fromLoopPoint);
           certificate.Bound = certificate.Error = e.Upper;

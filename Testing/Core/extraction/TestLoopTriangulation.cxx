@@ -96,6 +96,49 @@ TEST(LoopTriangulation, CreaseApexIsTheFeaturePoint)
   ExpectFanFacesOutward(loop, patch.Apex);
 }
 
+TEST(LoopTriangulation, CreaseFanRunsAlongTheCrease)
+{
+  // The same quarter space, its loop drawn through the crease's crossings
+  // x1 = (1/2, 1/2, 0) and x2 = (1/2, 1/2, 1) (crease tiles,
+  // CreaseCrossing.h). Fanned from x1 or x2 the diagonal x1 -> x2 is the
+  // crease, and the other triangles lie in the two planes: four triangles,
+  // where the apex fan takes six and draws the crease as two spokes.
+  SceneBuilder b;
+  b.Finish(SceneBuilder::Intersection({ b.Add(tpc::Quadric::Plane({ 0.5, 0, 0 }, { 1, 0, 0 })),
+    b.Add(tpc::Quadric::Plane({ 0, 0.5, 0 }, { 0, 1, 0 })) }));
+  auto loop =
+    Loop(b.Scene, { { 0.5, 0, 0 }, { 0.5, 0.5, 0 }, { 0, 0.5, 0 }, { 0, 0.5, 1 }, { 0.5, 0.5, 1 }, { 0.5, 0, 1 } });
+  for (const std::size_t x : { std::size_t(1), std::size_t(4) })
+  {
+    loop[x].OnMeshEdge = true;
+    loop[x].Normal = Normalized(Vec3{ 1, 1, 0 });
+  }
+  EXPECT_EQ(tpc::LoopFanPoint(loop), -1); // not smooth along the loop
+  const int s = tpc::MeshEdgeFanPoint(loop);
+  ASSERT_TRUE(s == 1 || s == 4) << s;
+  const auto k = static_cast<std::size_t>(s);
+  const Vec3 x = loop[k].Position;
+  for (std::size_t i = 1; i + 1 < loop.size(); ++i)
+  {
+    const Vec3& p = loop[(k + i) % loop.size()].Position;
+    const Vec3& q = loop[(k + i + 1) % loop.size()].Position;
+    // In the plane x = 1/2 or y = 1/2, facing out of the quarter space.
+    const Vec3 n = Cross(p - x, q - x);
+    const bool inX = p[0] == 0.5 && q[0] == 0.5, inY = p[1] == 0.5 && q[1] == 0.5;
+    EXPECT_TRUE(inX || inY) << i;
+    EXPECT_GT(Dot(n, inX ? Vec3{ 1, 0, 0 } : Vec3{ 0, 1, 0 }), 0.0) << i;
+  }
+  // Without its crease points, or with a crease point sharing its face with
+  // a point other than its neighbours, there is no crease fan.
+  auto plain = loop;
+  plain[1].OnMeshEdge = plain[4].OnMeshEdge = false;
+  EXPECT_EQ(tpc::MeshEdgeFanPoint(plain), -1);
+  auto crowded = loop;
+  crowded[4].OnMeshEdge = false;
+  crowded[3].Faces |= crowded[1].Faces; // as if (0, 1/2, 1) lay on z = 0 too
+  EXPECT_EQ(tpc::MeshEdgeFanPoint(crowded), -1);
+}
+
 TEST(LoopTriangulation, CapApexIsStrictlyInsideItsRegion)
 {
   // A sphere bulging through the top face: its eight crossings all lie on
