@@ -33,6 +33,38 @@ struct Edge
   Vec3 A, B;
 };
 
+/// The points of a box mesh (tpctest::CubeMesh) turned about z by 0.4 and
+/// about x by 0.3: its edges cross every lattice plane obliquely.
+std::vector<Vec3> Tilted(const tpc::MeshSolid& box)
+{
+  const double c1 = std::cos(0.4), s1 = std::sin(0.4), c2 = std::cos(0.3), s2 = std::sin(0.3);
+  std::vector<Vec3> points;
+  for (const Vec3& p : box.Points())
+  {
+    const Vec3 q(c1 * p[0] - s1 * p[1], s1 * p[0] + c1 * p[1], p[2]);
+    points.push_back({ q[0], c2 * q[1] - s2 * q[2], s2 * q[1] + c2 * q[2] });
+  }
+  return points;
+}
+
+/// The 12 edges of a box mesh's corners `points` (CubeMesh's order: bit k of
+/// the index for the side along axis k).
+std::vector<Edge> BoxEdges(const std::vector<Vec3>& points)
+{
+  std::vector<Edge> edges;
+  for (int a = 0; a < 8; ++a)
+  {
+    for (int bit = 0; bit < 3; ++bit)
+    {
+      if (!(a & (1 << bit)))
+      {
+        edges.push_back({ points[a], points[a | (1 << bit)] });
+      }
+    }
+  }
+  return edges;
+}
+
 /// The output's edges whose two triangles' normals differ by at least the
 /// crease angle.
 std::vector<Edge> FeatureEdges(const tpc::TriangleMesh& mesh)
@@ -200,13 +232,7 @@ TEST(CreaseCrossing, TiltedCubesEdgesRunAlongOutputEdges)
   // obliquely): each edge is a crease, and the output's creases should lie
   // on them, not zig-zag around them.
   const tpc::MeshSolid cube = tpctest::CubeMesh({ -0.6, -0.6, -0.6 }, { 0.6, 0.6, 0.6 });
-  const double c1 = std::cos(0.4), s1 = std::sin(0.4), c2 = std::cos(0.3), s2 = std::sin(0.3);
-  std::vector<Vec3> points;
-  for (const Vec3& p : cube.Points())
-  {
-    const Vec3 q(c1 * p[0] - s1 * p[1], s1 * p[0] + c1 * p[1], p[2]);
-    points.push_back({ q[0], c2 * q[1] - s2 * q[2], s2 * q[1] + c2 * q[2] });
-  }
+  const std::vector<Vec3> points = Tilted(cube);
   const tpc::MeshSolid tilted(points, cube.Triangles());
   SceneBuilder b;
   b.Finish(b.Mesh(tilted));
@@ -214,18 +240,7 @@ TEST(CreaseCrossing, TiltedCubesEdgesRunAlongOutputEdges)
   EXPECT_TRUE(r.Guaranteed);
   EXPECT_EQ(r.Report.Components, 1);
   EXPECT_EQ(r.Report.Genus, 0);
-  // The cube's 12 edges.
-  std::vector<Edge> cubeEdges;
-  for (int a = 0; a < 8; ++a)
-  {
-    for (int bit = 0; bit < 3; ++bit)
-    {
-      if (!(a & (1 << bit)))
-      {
-        cubeEdges.push_back({ points[a], points[a | (1 << bit)] });
-      }
-    }
-  }
+  const std::vector<Edge> cubeEdges = BoxEdges(points);
   const std::vector<Edge> output = FeatureEdges(r.Extraction.Mesh);
   // Every point of a cube edge within the tolerance of an output crease.
   double worst = 0.0;
@@ -275,13 +290,7 @@ TEST(CreaseCrossing, TiltedBarsEdgesAreOneOutputEdgePerCell)
   // drawn by the fan's diagonal x -> x', one output edge per cell, and its
   // two faces flat; the corners keep their apex.
   const tpc::MeshSolid bar = tpctest::CubeMesh({ -1.5, -0.6, -0.6 }, { 1.5, 0.6, 0.6 });
-  const double c1 = std::cos(0.4), s1 = std::sin(0.4), c2 = std::cos(0.3), s2 = std::sin(0.3);
-  std::vector<Vec3> points;
-  for (const Vec3& p : bar.Points())
-  {
-    const Vec3 q(c1 * p[0] - s1 * p[1], s1 * p[0] + c1 * p[1], p[2]);
-    points.push_back({ q[0], c2 * q[1] - s2 * q[2], s2 * q[1] + c2 * q[2] });
-  }
+  const std::vector<Vec3> points = Tilted(bar);
   SceneBuilder b;
   b.Finish(b.Mesh(tpc::MeshSolid(points, bar.Triangles())));
   const tpctest::ContourRun r = tpctest::Contour(b.Scene, { { -2, -2, -2 }, { 2, 2, 2 } }, 1.0 / 64);
@@ -289,17 +298,7 @@ TEST(CreaseCrossing, TiltedBarsEdgesAreOneOutputEdgePerCell)
   EXPECT_EQ(r.Report.Components, 1);
   EXPECT_EQ(r.Report.Genus, 0);
   const std::vector<Edge> output = FeatureEdges(r.Extraction.Mesh);
-  std::vector<Edge> barEdges;
-  for (int a = 0; a < 8; ++a)
-  {
-    for (int bit = 0; bit < 3; ++bit)
-    {
-      if (!(a & (1 << bit)))
-      {
-        barEdges.push_back({ points[a], points[a | (1 << bit)] });
-      }
-    }
-  }
+  const std::vector<Edge> barEdges = BoxEdges(points);
   std::size_t onEdges = 0;
   for (const Edge& o : output)
   {
