@@ -78,8 +78,9 @@ for name, setup, genus in (("Plane", lambda fn: setattr(fn, "Offset", 0.3), 0),
 # default here, off in VTK), so a cube's every point carries its face's
 # normals and the edges shade crisply (no crease has its two triangles sharing
 # points, 91 do unsplit; 184 before crease cells were fanned from a crease
-# point, one output edge per cell). The cube is tilted off the lattice's axes,
-# its edges rebuilt as output edges (crease tiles).
+# point, which draws a crease as one output edge per cell instead of two).
+# The cube is tilted off the lattice's axes, its edges rebuilt as output edges
+# (crease tiles).
 def shared_creases(mesh):
     """Edges of 30 degrees or more whose two triangles share both points: where point
     normals are averaged across a crease."""

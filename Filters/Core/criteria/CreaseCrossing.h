@@ -31,8 +31,8 @@
 // the final loop runs through x and stays on the trace's halves. A cell
 // whose loop runs through x may then be fanned from x (MeshEdgeFanPoint,
 // LoopTriangulation.h): the crease becomes the fan's diagonal x -> x', one
-// output edge per cell, where that patch is certified no worse than the apex
-// fan (SurfaceExtraction.cxx).
+// output edge per cell, where that patch is certified within the apex fan's
+// own bound or a quarter of the tolerance (SurfaceExtraction.cxx).
 //
 // Both cells sharing a tile must draw it alike: each decides from the tile
 // and the mesh alone, with exact side tests on the mesh's perturbed solid

@@ -30,7 +30,12 @@
 //    a chord not incident to s lies on a face with s only if both ends of the
 //    chord do (p inside the chord) or p is such an end, so the open segment
 //    (s, p) is interior and p is the only other point of the boundary on the
-//    ray from s through p. The diagonals (s, p_i) cross the interior.
+//    ray from s through p. The diagonals (s, p_i) cross the interior. (This
+//    reads the faces a point lies on from its Faces. A mesh edge's point - a
+//    crease's x, or a point of an exact neighbour's trace - lies on its
+//    lattice plane exactly; a fan from such a point is drawn only where every
+//    such point of the loop is computed strictly inside its face,
+//    CellPatches.cxx, so it lies on that face alone.)
 // 3. Triangle: three loop points not on one face of C. They are not collinear
 //    (three collinear points of a convex cell's boundary lie on one face).
 //
@@ -132,9 +137,9 @@ LoopPatch TriangulateLoop(const std::vector<LoopPoint>& loop, const Box3& region
 /// 25 degrees of their mean: no crease or corner for an apex to keep sharp).
 int LoopFanPoint(const std::vector<LoopPoint>& loop);
 
-/// The fan from a point of the loop on a mesh edge (LoopPoint::OnMeshEdge)
-/// that satisfies case 2 of the header and faces the way the normals do,
-/// with the shortest diagonals; -1 if none. The loop need not be smooth: an
+/// The point of the loop on a mesh edge (LoopPoint::OnMeshEdge) whose fan
+/// satisfies case 2 of the header and faces the way the normals do, with the
+/// shortest diagonals; -1 if none. The loop need not be smooth: an
 /// apex fan draws a crease through a cell as two spokes x -> c -> x' and
 /// tilts the faces beside it wherever c is off the crease, while from x the
 /// diagonal x -> x' runs along a straight crease and each planar side is

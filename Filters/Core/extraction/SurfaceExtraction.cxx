@@ -130,12 +130,12 @@ void GatherCertifiedBound(const AdaptiveOctree& tree, const std::vector<std::uin
 
 /// A fan from a mesh edge's point is kept within this fraction of the
 /// tolerance even where the apex fan's own bound is smaller: along a straight
-/// crease between planar sides both are exact up to rounding, and the fan
-/// from x draws the crease as one edge with two triangles fewer. A quarter:
-/// the least the first certificates aim at (FirstCertificateAim), so this
-/// one is not pushed further than the others (as with a tenth: the same
-/// fandisk and tilted cube and bar of the tests, couplingdown at 1/64 7 190
-/// triangles instead of 7 192).
+/// crease between planar sides, with the apex on the crease, both are exact
+/// up to rounding, and the fan from x draws the crease as one edge with two
+/// triangles fewer. A quarter: the least the first certificates aim at
+/// (FirstCertificateAim), so this one is not pushed further than the others
+/// (a tenth gave the same fandisk, tilted cube and tilted bar of the tests,
+/// and couplingdown at 1/64 7 192 triangles where a quarter gives 7 190).
 constexpr double MeshEdgeFanKeptWithin = 0.25;
 
 /// Pieces a cell's first certificate may examine (it needs a proof under the
@@ -173,6 +173,43 @@ std::vector<ConvexPolygon> MeshInCell(const AdaptiveOctree& tree, std::uint32_t 
   return SurfaceInCell(*LoneMeshLeaf(*tree.Expressions[n]), prims, tree.Grid.CellBox(node.Level, node.Ijk));
 }
 
+/// A mesh cell larger than the tolerance (its prediction `prediction`)
+/// spanned by Marching Cubes' fan from a loop point (TriangulateCellFromLoopPoint):
+/// the apex fan's prediction says nothing of it, so it is kept on its own
+/// certificate, set in `certificate`, the fan in `patches`. From a point
+/// where the surface is smooth along the loop: kept within the tolerance.
+/// From a mesh edge's point (a crease drawn along x -> x', MeshEdgeFanPoint):
+/// kept only within the apex fan's own bound (the fan the cell was accepted
+/// with, over its own loop) or within MeshEdgeFanKeptWithin of the tolerance -
+/// a corner whose third crease the diagonals would cut by more is kept sharp
+/// by the apex. False when the loop allows no such fan or it is not kept.
+bool MeshCellFromLoopPoint(const AdaptiveOctree& tree, std::uint32_t n, const BoundaryLoopSet& loops,
+  const CrossingVertices& vertices, const TriangleMesh& mesh, const std::vector<ConvexPolygon>& surface,
+  double slack, double aim, const AdaptiveOctree::MeshCellPrediction& prediction, CellPatches& patches,
+  CellCertificate& certificate)
+{
+  CellPatches fan;
+  bool fromMeshEdge = false;
+  if (!TriangulateCellFromLoopPoint(loops, tree.Nodes[n], tree.Grid, vertices, mesh, fan, fromMeshEdge))
+  {
+    return false;
+  }
+  const double tolerance = tree.HausdorffTolerance;
+  const double keptWithin = fromMeshEdge
+    ? std::min(std::max(MeshEdgeFanKeptWithin * tolerance, prediction.OwnFanError), tolerance)
+    : tolerance;
+  const HausdorffEstimate e =
+    CertifiedMeshCellError(surface, fan, mesh, slack, std::min(aim, keptWithin), keptWithin, FirstCertificateBudget);
+  if (!(e.Upper <= keptWithin))
+  {
+    return false;
+  }
+  patches = std::move(fan);
+  certificate.Bound = certificate.Error = e.Upper;
+  certificate.Lower = e.Lower;
+  return true;
+}
+
 /// Surface leaf `n`'s patches (CellPatches.h) and what they are certified to.
 /// A mesh cell's error is first bounded with a small budget of pieces
 /// (FirstCertificateBudget); RefineMeshCertificates refines the ones that
@@ -194,32 +231,11 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
     certificate.Mesh = true;
     if (prediction != tree.MeshCellPredictions.end())
     {
-      // Larger than the tolerance. First, two triangles fewer: Marching
-      // Cubes' fan from a loop point (the apex fan's prediction says nothing
-      // of it, so it is kept on its own certificate). From a point where the
-      // surface is smooth along the loop: kept within the tolerance. From a
-      // mesh edge's point (a crease drawn along x -> x', MeshEdgeFanPoint):
-      // kept only where it is certified within the apex fan's own bound (the
-      // fan the cell was accepted with, over its own loop) or within a
-      // quarter of the tolerance - a corner whose third crease the diagonals
-      // would cut by more is kept sharp by the apex.
-      CellPatches fromLoopPoint;
-      bool fromMeshEdge = false;
-      if (TriangulateCellFromLoopPoint(loops, node, tree.Grid, vertices, mesh, fromLoopPoint, fromMeshEdge))
+      // Larger than the tolerance. First, two triangles fewer.
+      if (MeshCellFromLoopPoint(tree, n, loops, vertices, mesh, surface, slack, aim, prediction->second, patches,
+            certificate))
       {
-        const double giveUp = fromMeshEdge
-          ? std::min(std::max(MeshEdgeFanKeptWithin * tree.HausdorffTolerance, prediction->second.OwnFanError),
-              tree.HausdorffTolerance)
-          : tree.HausdorffTolerance;
-        const HausdorffEstimate e = CertifiedMeshCellError(
-          surface, fromLoopPoint, mesh, slack, std::min(aim, giveUp), giveUp, FirstCertificateBudget);
-        if (e.Upper <= giveUp)
-        {
-          patches = std::move(fromLoopPoint);
-          certificate.Bound = certificate.Error = e.Upper;
-          certificate.Lower = e.Lower;
-          return certificate;
-        }
+        return certificate;
       }
       // Else the fan around the apex the prediction was made with. The
       // prediction holds when the final loop refines the cell's own, its

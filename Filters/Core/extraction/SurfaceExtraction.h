@@ -9,9 +9,10 @@
 // 2. one vertex per distinct crossing, found on the exact field by root
 //    finding and placed strictly inside its lattice sub-edge
 //    (CrossingVertices.h);
-// 3. each loop's patch: a fan around an apex strictly inside the cell, or,
-//    where the surface is smooth in the cell, Marching Cubes' fan from one of
-//    the loop's points - embedded by construction (LoopTriangulation.h,
+// 3. each loop's patch: a fan around an apex strictly inside the cell, or
+//    Marching Cubes' fan from one of the loop's points - where the surface is
+//    smooth along the loop, or from a mesh edge's point such as a crease's
+//    crossing - embedded by construction (LoopTriangulation.h,
 //    CellPatches.h); an exact cell's patch is its input mesh clipped to it,
 //    and its neighbours draw the mesh's exact trace on the tiles they share
 //    with it (ExactCell.h);

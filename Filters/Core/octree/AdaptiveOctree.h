@@ -128,7 +128,8 @@ public:
   {
     double Bound = HUGE_VAL;
     std::vector<Vec3> Loop;
-    /// The fan's apex (MeshCellApex): the extraction's fan is around it.
+    /// The fan's apex (MeshCellApex): the extraction's apex fan is around it
+    /// (a fan from a loop point, if drawn instead, is certified on its own).
     Vec3 Apex;
     /// The largest distance between the fan over Loop and the mesh that the
     /// prediction came upon.

@@ -283,12 +283,14 @@ TEST(CreaseCrossing, TiltedCubesEdgesRunAlongOutputEdges)
   EXPECT_LE(r.Extraction.Mesh.Triangles.size(), 100u);
 }
 
-TEST(CreaseCrossing, TiltedBarsEdgesAreOneOutputEdgePerCell)
+TEST(CreaseCrossing, TiltedBarsEdgesLieOnFewOutputEdges)
 {
   // A long bar tilted about two axes: a cell crossed by one of its long edges
   // is fanned from the edge's crossing x (MeshEdgeFanPoint), so the edge is
-  // drawn by the fan's diagonal x -> x', one output edge per cell, and its
-  // two faces flat; the corners keep their apex.
+  // drawn by the fan's diagonal x -> x', one output edge per cell instead of
+  // two spokes, and its two faces flat. (That corners keep their apex, the
+  // tilted cube above checks: a fan cutting one would put an output crease
+  // off the cube's edges.)
   const tpc::MeshSolid bar = tpctest::CubeMesh({ -1.5, -0.6, -0.6 }, { 1.5, 0.6, 0.6 });
   const std::vector<Vec3> points = Tilted(bar);
   SceneBuilder b;
