@@ -7,9 +7,10 @@
 // over the leaf's listed triangles tau (a superset of those meeting C). The
 // patch predicted is a fan around an apex c that depends on S_C and C only
 // (MeshCellApex below; the extraction may draw a fan from a loop point
-// instead, certified on its own, SurfaceExtraction.cxx): the triangles (p_k, p_k+1, c) over the cell's loop p_0 .. p_m-1,
-// whose points are surface crossings on lattice sub-edges in C's faces, each
-// on the crossed triangle's plane, i.e. on S up to rounding.
+// instead, certified on its own, SurfaceExtraction.cxx): the triangles
+// (p_k, p_k+1, c) over the cell's loop p_0 .. p_m-1, whose points are surface
+// crossings on lattice sub-edges in C's faces, each on the crossed
+// triangle's plane, i.e. on S up to rounding.
 //
 // The error. Both the patch P and S_C are unions of convex planar polygons, so
 // their two-sided Hausdorff distance
