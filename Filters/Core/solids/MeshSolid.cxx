@@ -295,10 +295,13 @@ void MeshSolid::Overlapping(const Box3& box, const TriangleList& candidates, Tri
       apart = b.lo[a] > box.hi[a] || b.hi[a] < box.lo[a];
       within = within && b.lo[a] >= box.lo[a] && b.hi[a] <= box.hi[a];
     }
-    // A triangle whose box lies in the cell meets it (the common case while
-    // cells are larger than triangles): no separating-axis test needed.
+    // A triangle whose box lies in the cell, or with a vertex in it, meets it
+    // (the common cases while cells are not much smaller than triangles): no
+    // separating-axis test needed.
     if (!apart &&
-      (within || TriangleBoxOverlap(this->Vertex(t, 0), this->Vertex(t, 1), this->Vertex(t, 2), box)))
+      (within || box.Contains(this->Vertex(t, 0)) || box.Contains(this->Vertex(t, 1)) ||
+        box.Contains(this->Vertex(t, 2)) ||
+        TriangleBoxOverlap(this->Vertex(t, 0), this->Vertex(t, 1), this->Vertex(t, 2), box)))
     {
       out.push_back(t);
     }
