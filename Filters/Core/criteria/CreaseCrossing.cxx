@@ -45,9 +45,9 @@ void NearTile(const MeshSolid& mesh, const RootGrid& grid, const TriangleList& t
   }
 }
 
-/// Whether two of `triangles` meet at a crease angle or more: a crease edge
-/// crossing the tile has both its triangles near it, so without such a pair
-/// the tile is no crease tile - decided before any exact test, and exactly
+/// Whether two of `triangles` meet at a crease tile's angle or more: such an
+/// edge crossing the tile has both its triangles near it, so without such a
+/// pair the tile is no crease tile - decided before any exact test, and exactly
 /// as the crease test below compares the same two normals.
 bool MayHoldCrease(const MeshSolid& mesh, const TriangleList& triangles, double creaseCosine)
 {
@@ -59,15 +59,19 @@ bool MayHoldCrease(const MeshSolid& mesh, const TriangleList& triangles, double 
     normals.push_back(mesh.Normal(t));
     sum += normals.back();
   }
-  // All within a cone of half-angle below 14.5 degrees: every two differ by
-  // less than 29 (a degree short of a crease: far beyond rounding).
+  // All within a cone of half-angle (A - 1) / 2, A = CreaseTileAngleDegrees:
+  // every two differ by less than A - 1 (a degree short of a crease tile's
+  // bend: far beyond rounding). The cone must follow A: were it wider, a
+  // tile with a bend between the two would be decided by which other
+  // triangles near it each cell lists, and the two cells sharing it could
+  // draw it differently.
   const Vec3 axis = Normalized(sum);
   double nearest = 1.0;
   for (const Vec3& n : normals)
   {
     nearest = std::min(nearest, Dot(n, axis));
   }
-  if (nearest > std::cos(14.5 * M_PI / 180.0))
+  if (nearest > std::cos((CreaseTileAngleDegrees - 1.0) * 0.5 * M_PI / 180.0))
   {
     return false;
   }
@@ -168,8 +172,7 @@ std::optional<CreaseTile> CreaseOnTile(const CsgLeaf& leaf, const PrimitiveSet& 
   int axis, LatticeIndex plane, const FaceTile& tile)
 {
   const MeshSolid& mesh = primitives.Meshes[leaf.Primitive];
-  const double creaseCosine = std::cos(CreaseAngleDegrees * M_PI / 180.0);
-  const double gentleCosine = std::cos(GentleAngleDegrees * M_PI / 180.0);
+  const double creaseCosine = std::cos(CreaseTileAngleDegrees * M_PI / 180.0);
   thread_local TriangleList near; // (scratch: called for every tile of every cell)
   NearTile(mesh, grid, *leaf.Triangles, axis, plane, tile, near);
   if (!MayHoldCrease(mesh, near, creaseCosine))
@@ -190,13 +193,13 @@ std::optional<CreaseTile> CreaseOnTile(const CsgLeaf& leaf, const PrimitiveSet& 
   {
     const EdgeUseOnTile &p = uses[i], &q = uses[i + 1];
     const double cosine = Dot(mesh.Normal(p.Triangle), mesh.Normal(q.Triangle));
-    if (cosine >= gentleCosine)
+    if (std::isnan(cosine))
     {
-      continue; // a gentle bend of the trace
+      return std::nullopt; // (a degenerate triangle: no angle)
     }
-    if (!(cosine <= creaseCosine))
+    if (cosine > creaseCosine)
     {
-      return std::nullopt; // a bend between gentle and a crease (or no angle: NaN)
+      continue; // a bend of one of the trace's halves
     }
     if (!sharpest || cosine < sharpestCosine ||
       (cosine == sharpestCosine && std::tie(p.A, p.B) < std::tie(sharpest->A, sharpest->B)))

@@ -226,6 +226,56 @@ TEST(CreaseCrossing, TileWithTwoCreasesRunsThroughTheSharper)
   }
 }
 
+TEST(CreaseCrossing, CreaseTileFollowsABendBesideItsCrease)
+{
+  // A roof whose right side bends 0.03 past the ridge by `bend` degrees (a
+  // fillet's step beside a crease, as CAD parts are tessellated): the ridge
+  // turns by about 102 degrees.
+  const auto roof = [](double bend) {
+    const double pi = std::acos(-1.0);
+    const double first = -45.0 * pi / 180.0, second = first - bend * pi / 180.0;
+    const std::array<double, 2> ridge{ 0.5, 0.8 };
+    const std::array<double, 2> step{ 0.53, 0.8 + 0.03 * std::tan(first) };
+    const std::array<double, 2> foot{ step[0] + (-0.3 - step[1]) / std::tan(second), -0.3 };
+    return tpctest::PrismMesh({ { -0.2, -0.3 }, ridge, step, foot }, -0.5, 1.5);
+  };
+  const double shift = 0.3 / 128; // (the ridge off the lattice planes, as above)
+  const tpc::RootGrid grid = tpctest::SingleRoot({ -1 - shift, -1, -1 }, 2.0, 8);
+  const auto lattice = [](double x) { return static_cast<tpc::LatticeIndex>(std::llround((x + 1) * 128)); };
+  const auto latticeX = [&](double x) { return static_cast<tpc::LatticeIndex>(std::llround((x + 1 + shift) * 128)); };
+  const int axis = 1; // the face y = 0.5: u = z, v = x
+  const tpc::LatticeIndex plane = lattice(0.5);
+  const auto creaseOn = [&](double bend, double x0, double x1) {
+    SceneBuilder b;
+    b.Finish(b.Mesh(roof(bend)));
+    const auto pruned =
+      tpc::CsgExpression::Prune(b.Scene.Expression, { { -1, -1, -1 }, { 1, 1, 1 } }, b.Scene.Primitives).Expression;
+    tpc::FaceTile tile;
+    tile.U0 = lattice(0.5);
+    tile.U1 = lattice(0.875);
+    tile.V0 = latticeX(x0);
+    tile.V1 = latticeX(x1);
+    return tpc::CreaseOnTile(*tpc::LoneMeshLeaf(*pruned), b.Scene.Primitives, grid, axis, plane, tile);
+  };
+  // The tile holding both: a crease tile through the ridge, its right half
+  // passing the step (before, a bend between 10 and 30 degrees beside the
+  // crease made it no crease tile, and its chord cut the ridge).
+  const auto both = creaseOn(20.0, 0.4375, 0.5625);
+  ASSERT_TRUE(both.has_value());
+  EXPECT_NEAR(both->Position[0], 0.5, 1e-12);
+  EXPECT_NEAR(both->Position[2], 0.8, 1e-12);
+  const auto passesStep = [](const std::vector<Vec3>& half) {
+    return std::any_of(half.begin(), half.end(), [](const Vec3& p) { return std::fabs(p[0] - 0.53) < 1e-12; });
+  };
+  EXPECT_TRUE(passesStep(both->Sides[0]) != passesStep(both->Sides[1]));
+  // A tile holding the step alone: a crease tile from CreaseTileAngleDegrees
+  // (25) on, through the step.
+  EXPECT_FALSE(creaseOn(20.0, 0.515, 0.5625).has_value());
+  const auto step = creaseOn(27.0, 0.515, 0.5625);
+  ASSERT_TRUE(step.has_value());
+  EXPECT_NEAR(step->Position[0], 0.53, 1e-12);
+}
+
 TEST(CreaseCrossing, TiltedCubesEdgesRunAlongOutputEdges)
 {
   // A cube tilted about two axes (its edges cross every lattice plane
