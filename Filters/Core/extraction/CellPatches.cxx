@@ -45,43 +45,22 @@ void WriteCellPatches(const CellPatches& patches, std::uint32_t cell, std::size_
 }
 
 /// The `count` crossings from `crossings` as a loop's points (position,
-/// normal, the faces of the cell with low corner `base` and edge `size`
-/// holding them, whether a mesh edge's crossing), appended to `points`, and
-/// their vertex ids to `ids`.
+/// normal, the faces of the cell `box`, with low corner `base` and edge
+/// `size` on the lattice, holding them as placed, whether a mesh edge's
+/// crossing), appended to `points`, and their vertex ids to `ids`.
 void GatherLoop(const Crossing* crossings, std::size_t count, const CrossingVertices& vertices,
-  const TriangleMesh& mesh, const LatticeIndex base[3], LatticeIndex size, std::vector<std::uint32_t>& ids,
-  std::vector<LoopPoint>& points)
+  const TriangleMesh& mesh, const Box3& box, const LatticeIndex base[3], LatticeIndex size,
+  std::vector<std::uint32_t>& ids, std::vector<LoopPoint>& points)
 {
   for (std::size_t k = 0; k < count; ++k)
   {
     const Crossing& c = crossings[k];
     const std::uint32_t id = vertices.IdOf(c);
+    const bool onMeshEdge = c.Kind == CrossingKind::MeshEdge;
     ids.push_back(id);
-    points.push_back(
-      { mesh.Points[id], mesh.Normals[id], CrossingFaces(c, base, size), c.Kind == CrossingKind::MeshEdge });
+    points.push_back({ mesh.Points[id], mesh.Normals[id],
+      FacesAsPlaced(CrossingFaces(c, base, size), onMeshEdge, mesh.Points[id], box), onMeshEdge });
   }
-}
-
-/// Whether the computed position of every mesh edge's point of `loop` lies
-/// strictly inside its face of `cell` (exact comparisons). Case 2 of
-/// LoopTriangulation.h reads where a point lies from its Faces; a crease's
-/// x is placed so (CreaseCrossing.h: PlacedAsDecided), but a point of an
-/// exact neighbour's trace is placed without that check, and one rounded
-/// onto a side of its face would lie on a second face its Faces omit.
-bool MeshEdgePointsInsideTheirFaces(const std::vector<LoopPoint>& loop, const Box3& cell)
-{
-  for (const LoopPoint& p : loop)
-  {
-    for (int axis = 0; axis < 3 && p.OnMeshEdge; ++axis)
-    {
-      const bool onFace = (p.Faces >> (2 * axis)) & 3u;
-      if (!onFace && !(p.Position[axis] > cell.lo[axis] && p.Position[axis] < cell.hi[axis]))
-      {
-        return false;
-      }
-    }
-  }
-  return true;
 }
 
 /// Marching Cubes' fan of the loop `id` from its point s: k - 2 triangles.
@@ -111,7 +90,8 @@ void TriangulateCell(const BoundaryLoopSet& loops, const OctreeNode& node, const
   {
     ids.emplace_back();
     points.emplace_back();
-    GatherLoop(loops.Crossings.data() + offset, loopSize, vertices, mesh, base, size, ids.back(), points.back());
+    GatherLoop(
+      loops.Crossings.data() + offset, loopSize, vertices, mesh, box, base, size, ids.back(), points.back());
     Box3 b{ { HUGE_VAL, HUGE_VAL, HUGE_VAL }, { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL } };
     for (const LoopPoint& p : points.back())
     {
@@ -184,12 +164,9 @@ bool TriangulateCellFromLoopPoint(const BoundaryLoopSet& loops, const OctreeNode
   }
   std::vector<std::uint32_t> ids;
   std::vector<LoopPoint> points;
-  GatherLoop(loops.Crossings.data(), loops.Crossings.size(), vertices, mesh, base, size, ids, points);
+  GatherLoop(loops.Crossings.data(), loops.Crossings.size(), vertices, mesh, grid.CellBox(node.Level, node.Ijk),
+    base, size, ids, points);
   fromMeshEdge = std::any_of(points.begin(), points.end(), [](const LoopPoint& p) { return p.OnMeshEdge; });
-  if (fromMeshEdge && !MeshEdgePointsInsideTheirFaces(points, grid.CellBox(node.Level, node.Ijk)))
-  {
-    return false;
-  }
   const int s = fromMeshEdge ? MeshEdgeFanPoint(points) : LoopFanPoint(points);
   if (s < 0)
   {

@@ -367,6 +367,19 @@ int MeshEdgeFanPoint(const std::vector<LoopPoint>& loop)
   return ShortestFanPoint(loop, MeanNormal(loop), [](const LoopPoint& p) { return p.OnMeshEdge; });
 }
 
+unsigned FacesAsPlaced(unsigned faces, bool onMeshEdge, const Vec3& position, const Box3& cell)
+{
+  for (int axis = 0; axis < 3 && onMeshEdge; ++axis)
+  {
+    const bool onFace = (faces >> (2 * axis)) & 3u;
+    if (!onFace && !(position[axis] > cell.lo[axis] && position[axis] < cell.hi[axis]))
+    {
+      return 0x3F;
+    }
+  }
+  return faces;
+}
+
 bool StrictlyInside(const Vec3& p, const Box3& box)
 {
   for (int a = 0; a < 3; ++a)

@@ -33,9 +33,11 @@
 //    ray from s through p. The diagonals (s, p_i) cross the interior. (This
 //    reads the faces a point lies on from its Faces. A mesh edge's point - a
 //    crease's x, or a point of an exact neighbour's trace - lies on its
-//    lattice plane exactly; a fan from such a point is drawn only where every
-//    such point of the loop is computed strictly inside its face,
-//    CellPatches.cxx, so it lies on that face alone.)
+//    lattice plane exactly, and on that face alone where its computed
+//    position is strictly inside the face; where it is not - an exact
+//    neighbour's trace point is placed without that check, and may round
+//    onto a side - FacesAsPlaced gives it all six faces, so it is neither a
+//    fan point nor the far end of a diagonal.)
 // 3. Triangle: three loop points not on one face of C. They are not collinear
 //    (three collinear points of a convex cell's boundary lie on one face).
 //
@@ -75,7 +77,8 @@ struct LoopPoint
   Vec3 Position;
   Vec3 Normal; ///< unit surface normal there (zero if unknown)
   /// Faces of the cell the point lies on: bit f (CubeTopology.h numbering;
-  /// all six for a bend vertex, which never serves as a fan point).
+  /// all six for a bend vertex, or a mesh edge's point placed off its face's
+  /// interior, FacesAsPlaced: such a point never serves as a fan point).
   unsigned Faces = 0;
   /// Where a mesh's edge crosses a face of the cell: a crease tile's x
   /// (CreaseCrossing.h) or a point of an exact neighbour's trace (ExactCell.h).
@@ -129,6 +132,14 @@ LoopPatch TriangulateLoop(const std::vector<LoopPoint>& loop, const Box3& region
   const CsgExpression& expression, const PrimitiveSet& primitives,
   const std::vector<SeparatingPlane>& below = {}, const QuadricCellError* surface = nullptr,
   const Vec3* meshApex = nullptr);
+
+/// The faces of `cell` (bits, as LoopPoint::Faces) a loop point at
+/// `position` lies on, `faces` being those its crossing names: a sub-edge's
+/// crossing is placed strictly inside its sub-edge (CrossingVertices.h), so
+/// `faces` it is; a mesh edge's point (`onMeshEdge`) lies on its face's
+/// plane exactly, and where its position is not strictly inside the face
+/// along the other two axes the faces it lies on are not known: all six.
+unsigned FacesAsPlaced(unsigned faces, bool onMeshEdge, const Vec3& position, const Box3& cell);
 
 /// Marching Cubes' fan: the loop point whose fan satisfies case 2 of the
 /// header (no other point on a face with it but its neighbours) and faces

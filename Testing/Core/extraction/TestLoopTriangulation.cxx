@@ -139,6 +139,35 @@ TEST(LoopTriangulation, CreaseFanRunsAlongTheCrease)
   EXPECT_EQ(tpc::MeshEdgeFanPoint(crowded), -1);
 }
 
+TEST(LoopTriangulation, MeshEdgePointRoundedOntoASideIsNoFanEnd)
+{
+  // A mesh edge's point names one face (its lattice plane); computed
+  // strictly inside that face it lies on it alone, rounded onto a side of
+  // it the faces it lies on are unknown: all six.
+  const unsigned x0 = 1u, y0 = 4u; // faces x = 0 and y = 0 (CubeTopology.h numbering)
+  EXPECT_EQ(tpc::FacesAsPlaced(x0, true, { 0, 0.3, 0.5 }, Cell), x0);
+  EXPECT_EQ(tpc::FacesAsPlaced(x0, true, { 0, 0.0, 0.5 }, Cell), 0x3Fu);
+  EXPECT_EQ(tpc::FacesAsPlaced(x0, true, { 0, 0.3, 1.0 }, Cell), 0x3Fu);
+  EXPECT_EQ(tpc::FacesAsPlaced(x0 | y0, false, { 0, 0.0, 0.5 }, Cell), x0 | y0); // (a sub-edge's crossing)
+  // A loop around the cell through an exact neighbour's trace point q on
+  // the face x = 0 that rounded onto its side y = 0 (so it lies on y = 0 as
+  // well), then r inside the face y = 0; the surface smooth along it. Read
+  // as lying on x = 0 alone, q would serve as the fan point, and its
+  // diagonal to (1, 0, 0.6) would lie in the face y = 0 - on the cell's
+  // boundary, where the output is not embedded. As placed, no fan has q at
+  // either end of a diagonal.
+  const Vec3 normal = Normalized(Vec3{ 0, -0.5, 1 });
+  std::vector<LoopPoint> loop{ { { 0, 0, 0.6 }, normal, x0 }, { { 0.5, 0, 0.5 }, normal, y0 },
+    { { 1, 0, 0.6 }, normal, 2u | y0 }, { { 1, 1, 0.4 }, normal, 2u | 8u }, { { 0, 1, 0.4 }, normal, x0 | 8u } };
+  LoopPoint& q = loop[0];
+  q.OnMeshEdge = true;
+  EXPECT_EQ(tpc::MeshEdgeFanPoint(loop), 0); // (its faces as its crossing names them)
+  q.Faces = tpc::FacesAsPlaced(x0, true, q.Position, Cell);
+  EXPECT_EQ(tpc::MeshEdgeFanPoint(loop), -1);
+  const int s = tpc::LoopFanPoint(loop);
+  EXPECT_TRUE(s == -1 || s == 1 || s == 4) << s; // none, or from one of q's neighbours
+}
+
 TEST(LoopTriangulation, CapApexIsStrictlyInsideItsRegion)
 {
   // A sphere bulging through the top face: its eight crossings all lie on
