@@ -114,8 +114,8 @@ struct CellBoundary
   std::vector<std::uint8_t> ExactTile[6];
   std::vector<std::pair<Crossing, Crossing>> ExactSegments;
   /// Per tile of face f (or empty): the crossing of a crease that the tile's
-  /// chord is drawn through, where it has one: a mesh's (CreaseCrossing.h)
-  /// or two quadric leaves' (CsgCreaseCrossing.h).
+  /// chord is drawn through, where it has one: a mesh's sharpest edge on it
+  /// (CreaseCrossing.h) or two quadric leaves' crease (CsgCreaseCrossing.h).
   std::vector<std::optional<Crossing>> Creases[6];
 };
 

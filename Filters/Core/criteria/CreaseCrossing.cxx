@@ -195,7 +195,8 @@ std::optional<CreaseTile> CreaseOnTile(const CsgLeaf& leaf, const PrimitiveSet& 
     const double cosine = Dot(mesh.Normal(p.Triangle), mesh.Normal(q.Triangle));
     if (std::isnan(cosine))
     {
-      return std::nullopt; // (a degenerate triangle: no angle)
+      return std::nullopt; // (non-finite coordinates: no angle; a degenerate
+                           // triangle's zero normal gives 0, a right angle)
     }
     if (cosine > creaseCosine)
     {

@@ -3,9 +3,9 @@
 // A loop draws one chord across each face tile, so where a crease of the
 // mesh (an edge between triangles meeting at 30 degrees or more) crosses a
 // tile the chord cuts the crease's corner, and the output's crease is a
-// saw-tooth of tilted triangles. A crease tile is drawn through the crease's
-// crossing instead: the chord a -> b becomes a -> x -> b, x where the crease
-// edge meets the tile's plane (named and placed as exact cells name and
+// saw-tooth of tilted triangles. A crease tile is drawn through the crossing
+// of its sharpest edge instead: the chord a -> b becomes a -> x -> b, x where
+// that edge meets the tile's plane (named and placed as exact cells name and
 // place it, MeshArrangement.h), so the fans on both sides of the face have x
 // as a vertex and the crease runs through the output's edges.
 //
@@ -26,37 +26,44 @@
 // degrees, and every other edge on the tile below 10, which was to keep a
 // scanned surface's sharp-looking noise out):
 // - couplingdown 7 190 / 13 166 / 21 498 -> 6 286 / 11 552 / 18 960, its
-//   30-degree output edges 1.73 -> 1.39 times the input's at 1/64;
+//   30-degree output edges 1.77 -> 1.45 times the input's at 1/64;
 // - armadillo (a scan) 9 278 / 22 614 / 50 474 -> 9 088 / 18 354 / 40 700:
 //   loops through its sharp edges follow it closer, so cells may be larger
 //   (allowing other bends alone, at 30 degrees: 8 730 / 18 870 / 42 744);
-// - fandisk 3 % fewer, turbine within 1 %.
-// At 20 degrees armadillo at 1/64 gained triangles (9 766), at 15 every mesh
-// did.
+//   at 1/32 it gains (5 558 -> 6 346 in the corpus check): a coarse cell's
+//   crease tiles add loop points more than they let it grow;
+// - fandisk 3-4 % fewer, turbine within 1.1 %.
+// At 20 degrees armadillo gained triangles at every eps (9 766 at 1/64); at
+// 15 armadillo did, and couplingdown at 1/128 and 1/256.
 //
-// A narrow chamfer or step, two creases closer
-// than the tile, is drawn through one of them, and its other crease lies on
-// a half: before, such a tile was drawn straight, and on CAD parts its
-// chord's deviation was what most often split the cells along chamfers
-// (couplingdown at 1/128: 567 of 739 such splits). The trace ends at the
-// chord's ends a and b (the tile passed the face tests: one arc), so
-// a -> x -> b follows it, within how far its two halves stray from the two
-// chords (MeshCellError.h bounds that from the halves, which CreaseOnTile
-// walks). Every sub-tile of a crease tile holding x is a crease tile through
-// x too (the same edges, fewer of them: x is still the sharpest); one without
-// x holds pieces of one half, and is drawn through the sharpest crease
-// crossing it where it passes these tests itself, else straight - either way
-// through points of that half: however crack patching refines a crease tile,
-// the final loop runs through x and stays on the trace's halves. A cell
-// whose loop runs through x may then be fanned from x (MeshEdgeFanPoint,
-// LoopTriangulation.h): the crease becomes the fan's diagonal x -> x', one
-// output edge per cell, where that patch is certified within the apex fan's
-// own bound or a quarter of the tolerance (SurfaceExtraction.cxx).
+// A narrow chamfer or step - two creases closer than the tile - is drawn
+// through the sharper, and the other lies on a half (while such a tile was
+// drawn straight, its chord's deviation was what most often split the cells
+// along CAD parts' chamfers: couplingdown at 1/128, 567 of 739 such splits).
+// The trace ends at the chord's ends a and b (the tile passed the face
+// tests: one arc), so a -> x -> b follows it, within how far its two halves
+// stray from the two chords (MeshCellError.h bounds that from the halves,
+// which CreaseOnTile walks). Every sub-tile of a crease tile holding x is a
+// crease tile through x too (the same edges, fewer of them: x is still the
+// sharpest, and the quick test below passes there as well, x's two
+// triangles being near the sub-tile); one without x holds pieces of one
+// half, and is drawn through its own sharpest edge where it passes these
+// tests itself, else straight - either way through points of that half:
+// however crack patching refines a crease tile, the final loop runs through
+// x and stays on the trace's halves. A cell whose loop runs through x may
+// then be fanned from x (MeshEdgeFanPoint, LoopTriangulation.h): the crease
+// becomes the fan's diagonal x -> x', one output edge per cell, where that
+// patch is certified within the apex fan's own bound or a quarter of the
+// tolerance (SurfaceExtraction.cxx).
 //
 // Both cells sharing a tile must draw it alike: each decides from the tile
 // and the mesh alone, with exact side tests on the mesh's perturbed solid
 // (MeshArrangement.h); every triangle meeting the tile is in both cells'
-// triangle lists. x's computed position must be strictly inside the tile
+// triangle lists. (A quick test first reads the triangles each cell lists
+// near the tile, which may differ: it only rules out tiles on which no two
+// of them bend by CreaseTileAngleDegrees, with a cone narrower than half
+// that angle, so that it never rules out a tile the exact decision would
+// draw through x - a fixed cone set for 30 degrees left cracks at 20.) x's computed position must be strictly inside the tile
 // too (the exact test is on the perturbed mesh: a crease crossing within
 // rounding of a tile side would put the chords along the side, where the
 // output is not embedded - a fuzzer found it); it is required as a property
@@ -84,7 +91,7 @@ constexpr double CreaseAngleDegrees = 30.0;
 /// makes a tile it crosses a crease tile (header: why below a crease's).
 constexpr double CreaseTileAngleDegrees = 25.0;
 
-/// A crease tile: the crease's crossing x (named as exact cells name it) and
+/// A crease tile: its sharpest edge's crossing x (named as exact cells name it) and
 /// its position, and the trace's two halves from x: the mesh edges' crossings
 /// inside the tile, in order, then the crossing just outside it (the half's
 /// last segment leaves the tile through a or b).

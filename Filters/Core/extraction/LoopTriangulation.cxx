@@ -369,7 +369,11 @@ int MeshEdgeFanPoint(const std::vector<LoopPoint>& loop)
 
 unsigned FacesAsPlaced(unsigned faces, bool onMeshEdge, const Vec3& position, const Box3& cell)
 {
-  for (int axis = 0; axis < 3 && onMeshEdge; ++axis)
+  if (!onMeshEdge)
+  {
+    return faces;
+  }
+  for (int axis = 0; axis < 3; ++axis)
   {
     const bool onFace = (faces >> (2 * axis)) & 3u;
     if (!onFace && !(position[axis] > cell.lo[axis] && position[axis] < cell.hi[axis]))

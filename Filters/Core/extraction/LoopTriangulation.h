@@ -11,7 +11,7 @@
 // exactly on the sub-edge's line), a tile of a cell that passed the tests
 // holds one chord (MC-compatible tiles; BoundaryLoops.h), and a chord touches
 // its tile's boundary only at its ends. (A crease tile, CreaseCrossing.h,
-// holds its chord bent at the crease's crossing x: segments a -> x -> b with
+// holds its chord bent at its sharpest edge's crossing x: segments a -> x -> b with
 // a and b on the tile's boundary and x strictly inside the tile, so they
 // meet only at x and touch the boundary at a and b only.) Three
 // triangulations of a simple L
@@ -40,6 +40,8 @@
 //    fan point nor the far end of a diagonal.)
 // 3. Triangle: three loop points not on one face of C. They are not collinear
 //    (three collinear points of a convex cell's boundary lie on one face).
+//    (A point read as lying on every face - FacesAsPlaced - only sends such
+//    a loop to the apex fan.)
 //
 // Several loops in one cell: a cell passes the tests with several loops only
 // when every two are separated by a plane that the surface does not meet

@@ -134,8 +134,9 @@ void GatherCertifiedBound(const AdaptiveOctree& tree, const std::vector<std::uin
 /// up to rounding, and the fan from x draws the crease as one edge with two
 /// triangles fewer. A quarter: the least the first certificates aim at
 /// (FirstCertificateAim), so this one is not pushed further than the others
-/// (a tenth gave the same fandisk, tilted cube and tilted bar of the tests,
-/// and couplingdown at 1/64 7 192 triangles where a quarter gives 7 190).
+/// (measured at acdff20: a tenth gave the same fandisk, tilted cube and
+/// tilted bar of the tests, and couplingdown at 1/64 7 192 triangles where
+/// a quarter gave 7 190).
 constexpr double MeshEdgeFanKeptWithin = 0.25;
 
 /// Pieces a cell's first certificate may examine (it needs a proof under the

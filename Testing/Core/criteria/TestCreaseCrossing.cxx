@@ -269,7 +269,8 @@ TEST(CreaseCrossing, CreaseTileFollowsABendBesideItsCrease)
   };
   EXPECT_TRUE(passesStep(both->Sides[0]) != passesStep(both->Sides[1]));
   // A tile holding the step alone: a crease tile from CreaseTileAngleDegrees
-  // (25) on, through the step.
+  // (25) on, through the step (also what a quick cone test fixed for 30
+  // degrees got wrong: it ruled the 27-degree step out).
   EXPECT_FALSE(creaseOn(20.0, 0.515, 0.5625).has_value());
   const auto step = creaseOn(27.0, 0.515, 0.5625);
   ASSERT_TRUE(step.has_value());

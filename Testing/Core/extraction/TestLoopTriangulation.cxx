@@ -149,23 +149,25 @@ TEST(LoopTriangulation, MeshEdgePointRoundedOntoASideIsNoFanEnd)
   EXPECT_EQ(tpc::FacesAsPlaced(x0, true, { 0, 0.0, 0.5 }, Cell), 0x3Fu);
   EXPECT_EQ(tpc::FacesAsPlaced(x0, true, { 0, 0.3, 1.0 }, Cell), 0x3Fu);
   EXPECT_EQ(tpc::FacesAsPlaced(x0 | y0, false, { 0, 0.0, 0.5 }, Cell), x0 | y0); // (a sub-edge's crossing)
-  // A loop around the cell through an exact neighbour's trace point q on
-  // the face x = 0 that rounded onto its side y = 0 (so it lies on y = 0 as
-  // well), then r inside the face y = 0; the surface smooth along it. Read
-  // as lying on x = 0 alone, q would serve as the fan point, and its
-  // diagonal to (1, 0, 0.6) would lie in the face y = 0 - on the cell's
-  // boundary, where the output is not embedded. As placed, no fan has q at
-  // either end of a diagonal.
-  const Vec3 normal = Normalized(Vec3{ 0, -0.5, 1 });
-  std::vector<LoopPoint> loop{ { { 0, 0, 0.6 }, normal, x0 }, { { 0.5, 0, 0.5 }, normal, y0 },
-    { { 1, 0, 0.6 }, normal, 2u | y0 }, { { 1, 1, 0.4 }, normal, 2u | 8u }, { { 0, 1, 0.4 }, normal, x0 | 8u } };
+  // A loop through an exact neighbour's trace point q on the face x = 0
+  // that rounded onto its side y = 0 (so it lies on y = 0 as well), then a on
+  // x = 0 and z = 0, b on y = 0 and z = 0, c inside y = 0; the surface smooth
+  // along it. Read as lying on x = 0 alone, q is the fan point with the
+  // shortest diagonal, q -> b, which lies in the face y = 0 - on the cell's
+  // boundary, where the output is not embedded. As placed, no fan has q (or
+  // b, whose diagonal is the same) as its point.
+  const Vec3 normal = Normalized(Vec3{ -0.5, 0.3, -0.8 });
+  std::vector<LoopPoint> loop{ { { 0, 0, 0.2 }, normal, x0 }, { { 0, 0.9, 0 }, normal, x0 | 16u },
+    { { 0.5, 0, 0 }, normal, y0 | 16u }, { { 0.05, 0, 0.15 }, normal, y0 } };
   LoopPoint& q = loop[0];
   q.OnMeshEdge = true;
-  EXPECT_EQ(tpc::MeshEdgeFanPoint(loop), 0); // (its faces as its crossing names them)
+  // (Its faces as its crossing names them.)
+  EXPECT_EQ(tpc::LoopFanPoint(loop), 0);
+  EXPECT_EQ(tpc::MeshEdgeFanPoint(loop), 0);
   q.Faces = tpc::FacesAsPlaced(x0, true, q.Position, Cell);
-  EXPECT_EQ(tpc::MeshEdgeFanPoint(loop), -1);
   const int s = tpc::LoopFanPoint(loop);
-  EXPECT_TRUE(s == -1 || s == 1 || s == 4) << s; // none, or from one of q's neighbours
+  EXPECT_TRUE(s == -1 || s == 1 || s == 3) << s; // none, or from a or c: diagonal a -> c
+  EXPECT_EQ(tpc::MeshEdgeFanPoint(loop), -1);
 }
 
 TEST(LoopTriangulation, CapApexIsStrictlyInsideItsRegion)
