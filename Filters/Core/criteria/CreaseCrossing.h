@@ -56,22 +56,23 @@
 // patch is certified within the apex fan's own bound or a quarter of the
 // tolerance (SurfaceExtraction.cxx).
 //
-// Both cells sharing a tile must draw it alike: each decides from the tile
-// and the mesh alone, with exact side tests on the mesh's perturbed solid
+// Both cells sharing a tile must draw it alike: each decides from the tile and
+// the mesh alone, with exact side tests on the mesh's perturbed solid
 // (MeshArrangement.h); every triangle meeting the tile is in both cells'
-// triangle lists. (A quick test first reads the triangles each cell lists
-// near the tile, which may differ: it only rules out tiles on which no two
-// of them bend by CreaseTileAngleDegrees, with a cone narrower than half
-// that angle, so that it never rules out a tile the exact decision would
-// draw through x - a fixed cone set for 30 degrees left cracks at 20.) x's computed position must be strictly inside the tile
-// too (the exact test is on the perturbed mesh: a crease crossing within
-// rounding of a tile side would put the chords along the side, where the
-// output is not embedded - a fuzzer found it); it is required as a property
-// of x alone, on the side of every lattice plane the exact tests say
-// (MeshArrangement::PlacedAsDecided), so that too is decided alike by both
-// sides and for a tile and its sub-tiles. The extraction draws crease tiles between two cells of
-// the same lone mesh leaf that are not exact (CrackPatching.h); an exact
-// neighbour draws the whole trace, a polyline through x on the same halves.
+// triangle lists. (A quick test first reads the triangles each cell lists near
+// the tile, which may differ: it only rules out tiles on which no two of them
+// bend by CreaseTileAngleDegrees, with a cone narrower than half that angle,
+// so that it never rules out a tile the exact decision would draw through x -
+// a fixed cone set for 30 degrees left cracks at 20.) x's computed position
+// must be strictly inside the tile too (the exact test is on the perturbed
+// mesh: a crease crossing within rounding of a tile side would put the chords
+// along the side, where the output is not embedded - a fuzzer found it); it is
+// required as a property of x alone, on the side of every lattice plane the
+// exact tests say (MeshArrangement::PlacedAsDecided), so that too is decided
+// alike by both sides and for a tile and its sub-tiles. The extraction draws
+// crease tiles between two cells of the same lone mesh leaf that are not exact
+// (CrackPatching.h); an exact neighbour draws the whole trace, a polyline
+// through x on the same halves.
 #pragma once
 
 #include "BoundaryLoops.h"
@@ -91,10 +92,10 @@ constexpr double CreaseAngleDegrees = 30.0;
 /// makes a tile it crosses a crease tile (header: why below a crease's).
 constexpr double CreaseTileAngleDegrees = 25.0;
 
-/// A crease tile: its sharpest edge's crossing x (named as exact cells name it) and
-/// its position, and the trace's two halves from x: the mesh edges' crossings
-/// inside the tile, in order, then the crossing just outside it (the half's
-/// last segment leaves the tile through a or b).
+/// A crease tile: its sharpest edge's crossing x (named as exact cells name
+/// it) and its position, and the trace's two halves from x: the mesh edges'
+/// crossings inside the tile, in order, then the crossing just outside it
+/// (the half's last segment leaves the tile through a or b).
 struct CreaseTile
 {
   Crossing X;

@@ -44,21 +44,21 @@
 //   is in P' and |x - x'| <= delta.
 // Crease tiles (CreaseCrossing.h). In a scene of one mesh the subdivision's
 // loop draws a crease tile t as the extraction will, a -> x -> b through the
-// crossing x of its sharpest edge, and delta is taken for each half: the trace S ∩ t is
-// one arc from a through x to b, the polyline through the mesh edges'
+// crossing x of its sharpest edge, and delta is taken for each half: the trace
+// S ∩ t is one arc from a through x to b, the polyline through the mesh edges'
 // crossings, so its largest distance from [a, x] over the half from a to x is
 // at those crossings (CreaseChordDeviation). Every sub-tile of t holding x is
 // a crease tile through x (the same edges, fewer of them - x is still the
-// sharpest - and x was placed as decided, so inside every tile the exact
-// tests put it in, MeshArrangement.h), and every other sub-tile holds pieces
-// of one half (where one holds another sharp edge of that half, as a narrow
-// chamfer's second edge or a fillet's step, it may be drawn through that
-// edge's crossing: a point of the half too); so the final loop replaces a -> x and
+// sharpest - and x was placed as decided, so inside every tile the exact tests
+// put it in, MeshArrangement.h), and every other sub-tile holds pieces of one
+// half (where one holds another sharp edge of that half, as a narrow chamfer's
+// second edge or a fillet's step, it may be drawn through that edge's
+// crossing: a point of the half too); so the final loop replaces a -> x and
 // x -> b by points of the half each spans, and the argument above holds half
-// by half. Where the extraction draws t straight after all (a neighbour
-// holding another leaf, or a coarser face tiling from crack patching), the
-// final loop lacks x or another point of the cell's loop: FinalLoopRefines
-// refuses the prediction and the final patch is certified on its own.
+// by half. Where the extraction draws t straight after all (a neighbour holding
+// another leaf, or a coarser face tiling from crack patching), the final loop
+// lacks x or another point of the cell's loop: FinalLoopRefines refuses the
+// prediction and the final patch is certified on its own.
 //
 // So a cell is accepted when E(P) + delta <= the tolerance, and the final
 // patch is certified again on its own (usually tighter: its loop follows S

@@ -11,11 +11,11 @@
 // exactly on the sub-edge's line), a tile of a cell that passed the tests
 // holds one chord (MC-compatible tiles; BoundaryLoops.h), and a chord touches
 // its tile's boundary only at its ends. (A crease tile, CreaseCrossing.h,
-// holds its chord bent at its sharpest edge's crossing x: segments a -> x -> b with
-// a and b on the tile's boundary and x strictly inside the tile, so they
-// meet only at x and touch the boundary at a and b only.) Three
-// triangulations of a simple L
-// are embedded discs that meet the boundary of C in L only:
+// holds its chord bent at its sharpest edge's crossing x: segments
+// a -> x -> b with a and b on the tile's boundary and x strictly inside the
+// tile, so they meet only at x and touch the boundary at a and b only.) Three
+// triangulations of a simple L are embedded discs that meet the boundary of
+// C in L only:
 //
 // 1. ApexFan: the triangles (p_k, p_k+1, c) around an apex c strictly inside
 //    C. A point x != c of triangle (a, b, c) is c + t (p - c) with p on the
