@@ -97,36 +97,54 @@ double SegmentDistance(const Vec3& p, const Vec3& a, const Vec3& b)
   const double t = std::clamp(tpc::Dot(p - a, ab) / tpc::Dot(ab, ab), 0.0, 1.0);
   return tpc::Norm(p - (a + ab * t));
 }
+
+/// The tile tests' lattice: spacing 1/128 over [-1, 1]^3, its x planes
+/// shifted by 0.3 of a spacing, so that creases at x = 0.5 and the like are
+/// off every lattice plane (as the filter's lattice placement keeps creases;
+/// on one, a crease's crossing would sit on the plane and no tile holding it
+/// is a crease tile).
+constexpr double LatticeShift = 0.3 / 128;
+
+/// The lattice index of the plane at `coordinate` along y or z, or along x
+/// with `shift` = LatticeShift.
+tpc::LatticeIndex LatticeOf(double coordinate, double shift = 0.0)
+{
+  return static_cast<tpc::LatticeIndex>(std::llround((coordinate + 1 + shift) * 128));
+}
+
+/// The scene's expression pruned to [-1, 1]^3 (a lone mesh leaf for the
+/// tile tests' meshes).
+tpc::CsgExpressionPtr Whole(const tpc::ImplicitScene& scene)
+{
+  return tpc::CsgExpression::Prune(scene.Expression, { { -1, -1, -1 }, { 1, 1, 1 } }, scene.Primitives).Expression;
+}
+
+/// CreaseOnTile for the tile x in [x0, x1], z in [z0, z1] of the face
+/// y = 0.5 (axis 1: u = z, v = x) of the tile tests' lattice.
+std::optional<tpc::CreaseTile> CreaseOnFaceTile(const tpc::CsgLeaf& leaf, const tpc::PrimitiveSet& primitives,
+  double x0, double x1, double z0 = 0.5, double z1 = 0.875)
+{
+  static const tpc::RootGrid grid = tpctest::SingleRoot({ -1 - LatticeShift, -1, -1 }, 2.0, 8);
+  tpc::FaceTile tile;
+  tile.U0 = LatticeOf(z0);
+  tile.U1 = LatticeOf(z1);
+  tile.V0 = LatticeOf(x0, LatticeShift);
+  tile.V1 = LatticeOf(x1, LatticeShift);
+  return tpc::CreaseOnTile(leaf, primitives, grid, 1, LatticeOf(0.5), tile);
+}
 } // namespace
 
 TEST(CreaseCrossing, CreaseTilesAndTheirTraceHalves)
 {
   SceneBuilder b;
   b.Finish(b.Mesh(Tent(0.8, 0.02)));
-  // Lattice spacing 1/128 over [-1, 1]^3, its x planes shifted by 0.3 of a
-  // spacing: the ridge (x = 0.5) is off every lattice plane (as the filter's
-  // lattice placement keeps creases; on one, its crossing's position would
-  // sit on the plane and no tile holding it is a crease tile).
-  const double shift = 0.3 / 128;
-  const tpc::RootGrid grid = tpctest::SingleRoot({ -1 - shift, -1, -1 }, 2.0, 8);
-  const auto leafOf = [&](const tpc::Box3& box) {
-    return tpc::CsgExpression::Prune(b.Scene.Expression, box, b.Scene.Primitives).Expression;
-  };
-  const auto lattice = [](double x) { return static_cast<tpc::LatticeIndex>(std::llround((x + 1) * 128)); };
-  const auto latticeX = [&](double x) { return static_cast<tpc::LatticeIndex>(std::llround((x + 1 + shift) * 128)); };
-  // The face y = 0.5 (axis 1), tile x in [0.4375, 0.5625], z in [0.5,
-  // 0.875]: the ridge crosses it at (0.5, 0.5, 0.8), no other edge does.
-  const int axis = 1;
-  const tpc::LatticeIndex plane = lattice(0.5);
-  tpc::FaceTile tile; // (u = z, v = x for axis 1)
-  tile.U0 = lattice(0.5);
-  tile.U1 = lattice(0.875);
-  tile.V0 = latticeX(0.4375);
-  tile.V1 = latticeX(0.5625);
-  const auto pruned = leafOf({ { -1, -1, -1 }, { 1, 1, 1 } });
+  // The face y = 0.5, tile x in [0.4375, 0.5625], z in [0.5, 0.875]: the
+  // ridge (x = 0.5, off every lattice plane) crosses it at (0.5, 0.5, 0.8),
+  // no other edge does.
+  const auto pruned = Whole(b.Scene);
   const tpc::CsgLeaf* leaf = tpc::LoneMeshLeaf(*pruned);
   ASSERT_NE(leaf, nullptr);
-  const auto crease = tpc::CreaseOnTile(*leaf, b.Scene.Primitives, grid, axis, plane, tile);
+  const auto crease = CreaseOnFaceTile(*leaf, b.Scene.Primitives, 0.4375, 0.5625);
   ASSERT_TRUE(crease.has_value());
   EXPECT_EQ(crease->X.Kind, tpc::CrossingKind::MeshEdge);
   EXPECT_NEAR(crease->Position[0], 0.5, 1e-12);
@@ -137,20 +155,18 @@ TEST(CreaseCrossing, CreaseTilesAndTheirTraceHalves)
   for (const auto& half : crease->Sides)
   {
     ASSERT_EQ(half.size(), 1u);
-    EXPECT_FALSE(half[0][0] > 0.4375 - shift && half[0][0] < 0.5625 - shift && half[0][2] > 0.5 && half[0][2] < 0.875);
+    EXPECT_FALSE(half[0][0] > 0.4375 - LatticeShift && half[0][0] < 0.5625 - LatticeShift && half[0][2] > 0.5 &&
+      half[0][2] < 0.875);
   }
   // A wider tile, x in [0.125, 0.5625], z in [0, 0.875], also holds the
   // flat diagonal at x = 0.375 and the gentle bend at x = 0.25: still a
   // crease tile, its left half passing both before it leaves.
-  tile.V0 = latticeX(0.125);
-  tile.U0 = lattice(0.0);
-  const auto wide = tpc::CreaseOnTile(*leaf, b.Scene.Primitives, grid, axis, plane, tile);
+  const auto wide = CreaseOnFaceTile(*leaf, b.Scene.Primitives, 0.125, 0.5625, 0.0);
   ASSERT_TRUE(wide.has_value());
   EXPECT_EQ(std::max(wide->Sides[0].size(), wide->Sides[1].size()), 3u);
   EXPECT_EQ(std::min(wide->Sides[0].size(), wide->Sides[1].size()), 1u);
   // A tile away from the ridge holds no crease.
-  tile.V1 = latticeX(0.375);
-  EXPECT_FALSE(tpc::CreaseOnTile(*leaf, b.Scene.Primitives, grid, axis, plane, tile).has_value());
+  EXPECT_FALSE(CreaseOnFaceTile(*leaf, b.Scene.Primitives, 0.125, 0.375, 0.0).has_value());
 }
 
 TEST(CreaseCrossing, TileWithTwoCreasesRunsThroughTheSharper)
@@ -163,24 +179,10 @@ TEST(CreaseCrossing, TileWithTwoCreasesRunsThroughTheSharper)
   // crack patching refines the tile, runs through it).
   SceneBuilder b;
   b.Finish(b.Mesh(tpctest::PrismMesh({ { -0.2, -0.3 }, { 0.45, 0.8 }, { 0.55, 0.8 }, { 1.0, -0.3 } }, -0.5, 1.5)));
-  const double shift = 0.3 / 128; // (creases off the lattice planes, as above)
-  const tpc::RootGrid grid = tpctest::SingleRoot({ -1 - shift, -1, -1 }, 2.0, 8);
-  const auto lattice = [](double x) { return static_cast<tpc::LatticeIndex>(std::llround((x + 1) * 128)); };
-  const auto latticeX = [&](double x) { return static_cast<tpc::LatticeIndex>(std::llround((x + 1 + shift) * 128)); };
-  const auto pruned =
-    tpc::CsgExpression::Prune(b.Scene.Expression, { { -1, -1, -1 }, { 1, 1, 1 } }, b.Scene.Primitives).Expression;
+  const auto pruned = Whole(b.Scene);
   const tpc::CsgLeaf* leaf = tpc::LoneMeshLeaf(*pruned);
   ASSERT_NE(leaf, nullptr);
-  const int axis = 1; // the face y = 0.5: u = z, v = x
-  const tpc::LatticeIndex plane = lattice(0.5);
-  const auto creaseOn = [&](double x0, double x1) {
-    tpc::FaceTile tile;
-    tile.U0 = lattice(0.5);
-    tile.U1 = lattice(0.875);
-    tile.V0 = latticeX(x0);
-    tile.V1 = latticeX(x1);
-    return tpc::CreaseOnTile(*leaf, b.Scene.Primitives, grid, axis, plane, tile);
-  };
+  const auto creaseOn = [&](double x0, double x1) { return CreaseOnFaceTile(*leaf, b.Scene.Primitives, x0, x1); };
   const auto both = creaseOn(0.4375, 0.5625);
   ASSERT_TRUE(both.has_value());
   EXPECT_NEAR(both->Position[0], 0.55, 1e-12);
@@ -206,18 +208,11 @@ TEST(CreaseCrossing, TileWithTwoCreasesRunsThroughTheSharper)
   SceneBuilder symmetric;
   symmetric.Finish(
     symmetric.Mesh(tpctest::PrismMesh({ { 0.45, -0.3 }, { 0.45, 0.8 }, { 0.55, 0.8 }, { 0.55, -0.3 } }, -0.5, 1.5)));
-  const auto symmetricLeaf = tpc::CsgExpression::Prune(
-    symmetric.Scene.Expression, { { -1, -1, -1 }, { 1, 1, 1 } }, symmetric.Scene.Primitives).Expression;
-  std::optional<tpc::Crossing> first;
+  const auto symmetricLeaf = Whole(symmetric.Scene);
   for (const double x0 : { 0.4375, 0.375, 0.25 })
   {
-    tpc::FaceTile tile;
-    tile.U0 = lattice(0.5);
-    tile.U1 = lattice(0.875);
-    tile.V0 = latticeX(x0);
-    tile.V1 = latticeX(0.5625);
-    const auto crease = tpc::CreaseOnTile(
-      *tpc::LoneMeshLeaf(*symmetricLeaf), symmetric.Scene.Primitives, grid, axis, plane, tile);
+    const auto crease =
+      CreaseOnFaceTile(*tpc::LoneMeshLeaf(*symmetricLeaf), symmetric.Scene.Primitives, x0, 0.5625);
     ASSERT_TRUE(crease.has_value()) << x0;
     // Vertices 0..3 at y = -0.5, 4..7 at y = 1.5: the left crease's edge
     // (1, 5) before the right one's (2, 6).
@@ -239,23 +234,11 @@ TEST(CreaseCrossing, CreaseTileFollowsABendBesideItsCrease)
     const std::array<double, 2> foot{ step[0] + (-0.3 - step[1]) / std::tan(second), -0.3 };
     return tpctest::PrismMesh({ { -0.2, -0.3 }, ridge, step, foot }, -0.5, 1.5);
   };
-  const double shift = 0.3 / 128; // (the ridge off the lattice planes, as above)
-  const tpc::RootGrid grid = tpctest::SingleRoot({ -1 - shift, -1, -1 }, 2.0, 8);
-  const auto lattice = [](double x) { return static_cast<tpc::LatticeIndex>(std::llround((x + 1) * 128)); };
-  const auto latticeX = [&](double x) { return static_cast<tpc::LatticeIndex>(std::llround((x + 1 + shift) * 128)); };
-  const int axis = 1; // the face y = 0.5: u = z, v = x
-  const tpc::LatticeIndex plane = lattice(0.5);
   const auto creaseOn = [&](double bend, double x0, double x1) {
     SceneBuilder b;
     b.Finish(b.Mesh(roof(bend)));
-    const auto pruned =
-      tpc::CsgExpression::Prune(b.Scene.Expression, { { -1, -1, -1 }, { 1, 1, 1 } }, b.Scene.Primitives).Expression;
-    tpc::FaceTile tile;
-    tile.U0 = lattice(0.5);
-    tile.U1 = lattice(0.875);
-    tile.V0 = latticeX(x0);
-    tile.V1 = latticeX(x1);
-    return tpc::CreaseOnTile(*tpc::LoneMeshLeaf(*pruned), b.Scene.Primitives, grid, axis, plane, tile);
+    const auto pruned = Whole(b.Scene);
+    return CreaseOnFaceTile(*tpc::LoneMeshLeaf(*pruned), b.Scene.Primitives, x0, x1);
   };
   // The tile holding both: a crease tile through the ridge, its right half
   // passing the step (before, a bend between 10 and 30 degrees beside the
