@@ -93,8 +93,11 @@ tpcoracle::TriangleSoup Soup(vtkPolyData* surface)
 /// The two-sided Hausdorff distance between input and output by CGAL's
 /// certified method (to 1 % of the tolerance): its lower estimate is at most
 /// the bound the filter proves (a lower estimate above it would disprove
-/// the bound), and its upper estimate within the tolerance. Returns the
-/// upper estimate.
+/// the bound), and its upper estimate within the tolerance plus the two
+/// error bounds it may lie above the distance (Upper - Lower <= 2 error:
+/// where the proven bound is within 1 % of the tolerance, as on the double
+/// torus at 1/128, the estimate may pass the tolerance by that much).
+/// Returns the upper estimate.
 double ExpectWithinTheProvenBound(vtkPolyData* input, const tpctest::FilterResult& r, const std::string& name)
 {
   const tpcoracle::TriangleSoup in = Soup(input), out = Soup(r.Surface);
@@ -103,8 +106,8 @@ double ExpectWithinTheProvenBound(vtkPolyData* input, const tpctest::FilterResul
   const tpcoracle::HausdorffEstimate toInput = tpcoracle::DirectedHausdorffWithCgal(out, in, error);
   EXPECT_LE(toOutput.Lower, r.HausdorffBound) << name;
   EXPECT_LE(toInput.Lower, r.HausdorffBound) << name;
-  EXPECT_LE(toOutput.Upper, r.Tolerance) << name;
-  EXPECT_LE(toInput.Upper, r.Tolerance) << name;
+  EXPECT_LE(toOutput.Upper, r.Tolerance + 2 * error) << name;
+  EXPECT_LE(toInput.Upper, r.Tolerance + 2 * error) << name;
   return std::max(toOutput.Upper, toInput.Upper);
 }
 

@@ -229,14 +229,16 @@ double RoundingSlack(const CsgLeaf& leaf, const PrimitiveSet& primitives, const 
 }
 
 HausdorffEstimate CertifiedMeshPatchError(const std::vector<ConvexPolygon>& surface,
-  const std::vector<SourceTriangle>& patch, double slack, double enough, double giveUp, std::size_t budget)
+  const std::vector<SourceTriangle>& patch, double slack, double enough, double giveUp, std::size_t budget,
+  const std::vector<double>* patchOffsets)
 {
   HausdorffEstimate error{ HUGE_VAL, 0.0 };
   if (surface.empty() || patch.empty())
   {
     return error;
   }
-  const HausdorffEstimate toSurface = OneSidedHausdorff(patch, surface, enough - slack, giveUp - slack, budget);
+  const HausdorffEstimate toSurface =
+    OneSidedHausdorff(patch, surface, enough - slack, giveUp - slack, budget, { patchOffsets, nullptr });
   error.Lower = toSurface.Lower;
   if (!(toSurface.Upper + slack <= giveUp))
   {
@@ -259,7 +261,8 @@ HausdorffEstimate CertifiedMeshPatchError(const std::vector<ConvexPolygon>& surf
   {
     targets.push_back(MakeConvexPolygon({ t[0], t[1], t[2] }));
   }
-  const HausdorffEstimate toPatch = OneSidedHausdorff(pieces, targets, enough - slack, giveUp - slack, budget);
+  const HausdorffEstimate toPatch =
+    OneSidedHausdorff(pieces, targets, enough - slack, giveUp - slack, budget, { nullptr, patchOffsets });
   error.Lower = std::max(error.Lower, toPatch.Lower);
   const double upper = std::max(toSurface.Upper, toPatch.Upper) + slack;
   error.Upper = upper <= giveUp ? upper : HUGE_VAL;
@@ -298,8 +301,9 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
       return HUGE_VAL;
     }
   }
-  // delta: each chord against the trace on the tile holding its midpoint;
-  // none on a crease tile's two chords (the final loop follows its trace).
+  // delta_k: each chord against the trace on its tile (on a crease tile,
+  // against its half of the trace).
+  std::vector<double> chordDelta(m, HUGE_VAL);
   double delta = 0.0;
   for (std::size_t k = 0; k < m && delta <= tolerance; ++k)
   {
@@ -337,6 +341,7 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
         break;
       }
     }
+    chordDelta[k] = chord;
     delta = std::max(delta, chord);
   }
   const double slack = RoundingSlack(*leaf, primitives, cell);
@@ -344,6 +349,10 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
   if (!(delta < tolerance))
   {
     return HUGE_VAL;
+  }
+  for (double& d : chordDelta)
+  {
+    d += slack;
   }
   const Vec3 apex = MeshCellApex(surface, cell);
   std::vector<SourceTriangle> fan;
@@ -358,6 +367,17 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
   prediction.Attained = error.Lower;
   prediction.OwnFanError = error.Upper;
   prediction.Bound = error.Upper == HUGE_VAL ? HUGE_VAL : error.Upper + delta;
+  // E(P) + delta failed: the per-chord composition (header), where the
+  // chords' deviations differ and the fan's attained distance leaves room
+  // for the smallest.
+  const double leastDelta = *std::min_element(chordDelta.begin(), chordDelta.end());
+  if (prediction.Bound == HUGE_VAL && leastDelta < delta && error.Lower + leastDelta < tolerance)
+  {
+    const HausdorffEstimate composed =
+      CertifiedMeshPatchError(surface, fan, slack, tolerance, tolerance, PredictionBudget, &chordDelta);
+    prediction.Bound = composed.Upper;
+    prediction.OwnFanError = composed.Upper; // (offsets are >= 0: it bounds E(P) too)
+  }
   return prediction.Bound;
 }
 

@@ -42,6 +42,18 @@
 //   onto u; then |w - u| is w's distance to the line, which is its distance
 //   to the segment (the projection u lies in it), <= delta. x = c + s (w - c)
 //   is in P' and |x - x'| <= delta.
+// Per chord. Both steps move a point by at most the delta of one chord, the
+// one whose fan triangle T_ab = (a, b, c) it was taken in: with delta_ab the
+// deviation of chord ab alone,
+//   h(P', S_C) <= max over ab of ( h(T_ab, S_C) + delta_ab ),
+//   h(S_C, P') <= max over y in S_C of min over ab of ( d(y, T_ab) + delta_ab )
+// (for y, x' is taken in the T_ab attaining the minimum). Both are offset
+// distances that OneSidedHausdorff bounds (PolygonHausdorff.h: Offsets), and
+// each is at most E(P) + delta. It is tried where E(P) + delta fails and the
+// chords' deltas differ: a chord that strays far from a trace the fan's other
+// triangles meet closely (a fillet cut by one chord, a crease tile's half)
+// no longer adds its delta to the whole fan's error. Its bound is also a
+// bound of E(P) (the offsets are >= 0).
 // Crease tiles (CreaseCrossing.h). In a scene of one mesh the subdivision's
 // loop draws a crease tile t as the extraction will, a -> x -> b through the
 // crossing x of its sharpest edge, and delta is taken for each half: the trace
@@ -60,9 +72,10 @@
 // lacks x or another point of the cell's loop: FinalLoopRefines refuses the
 // prediction and the final patch is certified on its own.
 //
-// So a cell is accepted when E(P) + delta <= the tolerance, and the final
-// patch is certified again on its own (usually tighter: its loop follows S
-// closer); the filter reports the smaller of the two. Where the final loop
+// So a cell is accepted when E(P) + delta or the per-chord bound is within
+// the tolerance, and the final patch is certified again on its own (usually
+// tighter: its loop follows S closer); the filter reports the smaller of the
+// two. Where the final loop
 // is the cell's own loop, point for point (SameLoop), P' is P, triangle for
 // triangle, and the bound of E(P) the prediction proved is P's certificate
 // (kept as it is where it is within what the first certificates aim at).
@@ -109,10 +122,13 @@ double ChordDeviation(const std::vector<ConvexPolygon>& surface, const Box3& til
 /// E(P) for the patch triangles `patch`: Upper (`slack` added) proven when <=
 /// `giveUp` (+inf beyond it, or when there is nothing to compare), Lower
 /// attained; pieces are refined until within `enough` or 10 % of Lower, at
-/// most `budget` of them per direction (OneSidedHausdorff).
+/// most `budget` of them per direction (OneSidedHausdorff). With
+/// `patchOffsets` (one per patch triangle: its chord's delta), the per-chord
+/// composition's bound of E(P') instead (header), Lower then a lower bound of
+/// that bound, not a distance attained.
 HausdorffEstimate CertifiedMeshPatchError(const std::vector<ConvexPolygon>& surface,
   const std::vector<SourceTriangle>& patch, double slack, double enough, double giveUp,
-  std::size_t budget = 4096);
+  std::size_t budget = 4096, const std::vector<double>* patchOffsets = nullptr);
 
 /// The slack for rounding in a cell of the mesh of `leaf` (header: Rounding).
 double RoundingSlack(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell);

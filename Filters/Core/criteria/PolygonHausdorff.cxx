@@ -46,6 +46,7 @@ struct Piece
   std::size_t First = 0;
   std::size_t Count = 0;
   double Upper = HUGE_VAL;
+  double Offset = 0.0; ///< its source triangle's offset
   bool operator<(const Piece& o) const { return this->Upper < o.Upper; }
 };
 
@@ -117,12 +118,31 @@ struct Targets
   /// A piece's candidates with their squared box distances.
   std::vector<std::pair<double, std::uint32_t>>& InReach;
   std::vector<std::uint32_t>& Arena;
+  const std::vector<double>* Offsets; ///< per target; null for zeros
+  double OffsetOf(std::uint32_t t) const { return this->Offsets ? (*this->Offsets)[t] : 0.0; }
 };
 
-/// The piece's bound ((1) and (2) of the header) from the targets among the
-/// candidates (`count` entries of the arena from `first`) that may be nearest
-/// to one of its points (box distance within `parentUpper`); raises `lower`
-/// to its vertices' distances. The nearest box's target is visited first,
+/// Whether sqrt(distance2) + offset < limit, i.e. distance2 < (limit -
+/// offset)^2 with limit - offset > 0 (with a zero offset: distance2 <
+/// limit^2 for limit > 0, the comparison without offsets).
+bool CloserThan(double distance2, double offset, double limit)
+{
+  const double room = limit - offset;
+  return room > 0.0 && distance2 < room * room;
+}
+
+/// Whether sqrt(distance2) + offset <= limit.
+bool WithinOf(double distance2, double offset, double limit)
+{
+  const double room = limit - offset;
+  return room >= 0.0 && distance2 <= room * room;
+}
+
+/// The piece's bound ((1) and (2) of the header; its source's offset added)
+/// from the targets among the candidates (`count` entries of the arena from
+/// `first`) that may be nearest to one of its points (box distance plus
+/// offset within `parentUpper` less the source's offset); raises `lower` to
+/// its vertices' (offset) distances. The nearest box's target is visited first,
 /// then the others in any order, and a distance is computed only where it may
 /// lower a vertex's nearest distance or the single-target bound (box
 /// distances are lower bounds of distances), so both stay exact whatever the
@@ -133,13 +153,13 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
   std::vector<std::uint32_t>& arena = targets.Arena;
   // (Box distances are compared squared: no square root per target.)
   const Box3 box = BoundsOf(piece.Vertices.data(), 3);
-  const double parentUpper2 = parentUpper * parentUpper;
+  const double reach = parentUpper - piece.Offset; // (a bound of g on the piece)
   inReach.clear();
   for (std::size_t k = first; k < first + count; ++k)
   {
     const std::uint32_t t = arena[k];
     const double d2 = BoxDistance2(box, targets.Boxes[t]);
-    if (d2 <= parentUpper2)
+    if (WithinOf(d2, targets.OffsetOf(t), reach))
     {
       inReach.emplace_back(d2, t);
     }
@@ -154,6 +174,7 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
   // piece much larger than the targets is most of them.)
   const auto visit = [&](std::uint32_t t) {
     const ConvexPolygon& target = targets.Polygons[t];
+    const double offset = targets.OffsetOf(t);
     double boxDistance2Of[3];
     double farthestBox2 = 0.0;
     for (int i = 0; i < 3; ++i)
@@ -161,16 +182,16 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
       boxDistance2Of[i] = PointBoxDistance2(piece.Vertices[i], target.Bounds);
       farthestBox2 = std::max(farthestBox2, boxDistance2Of[i]);
     }
-    bool improvesSingle = farthestBox2 < single * single;
+    bool improvesSingle = CloserThan(farthestBox2, offset, single);
     double farthest = 0.0;
     for (int i = 0; i < 3; ++i)
     {
-      const bool improvesNearest = boxDistance2Of[i] < nearest[i] * nearest[i];
+      const bool improvesNearest = CloserThan(boxDistance2Of[i], offset, nearest[i]);
       if (!improvesNearest && !improvesSingle)
       {
         continue;
       }
-      const double d = PolygonDistance(piece.Vertices[i], target);
+      const double d = PolygonDistance(piece.Vertices[i], target) + offset;
       nearest[i] = std::min(nearest[i], d);
       farthest = std::max(farthest, d);
       improvesSingle = improvesSingle && farthest < single;
@@ -193,8 +214,7 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
     visit(inReach.front().second);
     for (auto e = inReach.begin() + 1; e != inReach.end(); ++e)
     {
-      const double bound = largest();
-      if (e->first < bound * bound)
+      if (CloserThan(e->first, targets.OffsetOf(e->second), largest()))
       {
         visit(e->second);
       }
@@ -205,14 +225,14 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
   {
     vertexMax = std::max(vertexMax, nearest[i]);
   }
-  piece.Upper = std::min(single, vertexMax + CoveringRadius(piece.Vertices));
-  lower = std::max(lower, vertexMax == HUGE_VAL ? 0.0 : vertexMax);
+  const double upper = std::min(single, vertexMax + CoveringRadius(piece.Vertices)); // (of g)
+  piece.Upper = upper + piece.Offset;
+  lower = std::max(lower, vertexMax == HUGE_VAL ? 0.0 : vertexMax + piece.Offset);
   // (Appended after the parent's entries were read: the arena may move.)
-  const double upper2 = piece.Upper * piece.Upper;
   piece.First = arena.size();
   for (const auto& [boxDistance2, t] : inReach)
   {
-    if (boxDistance2 <= upper2)
+    if (WithinOf(boxDistance2, targets.OffsetOf(t), upper))
     {
       arena.push_back(t);
     }
@@ -297,7 +317,8 @@ double PolygonDistance(const Vec3& p, const ConvexPolygon& polygon)
 }
 
 HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
-  const std::vector<ConvexPolygon>& targets, double enough, double giveUp, std::size_t budget)
+  const std::vector<ConvexPolygon>& targets, double enough, double giveUp, std::size_t budget,
+  const DistanceOffsets& offsets)
 {
   HausdorffEstimate estimate;
   if (sources.empty())
@@ -316,11 +337,11 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
     arena[t] = t;
     boxes[t] = targets[t].Bounds;
   }
-  Targets context{ targets, boxes, inReach, arena };
+  Targets context{ targets, boxes, inReach, arena, offsets.Targets };
   std::priority_queue<Piece> pieces;
-  for (const SourceTriangle& s : sources)
+  for (std::size_t k = 0; k < sources.size(); ++k)
   {
-    Piece piece{ s, 0, 0, HUGE_VAL };
+    Piece piece{ sources[k], 0, 0, HUGE_VAL, offsets.Sources ? (*offsets.Sources)[k] : 0.0 };
     Evaluate(piece, 0, targets.size(), HUGE_VAL, context, estimate.Lower);
     pieces.push(piece);
   }
@@ -342,7 +363,7 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
       { SourceTriangle{ v[0], m01, m20 }, SourceTriangle{ m01, v[1], m12 }, SourceTriangle{ m20, m12, v[2] },
         SourceTriangle{ m01, m12, m20 } })
     {
-      Piece piece{ child, 0, 0, HUGE_VAL };
+      Piece piece{ child, 0, 0, HUGE_VAL, parent.Offset };
       Evaluate(piece, parent.First, parent.Count, parent.Upper, context, estimate.Lower);
       piece.Upper = std::min(piece.Upper, parent.Upper); // (the child lies in its parent)
       pieces.push(piece);

@@ -24,6 +24,17 @@
 // box is farther from a piece's box than the piece's upper bound cannot be the
 // nearest to any of its points and is dropped for the piece's sub-pieces.
 //
+// Offsets (the per-chord composition of MeshCellError.h). With an offset o_s
+// per source triangle and p_t per target, what is bounded is
+//   max over sources s, x in s of  o_s + g(x),  g(x) = min_t ( d(x, Q_t) + p_t ).
+// Both facts survive: each d(., Q_t) + p_t is convex, so over a piece g <=
+// min_t max_i ( d(v_i, Q_t) + p_t ) (1); g is a minimum of 1-Lipschitz
+// functions, hence 1-Lipschitz, so g <= max_i g(v_i) + R (2). A target whose
+// box distance plus p_t exceeds a piece's bound of g cannot be the minimum at
+// any of its points and is dropped as before. Lower is then attained by
+// o_s + g, not by the distance itself. With no offsets (zeros) every
+// comparison and sum is the one without them, bit for bit.
+//
 // Distances are computed in floating point; the caller adds the rounding
 // slack (MeshCellError.h).
 #pragma once
@@ -69,9 +80,18 @@ struct HausdorffEstimate
   double Lower = 0.0; ///< attained at a point of the sources
 };
 
-/// Bounds h(sources, targets) as above; Upper is +inf when there are sources
-/// but no targets.
+/// Offsets added to the distances (header: Offsets): one per source
+/// triangle, one per target; null for zeros.
+struct DistanceOffsets
+{
+  const std::vector<double>* Sources = nullptr;
+  const std::vector<double>* Targets = nullptr;
+};
+
+/// Bounds h(sources, targets) as above (with `offsets`, the offset distance);
+/// Upper is +inf when there are sources but no targets.
 HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
-  const std::vector<ConvexPolygon>& targets, double enough, double giveUp, std::size_t budget = 4096);
+  const std::vector<ConvexPolygon>& targets, double enough, double giveUp, std::size_t budget = 4096,
+  const DistanceOffsets& offsets = {});
 
 } // namespace tpc
