@@ -1,9 +1,9 @@
 // Remeshing real closed meshes of known topology (CGAL's demo data, Debian
 // package libcgal-demo) at three tolerances: the output has the input's
 // components and genus (both measured with VTK's own filters), is closed and
-// manifold, carries the guarantee, and lies within the tolerance and the
-// reported HausdorffBound of the input both ways (CGAL's bounded-error
-// Hausdorff distance, a certified oracle).
+// manifold, carries the guarantee, and lies within the reported
+// HausdorffBound of the input both ways (CGAL's bounded-error Hausdorff
+// distance, a certified oracle: its estimates bracket the distance).
 #include "CgalTestMeshes.h"
 #include "FilterTestHelpers.h"
 
@@ -91,13 +91,13 @@ tpcoracle::TriangleSoup Soup(vtkPolyData* surface)
 }
 
 /// The two-sided Hausdorff distance between input and output by CGAL's
-/// certified method (to 1 % of the tolerance): its lower estimate is at most
-/// the bound the filter proves (a lower estimate above it would disprove
-/// the bound), and its upper estimate within the tolerance plus the two
-/// error bounds it may lie above the distance (Upper - Lower <= 2 error:
-/// where the proven bound is within 1 % of the tolerance, as on the double
-/// torus at 1/128, the estimate may pass the tolerance by that much).
-/// Returns the upper estimate.
+/// certified method, [d - error, d + error] for its estimate d within
+/// `error` (1 % of the tolerance) of the distance: the lower end is at most
+/// the bound the filter proves (a lower end above it would disprove the
+/// bound), and the upper end at most that bound plus 2 error, the most it
+/// may lie above the distance (where the proven bound is within 2 % of the
+/// tolerance, as on the double torus at 1/128, the upper end may pass the
+/// tolerance). Returns the upper end.
 double ExpectWithinTheProvenBound(vtkPolyData* input, const tpctest::FilterResult& r, const std::string& name)
 {
   const tpcoracle::TriangleSoup in = Soup(input), out = Soup(r.Surface);
@@ -106,8 +106,8 @@ double ExpectWithinTheProvenBound(vtkPolyData* input, const tpctest::FilterResul
   const tpcoracle::HausdorffEstimate toInput = tpcoracle::DirectedHausdorffWithCgal(out, in, error);
   EXPECT_LE(toOutput.Lower, r.HausdorffBound) << name;
   EXPECT_LE(toInput.Lower, r.HausdorffBound) << name;
-  EXPECT_LE(toOutput.Upper, r.Tolerance + 2 * error) << name;
-  EXPECT_LE(toInput.Upper, r.Tolerance + 2 * error) << name;
+  EXPECT_LE(toOutput.Upper, r.HausdorffBound + 2 * error) << name;
+  EXPECT_LE(toInput.Upper, r.HausdorffBound + 2 * error) << name;
   return std::max(toOutput.Upper, toInput.Upper);
 }
 

@@ -341,6 +341,10 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
         break;
       }
     }
+    if (!(chord >= 0.0))
+    {
+      return HUGE_VAL; // (a NaN from degenerate input would fall out of max and the offsets' order)
+    }
     chordDelta[k] = chord;
     delta = std::max(delta, chord);
   }
@@ -367,16 +371,16 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
   prediction.Attained = error.Lower;
   prediction.OwnFanError = error.Upper;
   prediction.Bound = error.Upper == HUGE_VAL ? HUGE_VAL : error.Upper + delta;
-  // E(P) + delta failed: the per-chord composition (header), where the
-  // chords' deviations differ and the fan's attained distance leaves room
-  // for the smallest.
+  // E(P) + delta failed: the per-chord bound (header), where the chords'
+  // deviations differ and the fan's attained distance leaves room for the
+  // smallest. (It bounds E(P) too - the offsets are >= 0 - but OwnFanError
+  // stays unproven, +inf: the extraction reads it as how close the apex fan
+  // itself is, MeshCellFromLoopPoint.)
   const double leastDelta = *std::min_element(chordDelta.begin(), chordDelta.end());
   if (prediction.Bound == HUGE_VAL && leastDelta < delta && error.Lower + leastDelta < tolerance)
   {
-    const HausdorffEstimate composed =
-      CertifiedMeshPatchError(surface, fan, slack, tolerance, tolerance, PredictionBudget, &chordDelta);
-    prediction.Bound = composed.Upper;
-    prediction.OwnFanError = composed.Upper; // (offsets are >= 0: it bounds E(P) too)
+    prediction.Bound =
+      CertifiedMeshPatchError(surface, fan, slack, tolerance, tolerance, PredictionBudget, &chordDelta).Upper;
   }
   return prediction.Bound;
 }

@@ -123,9 +123,9 @@ double ChordDeviation(const std::vector<ConvexPolygon>& surface, const Box3& til
 /// `giveUp` (+inf beyond it, or when there is nothing to compare), Lower
 /// attained; pieces are refined until within `enough` or 10 % of Lower, at
 /// most `budget` of them per direction (OneSidedHausdorff). With
-/// `patchOffsets` (one per patch triangle: its chord's delta), the per-chord
-/// composition's bound of E(P') instead (header), Lower then a lower bound of
-/// that bound, not a distance attained.
+/// `patchOffsets` (one per patch triangle: its chord's delta, >= 0), the
+/// per-chord bound of E(P') instead (header); Lower is then a value the
+/// offset distances attain, not a distance.
 HausdorffEstimate CertifiedMeshPatchError(const std::vector<ConvexPolygon>& surface,
   const std::vector<SourceTriangle>& patch, double slack, double enough, double giveUp,
   std::size_t budget = 4096, const std::vector<double>* patchOffsets = nullptr);
@@ -133,7 +133,8 @@ HausdorffEstimate CertifiedMeshPatchError(const std::vector<ConvexPolygon>& surf
 /// The slack for rounding in a cell of the mesh of `leaf` (header: Rounding).
 double RoundingSlack(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell);
 
-/// The subdivision's prediction E(P) + delta for a cell whose tests passed
+/// The subdivision's prediction, E(P) + delta or else the per-chord bound
+/// (header), for a cell whose tests passed
 /// with the single loop `loops` (sub-edge crossings, and crease crossings in
 /// a scene of one mesh) on its `boundary` tiles
 /// (`cell`: its box, as the extraction computes it, so that both find the
@@ -145,7 +146,8 @@ double RoundingSlack(const CsgLeaf& leaf, const PrimitiveSet& primitives, const 
 /// FinalLoopRefines), the largest distance between the fan and the mesh the
 /// bound came upon as Attained (a lower bound of E(P)) and the bound of E(P)
 /// alone as OwnFanError (the final patch's error where the final loop is the
-/// cell's own, SameLoop).
+/// cell's own, SameLoop; +inf where the cell passed on the per-chord bound,
+/// E(P) + delta having failed before E(P) was proven).
 double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSet& primitives,
   const RootGrid& grid, const Box3& cell, const CellBoundary& boundary, const BoundaryLoopSet& loops,
   double tolerance, AdaptiveOctree::MeshCellPrediction& prediction);

@@ -45,8 +45,9 @@ struct Piece
   SourceTriangle Vertices;
   std::size_t First = 0;
   std::size_t Count = 0;
-  double Upper = HUGE_VAL;
-  double Offset = 0.0; ///< its source triangle's offset
+  double Upper = HUGE_VAL;    ///< of the offset distance on the piece: UpperOfG + Offset
+  double UpperOfG = HUGE_VAL; ///< of g on the piece (header: Offsets)
+  double Offset = 0.0;        ///< its source triangle's offset
   bool operator<(const Piece& o) const { return this->Upper < o.Upper; }
 };
 
@@ -141,19 +142,20 @@ bool WithinOf(double distance2, double offset, double limit)
 /// The piece's bound ((1) and (2) of the header; its source's offset added)
 /// from the targets among the candidates (`count` entries of the arena from
 /// `first`) that may be nearest to one of its points (box distance plus
-/// offset within `parentUpper` less the source's offset); raises `lower` to
-/// its vertices' (offset) distances. The nearest box's target is visited first,
-/// then the others in any order, and a distance is computed only where it may
-/// lower a vertex's nearest distance or the single-target bound (box
+/// offset within the parent's bound of g, `parentUpperOfG`); raises `lower`
+/// to its vertices' (offset) distances. The nearest box's target is visited
+/// first, then the others in any order, and a distance is computed only where
+/// it may lower a vertex's nearest distance or the single-target bound (box
 /// distances are lower bounds of distances), so both stay exact whatever the
 /// order.
-void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentUpper, Targets& targets, double& lower)
+void Evaluate(
+  Piece& piece, std::size_t first, std::size_t count, double parentUpperOfG, Targets& targets, double& lower)
 {
   std::vector<std::pair<double, std::uint32_t>>& inReach = targets.InReach;
   std::vector<std::uint32_t>& arena = targets.Arena;
   // (Box distances are compared squared: no square root per target.)
   const Box3 box = BoundsOf(piece.Vertices.data(), 3);
-  const double reach = parentUpper - piece.Offset; // (a bound of g on the piece)
+  const double reach = parentUpperOfG; // (g on the piece is at most g on its parent)
   inReach.clear();
   for (std::size_t k = first; k < first + count; ++k)
   {
@@ -226,6 +228,7 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
     vertexMax = std::max(vertexMax, nearest[i]);
   }
   const double upper = std::min(single, vertexMax + CoveringRadius(piece.Vertices)); // (of g)
+  piece.UpperOfG = upper;
   piece.Upper = upper + piece.Offset;
   lower = std::max(lower, vertexMax == HUGE_VAL ? 0.0 : vertexMax + piece.Offset);
   // (Appended after the parent's entries were read: the arena may move.)
@@ -341,7 +344,7 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
   std::priority_queue<Piece> pieces;
   for (std::size_t k = 0; k < sources.size(); ++k)
   {
-    Piece piece{ sources[k], 0, 0, HUGE_VAL, offsets.Sources ? (*offsets.Sources)[k] : 0.0 };
+    Piece piece{ sources[k], 0, 0, HUGE_VAL, HUGE_VAL, offsets.Sources ? (*offsets.Sources)[k] : 0.0 };
     Evaluate(piece, 0, targets.size(), HUGE_VAL, context, estimate.Lower);
     pieces.push(piece);
   }
@@ -363,9 +366,11 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
       { SourceTriangle{ v[0], m01, m20 }, SourceTriangle{ m01, v[1], m12 }, SourceTriangle{ m20, m12, v[2] },
         SourceTriangle{ m01, m12, m20 } })
     {
-      Piece piece{ child, 0, 0, HUGE_VAL, parent.Offset };
-      Evaluate(piece, parent.First, parent.Count, parent.Upper, context, estimate.Lower);
-      piece.Upper = std::min(piece.Upper, parent.Upper); // (the child lies in its parent)
+      Piece piece{ child, 0, 0, HUGE_VAL, HUGE_VAL, parent.Offset };
+      Evaluate(piece, parent.First, parent.Count, parent.UpperOfG, context, estimate.Lower);
+      // (The child lies in its parent.)
+      piece.UpperOfG = std::min(piece.UpperOfG, parent.UpperOfG);
+      piece.Upper = std::min(piece.Upper, parent.Upper);
       pieces.push(piece);
     }
     evaluated += 4;

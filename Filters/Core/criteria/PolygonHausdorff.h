@@ -77,11 +77,11 @@ using SourceTriangle = std::array<Vec3, 3>;
 struct HausdorffEstimate
 {
   double Upper = 0.0; ///< proven: h(sources, targets) <= Upper
-  double Lower = 0.0; ///< attained at a point of the sources
+  double Lower = 0.0; ///< attained at a point of the sources (with offsets: by the offset distance)
 };
 
 /// Offsets added to the distances (header: Offsets): one per source
-/// triangle, one per target; null for zeros.
+/// triangle, one per target, each >= 0; null for zeros.
 struct DistanceOffsets
 {
   const std::vector<double>* Sources = nullptr;

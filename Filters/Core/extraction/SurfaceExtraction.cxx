@@ -181,9 +181,10 @@ std::vector<ConvexPolygon> MeshInCell(const AdaptiveOctree& tree, std::uint32_t 
 /// where the surface is smooth along the loop: kept within the tolerance.
 /// From a mesh edge's point (a crease drawn along x -> x', MeshEdgeFanPoint):
 /// kept only within the apex fan's own bound (the fan the cell was accepted
-/// with, over its own loop) or within MeshEdgeFanKeptWithin of the tolerance -
-/// a corner whose third crease the diagonals would cut by more is kept sharp
-/// by the apex. False when the loop allows no such fan or it is not kept.
+/// with, over its own loop; none where it was accepted on the per-chord
+/// bound) or within MeshEdgeFanKeptWithin of the tolerance - a corner whose
+/// third crease the diagonals would cut by more is kept sharp by the apex.
+/// False when the loop allows no such fan or it is not kept.
 bool MeshCellFromLoopPoint(const AdaptiveOctree& tree, std::uint32_t n, const BoundaryLoopSet& loops,
   const CrossingVertices& vertices, const TriangleMesh& mesh, const std::vector<ConvexPolygon>& surface,
   double slack, double aim, const AdaptiveOctree::MeshCellPrediction& prediction, CellPatches& patches,
@@ -196,9 +197,9 @@ bool MeshCellFromLoopPoint(const AdaptiveOctree& tree, std::uint32_t n, const Bo
     return false;
   }
   const double tolerance = tree.HausdorffTolerance;
-  const double keptWithin = fromMeshEdge
-    ? std::min(std::max(MeshEdgeFanKeptWithin * tolerance, prediction.OwnFanError), tolerance)
-    : tolerance;
+  const double ownFan = prediction.OwnFanError < HUGE_VAL ? prediction.OwnFanError : 0.0;
+  const double keptWithin =
+    fromMeshEdge ? std::min(std::max(MeshEdgeFanKeptWithin * tolerance, ownFan), tolerance) : tolerance;
   const HausdorffEstimate e =
     CertifiedMeshCellError(surface, fan, mesh, slack, std::min(aim, keptWithin), keptWithin, FirstCertificateBudget);
   if (!(e.Upper <= keptWithin))
