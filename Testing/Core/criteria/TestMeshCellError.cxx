@@ -588,7 +588,7 @@ TEST(MeshCellError, CertificatesBoundTheMeasuredDistanceAlongNarrowChamfers)
   b.Finish(b.Mesh(ChamferedBar()));
   // Measured: at 1/64, 48 triangles (8 cells, one corner of the bar each; a
   // chamfer lies within 0.02, 0.37 of the tolerance, of the chords through
-  // its sharper crease); at 1/128, 1 374 (1 680 with cells accepted only on
+  // its sharper crease); at 1/128, 1 378 (1 680 with cells accepted only on
   // E(P) + delta, before the per-chord bound, MeshCellError.h). With those
   // tiles drawn straight: 1 640 and 2 680.
   struct Case
