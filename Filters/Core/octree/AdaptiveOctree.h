@@ -136,8 +136,9 @@ public:
     double Attained = 0.0;
     /// The fan over Loop's certified error alone (Bound without the chords'
     /// deviation): the final patch's where the final loop is Loop itself;
-    /// +inf where the cell was accepted on the per-chord bound, which
-    /// proves no bound of the fan's error alone (MeshCellError.h).
+    /// +inf where the cell was accepted on the per-chord bound (a bound of
+    /// the fan's error too, but far above it: not kept as one,
+    /// MeshCellError.h).
     double OwnFanError = HUGE_VAL;
   };
   std::unordered_map<std::uint32_t, MeshCellPrediction> MeshCellPredictions;

@@ -83,7 +83,8 @@ struct Measured
   std::size_t FromPrediction = 0; ///< of those, certified by the prediction's bound (SameLoop)
   double WorstRatio = 0.0;        ///< largest measured distance / certificate
   /// Predicted cells whose final patch is the apex fan over a loop that
-  /// refines the cell's own, checked against the prediction's Bound too
+  /// refines the cell's own: their certificate is at most the prediction's
+  /// Bound, so the distances checked against it are checked against that
   std::size_t BoundChecked = 0;
   std::size_t PerChordChecked = 0; ///< of those, accepted on the per-chord bound
 };
@@ -175,10 +176,11 @@ Measured CheckEveryMeshCertificate(const tpctest::ContourRun& r, const tpc::Mesh
       prediction != tree.MeshCellPredictions.end() && certificate == prediction->second.OwnFanError ? 1 : 0;
     EXPECT_LE(certificate, r.HausdorffBound * (1 + 1e-12));
     // Where the final patch is the apex fan over a loop refining the cell's
-    // own, the prediction's Bound (E(P) + delta or the per-chord bound)
-    // holds of it too, whatever the final certificate came to.
-    double bound = certificate;
-    if (prediction != tree.MeshCellPredictions.end())
+    // own (and no cell is unresolved), the extraction kept the prediction's
+    // Bound (E(P) + delta or the per-chord bound) as the patch's bound: the
+    // certificate is at most it, and the distances below are checked against
+    // the certificate.
+    if (prediction != tree.MeshCellPredictions.end() && r.Guaranteed)
     {
       std::vector<std::size_t> own;
       bool apexFan = false;
@@ -202,14 +204,14 @@ Measured CheckEveryMeshCertificate(const tpctest::ContourRun& r, const tpc::Mesh
       if (refines)
       {
         EXPECT_LE(prediction->second.Bound, r.Tolerance);
-        bound = std::min(bound, prediction->second.Bound);
+        EXPECT_LE(certificate, prediction->second.Bound) << "cell " << n;
         ++m.BoundChecked;
         m.PerChordChecked += prediction->second.OwnFanError == HUGE_VAL ? 1 : 0;
       }
     }
     ++m.Cells;
     m.OversizedCells += tree.Grid.CellDiagonal(node.Level) > r.Tolerance ? 1 : 0;
-    const double allowance = bound * (1 + 1e-9) + 1e-14;
+    const double allowance = certificate * (1 + 1e-9) + 1e-14;
     Box3 near = cell;
     for (int a = 0; a < 3; ++a)
     {
@@ -234,7 +236,7 @@ Measured CheckEveryMeshCertificate(const tpctest::ContourRun& r, const tpc::Mesh
           const Vec3 x = mesh.Points[tri[0]] * (1 - a - b) + mesh.Points[tri[1]] * a + mesh.Points[tri[2]] * b;
           const double d = std::fabs(input.ApproximateSignedDistance(x, inputNear));
           EXPECT_LE(d, allowance) << "patch point of cell " << n;
-          m.WorstRatio = std::max(m.WorstRatio, d / std::max(bound, 1e-300));
+          m.WorstRatio = std::max(m.WorstRatio, d / std::max(certificate, 1e-300));
         }
       }
     }
@@ -257,7 +259,7 @@ Measured CheckEveryMeshCertificate(const tpctest::ContourRun& r, const tpc::Mesh
         }
         const double d = std::fabs(output.ApproximateSignedDistance(y, outputNear));
         EXPECT_LE(d, allowance) << "surface point of cell " << n;
-        m.WorstRatio = std::max(m.WorstRatio, d / std::max(bound, 1e-300));
+        m.WorstRatio = std::max(m.WorstRatio, d / std::max(certificate, 1e-300));
       }
     }
   }
@@ -407,9 +409,10 @@ TEST(PolygonHausdorff, OffsetsBoundTheSampledOffsetDistance)
   {
     fan.push_back({ corners[k], corners[(k + 1) % 4], apex });
   }
-  std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> offset(0.0, 0.06);
-  constexpr int Steps = 40;
+  // Offsets in [0, 0.06], fixed (distances are up to 0.05).
+  const auto offset = [](std::size_t k) { return 0.03 + 0.03 * std::sin(1.7 * static_cast<double>(k) + 0.4); };
+  // (A power of two: the branch and bound's first vertices are samples.)
+  constexpr int Steps = 64;
   // The sampled offset distance (each target's distance alone, from
   // MeshSolid's closest point), and how far any point of a source is from
   // its nearest sample (the function is 1-Lipschitz on each source: the true
@@ -456,13 +459,13 @@ TEST(PolygonHausdorff, OffsetsBoundTheSampledOffsetDistance)
     const auto& from = reversed ? bumps : fan;
     const auto& to = reversed ? fan : bumps;
     std::vector<double> o(from.size()), p(to.size());
-    for (double& x : o)
+    for (std::size_t k = 0; k < o.size(); ++k)
     {
-      x = offset(rng);
+      o[k] = offset(k);
     }
-    for (double& x : p)
+    for (std::size_t k = 0; k < p.size(); ++k)
     {
-      x = offset(rng);
+      p[k] = offset(k + 1000);
     }
     const tpc::HausdorffEstimate e =
       tpc::OneSidedHausdorff(from, AsPolygons(to), 0.0, HUGE_VAL, 200000, { &o, &p });
@@ -473,15 +476,13 @@ TEST(PolygonHausdorff, OffsetsBoundTheSampledOffsetDistance)
     const tpc::HausdorffEstimate plain = tpc::OneSidedHausdorff(from, AsPolygons(to), 0.0, HUGE_VAL, 200000);
     EXPECT_GT(e.Lower, plain.Upper + 0.02) << reversed; // (offsets up to 0.06, distances up to 0.05)
     // A proof under giveUp, however loose `enough` (the per-chord bound asks
-    // for one under the tolerance).
-    const double giveUp = 1.03 * withOffsets;
+    // for one under the tolerance; the true maximum may lie up to the
+    // spacing above the samples').
+    const double giveUp = 1.03 * (withOffsets + spacing);
     const tpc::HausdorffEstimate proven =
       tpc::OneSidedHausdorff(from, AsPolygons(to), HUGE_VAL, giveUp, 200000, { &o, &p });
     EXPECT_LE(proven.Upper, giveUp) << reversed;
     EXPECT_GE(proven.Upper, withOffsets * (1 - 1e-12)) << reversed;
-    const tpc::HausdorffEstimate refused =
-      tpc::OneSidedHausdorff(from, AsPolygons(to), 0.0, 0.9 * withOffsets, 200000, { &o, &p });
-    EXPECT_GT(refused.Upper, 0.9 * withOffsets) << reversed;
     const std::vector<double> zeroO(from.size(), 0.0), zeroP(to.size(), 0.0);
     const tpc::HausdorffEstimate zero =
       tpc::OneSidedHausdorff(from, AsPolygons(to), 0.0, HUGE_VAL, 200000, { &zeroO, &zeroP });
