@@ -29,21 +29,28 @@ using tpctest::SceneBuilder;
 
 namespace
 {
-/// max over dense samples of `sources` of the distance to the nearest target
-/// (a lower estimate of h; the distance to each target from MeshSolid's own
-/// closest-point routine, independent of PolygonDistance).
-double SampledHausdorff(const std::vector<SourceTriangle>& sources, const std::vector<SourceTriangle>& targets)
+/// The triangles as one MeshSolid (a soup: for its closest-point routine,
+/// independent of PolygonDistance).
+tpc::MeshSolid AsMeshSolid(const std::vector<SourceTriangle>& triangles)
 {
   std::vector<Vec3> points;
   tpctest::Triangles faces;
-  for (const SourceTriangle& t : targets)
+  for (const SourceTriangle& t : triangles)
   {
     const std::uint32_t base = static_cast<std::uint32_t>(points.size());
     points.insert(points.end(), t.begin(), t.end());
     faces.push_back({ base, base + 1, base + 2 });
   }
-  const tpc::MeshSolid target(points, faces);
-  tpc::TriangleList all(faces.size());
+  return tpc::MeshSolid(points, faces);
+}
+
+/// max over dense samples of `sources` of the distance to the nearest target
+/// (a lower estimate of h; the distance to each target from MeshSolid's own
+/// closest-point routine, independent of PolygonDistance).
+double SampledHausdorff(const std::vector<SourceTriangle>& sources, const std::vector<SourceTriangle>& targets)
+{
+  const tpc::MeshSolid target = AsMeshSolid(targets);
+  tpc::TriangleList all(targets.size());
   for (std::uint32_t k = 0; k < all.size(); ++k)
   {
     all[k] = k;
@@ -63,6 +70,32 @@ double SampledHausdorff(const std::vector<SourceTriangle>& sources, const std::v
     }
   }
   return worst;
+}
+
+/// A bumpy height field over the unit square, n x n squares of two
+/// triangles each, and a fan of four triangles over the square's sides from
+/// an apex just above its middle: large sources over a fine, non-convex
+/// target (the distance is not at a source vertex), or the other way.
+void BumpsUnderAFan(int n, std::vector<SourceTriangle>& bumps, std::vector<SourceTriangle>& fan)
+{
+  const auto height = [](double x, double y) { return 0.05 * std::sin(7 * x) * std::cos(5 * y); };
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      const double x0 = double(i) / n, x1 = double(i + 1) / n, y0 = double(j) / n, y1 = double(j + 1) / n;
+      const Vec3 a(x0, y0, height(x0, y0)), b(x1, y0, height(x1, y0)), c(x1, y1, height(x1, y1)),
+        d(x0, y1, height(x0, y1));
+      bumps.push_back({ a, b, c });
+      bumps.push_back({ a, c, d });
+    }
+  }
+  const Vec3 apex(0.5, 0.5, 0.01);
+  const Vec3 corners[4] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 } };
+  for (int k = 0; k < 4; ++k)
+  {
+    fan.push_back({ corners[k], corners[(k + 1) % 4], apex });
+  }
 }
 
 std::vector<ConvexPolygon> AsPolygons(const std::vector<SourceTriangle>& triangles)
@@ -335,25 +368,7 @@ TEST(PolygonHausdorff, BoundsTheSampledDistanceAndStaysCloseToIt)
   // A fan of large triangles over a fine bumpy target (a height field): the
   // distance is not at a source vertex, and the target is not convex.
   std::vector<SourceTriangle> target, sources;
-  const auto height = [](double x, double y) { return 0.05 * std::sin(7 * x) * std::cos(5 * y); };
-  constexpr int N = 24;
-  for (int i = 0; i < N; ++i)
-  {
-    for (int j = 0; j < N; ++j)
-    {
-      const double x0 = double(i) / N, x1 = double(i + 1) / N, y0 = double(j) / N, y1 = double(j + 1) / N;
-      const Vec3 a(x0, y0, height(x0, y0)), b(x1, y0, height(x1, y0)), c(x1, y1, height(x1, y1)),
-        d(x0, y1, height(x0, y1));
-      target.push_back({ a, b, c });
-      target.push_back({ a, c, d });
-    }
-  }
-  const Vec3 apex(0.5, 0.5, 0.01);
-  const Vec3 corners[4] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 } };
-  for (int k = 0; k < 4; ++k)
-  {
-    sources.push_back({ corners[k], corners[(k + 1) % 4], apex });
-  }
+  BumpsUnderAFan(24, target, sources);
   for (const bool reversed : { false, true })
   {
     const auto& from = reversed ? target : sources;
@@ -390,25 +405,7 @@ TEST(PolygonHausdorff, OffsetsBoundTheSampledOffsetDistance)
   // a caller's giveUp above the value gets a proof under it; zero offsets
   // give the bounds without them, bit for bit.
   std::vector<SourceTriangle> bumps, fan;
-  const auto height = [](double x, double y) { return 0.05 * std::sin(7 * x) * std::cos(5 * y); };
-  constexpr int N = 12;
-  for (int i = 0; i < N; ++i)
-  {
-    for (int j = 0; j < N; ++j)
-    {
-      const double x0 = double(i) / N, x1 = double(i + 1) / N, y0 = double(j) / N, y1 = double(j + 1) / N;
-      const Vec3 a(x0, y0, height(x0, y0)), b(x1, y0, height(x1, y0)), c(x1, y1, height(x1, y1)),
-        d(x0, y1, height(x0, y1));
-      bumps.push_back({ a, b, c });
-      bumps.push_back({ a, c, d });
-    }
-  }
-  const Vec3 apex(0.5, 0.5, 0.01);
-  const Vec3 corners[4] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 } };
-  for (int k = 0; k < 4; ++k)
-  {
-    fan.push_back({ corners[k], corners[(k + 1) % 4], apex });
-  }
+  BumpsUnderAFan(12, bumps, fan);
   // Offsets in [0, 0.06], fixed (distances are up to 0.05).
   const auto offset = [](std::size_t k) { return 0.03 + 0.03 * std::sin(1.7 * static_cast<double>(k) + 0.4); };
   // (A power of two: the branch and bound's first vertices are samples.)
@@ -420,15 +417,7 @@ TEST(PolygonHausdorff, OffsetsBoundTheSampledOffsetDistance)
   double spacing = 0.0;
   const auto sampled = [&](const std::vector<SourceTriangle>& sources, const std::vector<double>& o,
                          const std::vector<SourceTriangle>& targets, const std::vector<double>& p) {
-    std::vector<Vec3> points;
-    tpctest::Triangles faces;
-    for (const SourceTriangle& t : targets)
-    {
-      const std::uint32_t base = static_cast<std::uint32_t>(points.size());
-      points.insert(points.end(), t.begin(), t.end());
-      faces.push_back({ base, base + 1, base + 2 });
-    }
-    const tpc::MeshSolid target(points, faces);
+    const tpc::MeshSolid target = AsMeshSolid(targets);
     double worst = 0.0;
     spacing = 0.0;
     for (std::size_t s = 0; s < sources.size(); ++s)
