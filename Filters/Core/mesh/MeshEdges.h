@@ -46,8 +46,8 @@ struct EdgeUse
 
 /// Every edge use of the `count` triangles at `triangles`, sorted by edge,
 /// then triangle and corner (a total order: the same table for any number of
-/// threads). The sort runs in parallel reporting `progress`; false when it
-/// asked to stop (the table is then not sorted).
+/// threads): counted by smaller vertex, each vertex's uses sorted in
+/// parallel; `progress` is asked once at the end, false when it asked to stop.
 bool BuildEdgeTable(const Triangle* triangles, std::size_t count, std::vector<EdgeUse>& uses,
   const ParallelFor& parallelFor = SequentialFor, const ProgressCallback& progress = nullptr);
 

@@ -1,7 +1,5 @@
 #include "VertexLinks.h"
 
-#include "UnionFind.h"
-
 #include <algorithm>
 #include <atomic>
 #include <numeric>
@@ -13,10 +11,12 @@ namespace
 {
 /// Whether the triangles around vertex `v` (listed in `fan`) form one closed
 /// cycle: their link edges (the opposite vertex pairs) join m distinct link
-/// vertices into one cycle for a fan of m triangles.
+/// vertices into one cycle for a fan of m triangles. (Scratch kept per
+/// thread: three allocations per vertex were most of the test.)
 bool HasOneCycleLink(const Triangle* triangles, std::uint32_t v, const std::uint32_t* fan, std::size_t m)
 {
-  std::vector<std::uint32_t> link; // pairs of opposite vertices
+  thread_local std::vector<std::uint32_t> link, distinct, parent;
+  link.clear(); // pairs of opposite vertices
   for (std::size_t k = 0; k < m; ++k)
   {
     const Triangle& t = triangles[fan[k]];
@@ -34,17 +34,29 @@ bool HasOneCycleLink(const Triangle* triangles, std::uint32_t v, const std::uint
       link.push_back(o[1]);
     }
   }
-  std::vector<std::uint32_t> distinct(link);
+  distinct.assign(link.begin(), link.end());
   std::sort(distinct.begin(), distinct.end());
   distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
   auto index = [&](std::uint32_t x) {
     return static_cast<std::uint32_t>(std::lower_bound(distinct.begin(), distinct.end(), x) - distinct.begin());
   };
-  UnionFind joined(distinct.size());
+  // Union-find over the link vertices (path halving, as UnionFind.h).
+  parent.resize(distinct.size());
+  std::iota(parent.begin(), parent.end(), 0u);
+  auto find = [&](std::uint32_t x) {
+    while (parent[x] != x)
+    {
+      parent[x] = parent[parent[x]];
+      x = parent[x];
+    }
+    return x;
+  };
   std::size_t groups = distinct.size();
   for (std::size_t k = 0; k + 1 < link.size(); k += 2)
   {
-    groups -= joined.Join(index(link[k]), index(link[k + 1])) ? 1 : 0;
+    const std::uint32_t a = find(index(link[k])), b = find(index(link[k + 1]));
+    parent[a] = b;
+    groups -= a != b ? 1 : 0;
   }
   return groups == 1 && distinct.size() == m;
 }

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace tpc
 {
@@ -377,60 +378,100 @@ struct BinGrid
   {
     return (static_cast<std::uint64_t>(x) * this->Dims[1] + y) * this->Dims[2] + z;
   }
-  /// The bin of the lower corner of two overlapping boxes' intersection.
-  std::uint64_t FirstCommonBin(const Box3& a, const Box3& b) const
+  /// The bins triangle box `b` meets, as index ranges per axis.
+  void BinRange(const Box3& b, int lo[3], int hi[3]) const
   {
-    int lo[3];
-    for (int k = 0; k < 3; ++k)
+    for (int a = 0; a < 3; ++a)
     {
-      lo[k] = this->Index(k, std::max(a.lo[k], b.lo[k]));
+      lo[a] = this->Index(a, b.lo[a]);
+      hi[a] = this->Index(a, b.hi[a]);
     }
-    return this->Key(lo[0], lo[1], lo[2]);
   }
-  /// (bin, triangle) for every bin each triangle's box meets.
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> Entries(const std::vector<Box3>& boxes) const
+  /// Number of bins.
+  std::size_t Bins() const
   {
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> entries;
-    for (std::size_t t = 0; t < boxes.size(); ++t)
-    {
-      int lo[3], hi[3];
-      for (int a = 0; a < 3; ++a)
+    return static_cast<std::size_t>(this->Dims[0]) * static_cast<std::size_t>(this->Dims[1]) *
+      static_cast<std::size_t>(this->Dims[2]);
+  }
+};
+
+/// The triangles of each bin of a BinGrid, every bin each triangle's box
+/// meets: the triangles of bin k are Triangles[Start[k]] to
+/// Triangles[Start[k + 1] - 1], in increasing order (a counting sort by bin:
+/// linear, where sorting (bin, triangle) pairs was a tenth of the check).
+/// Lower[t]: the bin indices of triangle t's box's lower corner.
+struct BinnedTriangles
+{
+  std::vector<std::size_t> Start;
+  std::vector<std::uint32_t> Triangles;
+  std::vector<std::array<int, 3>> Lower;
+
+  BinnedTriangles(const BinGrid& grid, const std::vector<Box3>& boxes, const ParallelFor& parallelFor)
+    : Start(grid.Bins() + 1, 0)
+    , Lower(boxes.size())
+  {
+    std::vector<std::array<int, 3>> upper(boxes.size());
+    parallelFor(boxes.size(), [&](std::size_t begin, std::size_t end) {
+      for (std::size_t t = begin; t < end; ++t)
       {
-        lo[a] = this->Index(a, boxes[t].lo[a]);
-        hi[a] = this->Index(a, boxes[t].hi[a]);
+        grid.BinRange(boxes[t], this->Lower[t].data(), upper[t].data());
       }
+    });
+    const auto forEachBin = [&](std::size_t t, const auto& visit) {
+      const std::array<int, 3>&lo = this->Lower[t], &hi = upper[t];
       for (int x = lo[0]; x <= hi[0]; ++x)
       {
         for (int y = lo[1]; y <= hi[1]; ++y)
         {
           for (int z = lo[2]; z <= hi[2]; ++z)
           {
-            entries.emplace_back(this->Key(x, y, z), static_cast<std::uint32_t>(t));
+            visit(grid.Key(x, y, z));
           }
         }
       }
+    };
+    for (std::size_t t = 0; t < boxes.size(); ++t)
+    {
+      forEachBin(t, [&](std::uint64_t k) { ++this->Start[k + 1]; });
     }
-    return entries;
+    std::partial_sum(this->Start.begin(), this->Start.end(), this->Start.begin());
+    this->Triangles.resize(this->Start.back());
+    std::vector<std::size_t> fill(this->Start.begin(), this->Start.end() - 1);
+    for (std::size_t t = 0; t < boxes.size(); ++t)
+    {
+      forEachBin(t, [&](std::uint64_t k) { this->Triangles[fill[k]++] = static_cast<std::uint32_t>(t); });
+    }
+  }
+  /// The bin of the lower corner of two overlapping boxes' intersection: on
+  /// each axis the larger of their lower indices (Index is monotone).
+  std::uint64_t FirstCommonBin(const BinGrid& grid, std::uint32_t a, std::uint32_t b) const
+  {
+    const std::array<int, 3>&p = this->Lower[a], &q = this->Lower[b];
+    return grid.Key(std::max(p[0], q[0]), std::max(p[1], q[1]), std::max(p[2], q[2]));
   }
 };
 
-/// Pairs of triangles whose bounding boxes overlap (each pair once, smaller
-/// index first): binned by a uniform grid, sorted by bin, pairs within each
-/// bin. A pair shares every bin its boxes' intersection meets, and is kept in
-/// the first of them only - the bin of the intersection's lower corner, whose
-/// index on each axis is the larger of the two boxes' lower indices (Index is
-/// monotone) - so no pair is found twice and no sort of the pairs is needed.
-/// The bins are cut into blocks searched in parallel; the pairs come in bin
-/// order whatever the threads. (Progress between the passes; an abort
-/// returns no pairs.)
-std::vector<std::pair<std::uint32_t, std::uint32_t>> CandidatePairs(const std::vector<Vec3>& points,
-  const std::vector<std::array<std::uint32_t, 3>>& triangles, const ParallelFor& parallelFor,
-  const ProgressCallback& progress)
+/// How many pairs of triangles `accept` takes, counting at most `limit`,
+/// among the candidate pairs - those whose bounding boxes overlap. The boxes
+/// are binned by a uniform grid (BinnedTriangles); a pair shares every bin
+/// its boxes' intersection meets, and is tried in the first of them only -
+/// the bin of the intersection's lower corner, whose index on each axis is
+/// the larger of the two boxes' lower indices (Index is monotone) - so no
+/// pair is tried twice. The pairs are tried where they are found, bin by bin
+/// (a list of them all would be written and read once, and merged on one
+/// thread: a quarter of the check on armadillo). Blocks of whole bins, of
+/// about as many entries each, are searched in parallel, each counting up to the limit, so the capped sum is
+/// min(total, limit) whatever the thread count; blocks run in chunks that
+/// report progress, and counting stops once the limit is reached (or on an
+/// abort: the count is then partial, and the caller that asked discards it).
+template <typename Accept>
+std::size_t CountAcceptedPairs(const std::vector<Vec3>& points,
+  const std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t limit, const ParallelFor& parallelFor,
+  const ProgressCallback& progress, const Accept& accept)
 {
-  auto stop = [&progress](double f) { return progress && progress(f); };
-  if (triangles.size() < 2)
+  if (triangles.size() < 2 || limit == 0)
   {
-    return {};
+    return 0;
   }
   std::vector<Box3> boxes(triangles.size());
   parallelFor(triangles.size(), [&](std::size_t begin, std::size_t end) {
@@ -440,79 +481,43 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> CandidatePairs(const std::v
     }
   });
   const BinGrid grid(boxes);
-  std::vector<std::pair<std::uint64_t, std::uint32_t>> entries = grid.Entries(boxes);
-  if (stop(0.1) || !ParallelSort(entries, std::less<>(), parallelFor, ProgressRange(progress, 0.1, 0.5)))
+  const BinnedTriangles bins(grid, boxes, parallelFor);
+  if (progress && progress(0.2))
   {
-    return {};
+    return 0;
   }
-  // Blocks of whole bins, each starting at a bin's first entry.
-  constexpr std::size_t Blocks = 64;
-  std::vector<std::size_t> blockStart(Blocks + 1, entries.size());
+  // Blocks of whole bins: many more than threads, since the pairs per bin
+  // vary widely (dense regions).
+  constexpr std::size_t Blocks = 512, BlocksPerChunk = 64;
+  const std::size_t binCount = grid.Bins();
+  std::vector<std::size_t> blockBin(Blocks + 1, binCount); // (block b: bins blockBin[b] .. blockBin[b + 1] - 1)
   for (std::size_t b = 0; b < Blocks; ++b)
   {
-    std::size_t i = entries.size() * b / Blocks;
-    while (i > 0 && i < entries.size() && entries[i - 1].first == entries[i].first)
-    {
-      ++i;
-    }
-    blockStart[b] = b > 0 ? std::max(i, blockStart[b - 1]) : 0;
+    // The first bin starting at or after the block's share of the entries.
+    const std::size_t share = bins.Triangles.size() * b / Blocks;
+    blockBin[b] = std::min<std::size_t>(binCount,
+      static_cast<std::size_t>(std::lower_bound(bins.Start.begin(), bins.Start.end(), share) - bins.Start.begin()));
   }
-  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> found(Blocks);
-  if (!ChunkedFor(Blocks, 8, parallelFor, [&](std::size_t begin, std::size_t end) {
-        for (std::size_t b = begin; b < end; ++b)
-        {
-          for (std::size_t i = blockStart[b]; i < blockStart[b + 1];)
-          {
-            std::size_t j = i;
-            while (j < blockStart[b + 1] && entries[j].first == entries[i].first)
-            {
-              ++j;
-            }
-            for (std::size_t p = i; p < j; ++p)
-            {
-              for (std::size_t q = p + 1; q < j; ++q)
-              {
-                const std::uint32_t t1 = entries[p].second, t2 = entries[q].second;
-                if (boxes[t1].Overlaps(boxes[t2]) && grid.FirstCommonBin(boxes[t1], boxes[t2]) == entries[i].first)
-                {
-                  found[b].emplace_back(std::min(t1, t2), std::max(t1, t2));
-                }
-              }
-            }
-            i = j;
-          }
-        }
-      }, ProgressRange(progress, 0.5, 0.9)))
-  {
-    return {};
-  }
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-  for (const auto& block : found)
-  {
-    pairs.insert(pairs.end(), block.begin(), block.end());
-  }
-  return pairs;
-}
-
-/// How many candidate pairs `accept` takes, counting at most `limit`: fixed
-/// blocks of pairs, each counting up to the limit, so the capped sum is
-/// min(total, limit) whatever the thread count. Blocks run in chunks that
-/// report progress; counting stops once the limit is reached.
-template <typename Accept>
-std::size_t CountAccepted(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs,
-  std::size_t limit, const ParallelFor& parallelFor, const ProgressCallback& progress, const Accept& accept)
-{
-  constexpr std::size_t BlockSize = 4096, BlocksPerChunk = 8;
-  const std::size_t blocks = (pairs.size() + BlockSize - 1) / BlockSize;
-  std::vector<std::size_t> found(blocks, 0);
+  blockBin[0] = 0;
+  std::vector<std::size_t> found(Blocks, 0);
   std::size_t total = 0;
-  ForEachChunk(blocks, BlocksPerChunk, parallelFor, [&](std::size_t begin, std::size_t end) {
+  ForEachChunk(Blocks, BlocksPerChunk, parallelFor, [&](std::size_t begin, std::size_t end) {
     for (std::size_t b = begin; b < end; ++b)
     {
-      const std::size_t last = std::min(pairs.size(), (b + 1) * BlockSize);
-      for (std::size_t i = b * BlockSize; i < last && found[b] < limit; ++i)
+      for (std::size_t k = blockBin[b]; k < blockBin[b + 1] && found[b] < limit; ++k)
       {
-        found[b] += accept(pairs[i].first, pairs[i].second) ? 1 : 0;
+        const std::size_t i = bins.Start[k], j = bins.Start[k + 1];
+        for (std::size_t p = i; p < j && found[b] < limit; ++p)
+        {
+          for (std::size_t q = p + 1; q < j && found[b] < limit; ++q)
+          {
+            const std::uint32_t t1 = bins.Triangles[p], t2 = bins.Triangles[q]; // (t1 < t2)
+            if (boxes[t1].Overlaps(boxes[t2]) && bins.FirstCommonBin(grid, t1, t2) == k && accept(t1, t2))
+            {
+              ++found[b];
+            }
+          }
+        }
       }
     }
   }, [&](std::size_t first, std::size_t last) {
@@ -520,7 +525,8 @@ std::size_t CountAccepted(const std::vector<std::pair<std::uint32_t, std::uint32
     {
       total += found[b];
     }
-    return total >= limit || (progress && progress(static_cast<double>(last) / static_cast<double>(blocks)));
+    return total >= limit ||
+      (progress && progress(0.2 + 0.8 * static_cast<double>(last) / static_cast<double>(Blocks)));
   });
   return std::min(total, limit);
 }
@@ -530,8 +536,7 @@ std::size_t CountSelfIntersections(const std::vector<Vec3>& points,
   const std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t limit,
   const ParallelFor& parallelFor, const ProgressCallback& progress)
 {
-  return CountAccepted(CandidatePairs(points, triangles, parallelFor, ProgressRange(progress, 0.0, 0.2)), limit, parallelFor,
-    ProgressRange(progress, 0.2, 1.0),
+  return CountAcceptedPairs(points, triangles, limit, parallelFor, progress,
     [&](std::uint32_t t1, std::uint32_t t2) { return TrianglesMeetImproperly(points.data(), triangles[t1], triangles[t2]); });
 }
 
@@ -550,8 +555,7 @@ std::size_t CountCoincidentFaces(const std::vector<Vec3>& pointsA,
     triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
   }
   const auto fromA = static_cast<std::uint32_t>(trianglesA.size());
-  return CountAccepted(CandidatePairs(points, triangles, parallelFor, ProgressRange(progress, 0.0, 0.2)), limit, parallelFor,
-    ProgressRange(progress, 0.2, 1.0), [&](std::uint32_t t1, std::uint32_t t2) {
+  return CountAcceptedPairs(points, triangles, limit, parallelFor, progress, [&](std::uint32_t t1, std::uint32_t t2) {
       if ((t1 < fromA) == (t2 < fromA))
       {
         return false; // both from one mesh
