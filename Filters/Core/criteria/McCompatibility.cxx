@@ -108,7 +108,7 @@ bool CreaseFanWithinTolerance(const QuadricCellError& bound, const Vec3& apex, c
 } // namespace
 
 McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& prims,
-  double tolerance, int faceRefinementLevels)
+  double tolerance, int faceRefinementLevels, bool spokesFirst)
 {
   McCompatibility v;
   v.Kind = McVerdict::Split;
@@ -161,6 +161,17 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     v.Reason = uniform ? SplitReason::ComplexVoxel : SplitReason::HausdorffSize;
     return v;
   }
+  // S_C, for the prediction; a spoke of every fan it could be made with that
+  // strays beyond the tolerance fails it before the costlier tests
+  // (MeshCellError.h: Spokes).
+  const std::vector<ConvexPolygon> meshSurface =
+    meshBounded ? SurfaceInCell(*LoneMeshLeaf(*expression), prims, box) : std::vector<ConvexPolygon>();
+  if (meshBounded && spokesFirst && SpokeStrays(*LoneMeshLeaf(*expression), prims, box, mask, meshSurface, tolerance))
+  {
+    v.Reason = SplitReason::HausdorffSize;
+    v.SplitBySpoke = true;
+    return v;
+  }
   CellSignCache signs(tree.Signs, grid, *expression, prims);
   CellBoundary boundary;
   if (!TileFaces(tree, n, prims, faceRefinementLevels, signs, boundary, v))
@@ -201,7 +212,7 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     const bool creases = IsOneMesh(*tree.SceneExpression) &&
       MarkCreaseTiles(boundary, *LoneMeshLeaf(*expression), prims, grid, [](int, std::size_t) { return true; });
     v.PredictedError = PredictedMeshCellError(*expression, prims, grid, box, boundary,
-      creases ? TraceBoundaryLoops(boundary) : loops, tolerance, v.MeshPrediction);
+      creases ? TraceBoundaryLoops(boundary) : loops, tolerance, v.MeshPrediction, &meshSurface);
     v.ErrorBounded = v.MeshSurface = v.PredictedError <= tolerance;
     if (!v.ErrorBounded)
     {

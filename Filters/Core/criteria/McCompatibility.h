@@ -51,6 +51,10 @@ struct McCompatibility
   bool CreaseFan = false;
   /// Larger than the tolerance (the Hausdorff size test's own comparison).
   bool Oversized = false;
+  /// Split for its size before the other tests: a spoke of every fan its
+  /// prediction could be made with strays beyond the tolerance
+  /// (MeshCellError.h: Spokes).
+  bool SplitBySpoke = false;
   /// Faces this cell refined (only kept if it passes).
   std::vector<std::pair<FaceKey, std::vector<FaceTile>>> Refinements;
   /// Signs evaluated during the tests, for the global table.
@@ -80,6 +84,7 @@ constexpr int FaceRefinementLevels = 10;
 /// `faceRefinementLevels` below the cell at most (FaceRefinementLevels; fewer
 /// where a failing cell keeps its mesh anyway, ExactCell.h).
 McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
-  const PrimitiveSet& primitives, double tolerance, int faceRefinementLevels = FaceRefinementLevels);
+  const PrimitiveSet& primitives, double tolerance, int faceRefinementLevels = FaceRefinementLevels,
+  bool spokesFirst = true);
 
 } // namespace tpc

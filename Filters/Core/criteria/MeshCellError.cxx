@@ -271,7 +271,7 @@ HausdorffEstimate CertifiedMeshPatchError(const std::vector<ConvexPolygon>& surf
 
 double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSet& primitives,
   const RootGrid& grid, const Box3& cell, const CellBoundary& boundary, const BoundaryLoopSet& loops,
-  double tolerance, AdaptiveOctree::MeshCellPrediction& prediction)
+  double tolerance, AdaptiveOctree::MeshCellPrediction& prediction, const std::vector<ConvexPolygon>* given)
 {
   prediction = AdaptiveOctree::MeshCellPrediction();
   const CsgLeaf* leaf = LoneMeshLeaf(expression);
@@ -279,7 +279,8 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
   {
     return HUGE_VAL;
   }
-  const std::vector<ConvexPolygon> surface = SurfaceInCell(*leaf, primitives, cell);
+  const std::vector<ConvexPolygon> computed = given ? std::vector<ConvexPolygon>() : SurfaceInCell(*leaf, primitives, cell);
+  const std::vector<ConvexPolygon>& surface = given ? *given : computed;
   const std::vector<Crossing>& loop = loops.Crossings;
   const std::size_t m = loop.size();
   std::vector<Vec3> points(m);
@@ -383,6 +384,68 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
       CertifiedMeshPatchError(surface, fan, slack, tolerance, tolerance, PredictionBudget, &chordDelta).Upper;
   }
   return prediction.Bound;
+}
+
+namespace
+{
+/// Whether some polygon of `surface` is within `reach` of `p` (its box
+/// first: a lower bound of the distance).
+bool WithinReach(const std::vector<ConvexPolygon>& surface, const Vec3& p, double reach)
+{
+  for (const ConvexPolygon& q : surface)
+  {
+    if (q.Bounds.Distance2(p) <= reach * reach && PolygonDistance(p, q) <= reach)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+} // namespace
+
+bool SpokeStrays(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell, unsigned insideCorners,
+  const std::vector<ConvexPolygon>& surface, double tolerance)
+{
+  if (surface.empty() || !leaf.Triangles)
+  {
+    return false;
+  }
+  // (The slack covers the rounding of the crossings, the apex and the
+  // distances here and in the prediction, as there: header, Rounding. A
+  // crossing of a triangle nearly along the edge may be placed farther
+  // apart here and in the loop; that can only split a cell the tests would
+  // have accepted - a cell more, never a fan the guarantee does not cover.)
+  const double reach = tolerance + RoundingSlack(leaf, primitives, cell);
+  const Vec3 apex = MeshCellApex(surface, cell);
+  if (!WithinReach(surface, apex, reach))
+  {
+    return true;
+  }
+  const MeshSolid& mesh = primitives.Meshes[leaf.Primitive];
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (int c = 0; c < 8; ++c)
+    {
+      const int d = c | (1 << axis);
+      if (c == d || ((insideCorners >> c) & 1u) == ((insideCorners >> d) & 1u))
+      {
+        continue; // (each edge once, from its lower corner; only edges with a sign change)
+      }
+      Vec3 x;
+      if (!mesh.CrossingPoint(cell.Corner(c), cell.Corner(d), axis, *leaf.Triangles, x))
+      {
+        continue; // (crossed more than once, or in a triangle's plane: which loop point is on it is not known here)
+      }
+      for (const double s : { 0.25, 0.5, 0.75 })
+      {
+        if (!WithinReach(surface, apex + (x - apex) * s, reach))
+        {
+          return true;
+        }
+      }
+    }
+  }
+  return false;
 }
 
 bool FinalLoopRefines(const std::vector<Vec3>& own, const std::vector<Vec3>& final, const Box3& cell)

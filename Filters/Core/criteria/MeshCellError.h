@@ -80,6 +80,27 @@
 // triangle, and the bound of E(P) the prediction proved is P's certificate
 // (kept as it is where it is within what the first certificates aim at).
 //
+// Spokes: a necessary condition, checked before the topology tests (whose
+// face refinement is most of the time spent on large cells that then fail
+// the prediction: on armadillo at 1/64, the cells of levels 1-3 took 40 % of
+// the tests). Let e be an edge of C whose corners have different signs and
+// that S crosses exactly once, at x_e. Every tiling of C's faces cuts e into
+// sub-edges of which exactly one has ends of different signs - the one
+// holding x_e - so every loop the tests can trace holds its crossing, which
+// PlaceSubEdgeCrossing puts at x_e (the same triangle's plane on the same
+// line; up to rounding, and the clamp of an ulp into the sub-edge). The fan P
+// over that loop has the spoke [c, x_e] as an edge of two of its triangles,
+// with c = MeshCellApex(S_C, C), which depends on C and S_C only. So
+//   E(P) >= h(P, S_C) >= max over z in [c, x_e] of d(z, S_C),
+// and the per-chord bound too (it is at least h(T_ab, S_C) for the T_ab
+// holding the spoke, its offsets being >= 0); so does the apex c alone, a
+// vertex of every fan triangle. Where a point of a spoke (c itself, and
+// three points between c and each x_e) is farther than the tolerance plus
+// the rounding slack from S_C, no loop the tests could trace gives a fan
+// within the tolerance: the cell splits for its size at once (SpokeStrays).
+// This only moves the decision earlier: a cell it splits would have failed
+// its prediction (or an earlier test) after the tests.
+//
 // Cells no larger than the tolerance keep their usual patch
 // (LoopTriangulation.h), bounded by their diagonal; E of that patch is
 // computed too, and the smaller of the two reported, so that HausdorffBound
@@ -148,9 +169,20 @@ double RoundingSlack(const CsgLeaf& leaf, const PrimitiveSet& primitives, const 
 /// alone as OwnFanError (the final patch's error where the final loop is the
 /// cell's own, SameLoop; +inf where the cell passed on the per-chord bound,
 /// E(P) + delta having failed before E(P) was proven).
+/// `surface`: S_C when the caller has it (SurfaceInCell with `cell`), else
+/// null.
 double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSet& primitives,
   const RootGrid& grid, const Box3& cell, const CellBoundary& boundary, const BoundaryLoopSet& loops,
-  double tolerance, AdaptiveOctree::MeshCellPrediction& prediction);
+  double tolerance, AdaptiveOctree::MeshCellPrediction& prediction,
+  const std::vector<ConvexPolygon>* surface = nullptr);
+
+/// Whether a spoke of the fan over every loop the tests could trace in
+/// `cell` strays farther than `tolerance` from S_C `surface` (header:
+/// Spokes), so that the cell's prediction fails whatever they trace. Corner
+/// c of the cell (bit a of c: the upper end along axis a) is inside the
+/// solid when bit c of `insideCorners` is set (the exact signs).
+bool SpokeStrays(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell, unsigned insideCorners,
+  const std::vector<ConvexPolygon>& surface, double tolerance);
 
 /// Whether the final loop `final` holds every point of the cell's own loop
 /// `own` in the same cyclic order (up to rounding): then each chord ab of

@@ -51,18 +51,6 @@ struct Piece
   bool operator<(const Piece& o) const { return this->Upper < o.Upper; }
 };
 
-/// Squared distance from a point to a box (0 inside).
-double PointBoxDistance2(const Vec3& p, const Box3& b)
-{
-  double sum = 0.0;
-  for (int k = 0; k < 3; ++k)
-  {
-    const double gap = std::max({ 0.0, b.lo[k] - p[k], p[k] - b.hi[k] });
-    sum += gap * gap;
-  }
-  return sum;
-}
-
 } // namespace
 
 double CoveringRadius(const SourceTriangle& t)
@@ -181,7 +169,7 @@ void Evaluate(
     double farthestBox2 = 0.0;
     for (int i = 0; i < 3; ++i)
     {
-      boxDistance2Of[i] = PointBoxDistance2(piece.Vertices[i], target.Bounds);
+      boxDistance2Of[i] = target.Bounds.Distance2(piece.Vertices[i]);
       farthestBox2 = std::max(farthestBox2, boxDistance2Of[i]);
     }
     bool improvesSingle = CloserThan(farthestBox2, offset, single);

@@ -127,6 +127,17 @@ struct Box3
     return { std::clamp(p[0], lo[0], hi[0]), std::clamp(p[1], lo[1], hi[1]),
       std::clamp(p[2], lo[2], hi[2]) };
   }
+  /// The squared distance from `p` to the box (0 inside).
+  double Distance2(const Vec3& p) const
+  {
+    double sum = 0.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      const double gap = std::max({ 0.0, lo[a] - p[a], p[a] - hi[a] });
+      sum += gap * gap;
+    }
+    return sum;
+  }
   /// Corner `c` (bit a of c chooses hi on axis a).
   Vec3 Corner(int c) const
   {

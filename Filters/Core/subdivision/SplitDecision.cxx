@@ -27,7 +27,7 @@ CellTests TestCell(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveS
   const int levels =
     std::max(0, std::min(FaceRefinementLevels, SampleDepth(tree.Grid, parameters.MaximumDepth) - limits.Level));
   tests.Verdict = TestMcCompatibility(tree, n, primitives, parameters.HausdorffTolerance,
-    keepsOnFailure ? std::min(levels, ExactCellFaceRefinementLevels) : levels);
+    keepsOnFailure ? std::min(levels, ExactCellFaceRefinementLevels) : levels, parameters.SpokesFirst);
   if (limits.ToleranceSize && tests.Verdict.Kind == McVerdict::Split)
   {
     tests.Facing = HasFacingSurfaces(expression, primitives, tree.Grid.CellBox(limits.Level, tree.Nodes[n].Ijk),
@@ -106,6 +106,7 @@ bool DecideCell(AdaptiveOctree& tree, std::uint32_t n, const CellTests& tests, c
   node.State = CellState::Refined;
   node.Reason = v.Reason;
   result.SplitsByReason[static_cast<int>(v.Reason)] += mine;
+  result.SpokeSplitCells += v.SplitBySpoke ? mine : 0;
   return true;
 }
 

@@ -44,6 +44,10 @@ struct SubdivisionParameters
   /// (ExactCell.h) instead of refining. For scenes of one closed mesh that
   /// meets the paper's assumptions (remeshing).
   bool ExactCells = false;
+  /// Oversized cells of one mesh whose fans would stray beyond the
+  /// tolerance split before their tests (MeshCellError.h: Spokes). Off only
+  /// to check that this changes no cell's fate.
+  bool SpokesFirst = true;
   /// A piece of a split run (ForestPartition.h): the role of each tree of
   /// the root grid; skipped trees stay empty roots. Empty: every tree.
   std::vector<TreeRole> TreeRoles;
@@ -74,6 +78,8 @@ struct SubdivisionResult
   /// than the tolerance.
   std::size_t ErrorBoundedCells = 0;
   std::size_t OversizedErrorBoundedCells = 0;
+  /// Cells split for their size before their tests (SpokesFirst).
+  std::size_t SpokeSplitCells = 0;
   /// The proven two-sided Hausdorff bound between the exact surface and the
   /// extracted one over the leaves other than error-bounded cells (those are
   /// certified on their patches: ExtractionResult::CertifiedBound): the

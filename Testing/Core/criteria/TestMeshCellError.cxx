@@ -609,6 +609,60 @@ TEST(MeshCellError, CertificatesBoundTheMeasuredDistanceAlongNarrowChamfers)
   }
 }
 
+TEST(MeshCellError, SpokesSplitOnlyCellsThePredictionWouldSplit)
+{
+  // Cells of one mesh larger than the tolerance where a spoke of every fan
+  // the prediction could be made with strays beyond the tolerance split
+  // before their tests (MeshCellError.h: Spokes). That only moves the
+  // decision earlier: with the check off, every cell meets the same fate and
+  // the surface is the same, point for point. (A check stricter than the
+  // prediction - half the tolerance for the spokes' reach - splits cells the
+  // tests accept, and the surfaces differ.)
+  struct Case
+  {
+    const char* Name;
+    tpc::MeshSolid Mesh;
+    double Tolerance; ///< absolute
+  };
+  const std::vector<Case> cases{ { "sphere", tpctest::SphereMesh({ 0.02, -0.03, 0.01 }, 0.8, 4), 0.05 },
+    { "torus", tpctest::TorusMesh({ 0.01, 0.02, -0.01 }, 0.6, 0.25, 96, 48), 0.03 },
+    { "chamfered bar", ChamferedBar(), 0.02 } };
+  for (const Case& c : cases)
+  {
+    SceneBuilder b;
+    b.Finish(b.Mesh(c.Mesh));
+    const tpc::RootGrid grid = tpctest::SingleRoot({ -1.03, -1.01, -1.02 }, 2.1, 16);
+    tpc::SubdivisionParameters p;
+    p.HausdorffTolerance = c.Tolerance;
+    p.MaximumDepth = 16;
+    const tpc::SubdivisionResult on = tpc::RunTopologyPreservingSubdivision(b.Scene, grid, p);
+    p.SpokesFirst = false;
+    const tpc::SubdivisionResult off = tpc::RunTopologyPreservingSubdivision(b.Scene, grid, p);
+    EXPECT_GT(on.SpokeSplitCells, 0u) << c.Name;
+    EXPECT_EQ(off.SpokeSplitCells, 0u) << c.Name;
+    EXPECT_GT(on.OversizedErrorBoundedCells, 0u) << c.Name; // (cells larger than the tolerance were accepted)
+    ASSERT_EQ(on.Octree.Nodes.size(), off.Octree.Nodes.size()) << c.Name;
+    for (std::size_t n = 0; n < on.Octree.Nodes.size(); ++n)
+    {
+      ASSERT_EQ(on.Octree.Nodes[n].State, off.Octree.Nodes[n].State) << c.Name << " cell " << n;
+    }
+    const tpc::ExtractionResult withSpokes = tpc::ExtractSurface(on.Octree, b.Scene);
+    const tpc::ExtractionResult without = tpc::ExtractSurface(off.Octree, b.Scene);
+    ASSERT_EQ(withSpokes.Mesh.Points.size(), without.Mesh.Points.size()) << c.Name;
+    for (std::size_t i = 0; i < withSpokes.Mesh.Points.size(); ++i)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        ASSERT_EQ(withSpokes.Mesh.Points[i][a], without.Mesh.Points[i][a]) << c.Name << " point " << i;
+      }
+    }
+    EXPECT_EQ(withSpokes.Mesh.Triangles.ToVector(), without.Mesh.Triangles.ToVector()) << c.Name;
+    EXPECT_EQ(withSpokes.CertifiedBound, without.CertifiedBound) << c.Name;
+    std::cout << c.Name << ": " << on.SpokeSplitCells << " of " << on.Octree.Nodes.size() << " cells split by a spoke, "
+              << withSpokes.Mesh.Triangles.size() << " triangles either way\n";
+  }
+}
+
 TEST(MeshCellError, BoundsHoldingTheSolidCutNothing)
 {
   // Bounds that hold the whole mesh cut nothing: the scene stays one mesh
