@@ -82,7 +82,10 @@ constexpr int FaceRefinementLevels = 10;
 ///   argument of Lemma 2 this makes each piece of the surface in the cell a
 ///   disk (Lemma 3) bounded by its own loop.
 /// `faceRefinementLevels` below the cell at most (FaceRefinementLevels; fewer
-/// where a failing cell keeps its mesh anyway, ExactCell.h).
+/// where a failing cell keeps its mesh anyway, ExactCell.h). With
+/// `spokesFirst`, a cell larger than the tolerance whose surface is one mesh
+/// is first checked for a spoke that rules out every fan (MeshCellError.h:
+/// Spokes; SubdivisionParameters::SpokesFirst).
 McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   const PrimitiveSet& primitives, double tolerance, int faceRefinementLevels = FaceRefinementLevels,
   bool spokesFirst = true);
