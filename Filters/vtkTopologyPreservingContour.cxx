@@ -22,12 +22,12 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkMultiProcessController.h"
-#include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTypeInt32Array.h"
 
 #include "Contour.h"
+#include "ExecutionThreads.h"
 #include "CreaseSplit.h"
 
 #include <algorithm>
@@ -42,15 +42,6 @@ vtkCxxSetObjectMacro(vtkTopologyPreservingContour, ImplicitFunction, vtkImplicit
 
 namespace
 {
-void ParallelForSMP(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body)
-{
-  const vtkIdType grain = std::max<vtkIdType>(1, static_cast<vtkIdType>(count) / 64);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(count), grain,
-    [&](vtkIdType begin, vtkIdType end) {
-      body(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
-    });
-}
-
 /// The report as field data (one value per array).
 void AddReport(vtkDataObject* output, const tpc::ContourReport& r)
 {
@@ -214,7 +205,8 @@ enum class InputConversion
 /// The filter's input meshes (converted and repaired) and its implicit
 /// function as the core's scene.
 InputConversion AddInputSolids(vtkTopologyPreservingContour* self, vtkInformationVector* inputs,
-  tpc::ContourScene& scene, const std::function<tpc::ProgressCallback(double, double)>& stage, const bool& aborted)
+  tpc::ContourScene& scene, const std::function<tpc::ProgressCallback(double, double)>& stage, const bool& aborted,
+  const tpc::ParallelFor& parallelFor)
 {
   const int connections = self->GetNumberOfInputConnections(0);
   for (int k = 0; k < connections; ++k)
@@ -228,7 +220,7 @@ InputConversion AddInputSolids(vtkTopologyPreservingContour* self, vtkInformatio
     }
     tpc::vtkadapter::MeshInput in;
     std::string error;
-    const bool converted = tpc::vtkadapter::ConvertPolyData(mesh, in, error, self->GetFillHoles(), ParallelForSMP,
+    const bool converted = tpc::vtkadapter::ConvertPolyData(mesh, in, error, self->GetFillHoles(), parallelFor,
       stage(0.08 * k / connections, 0.08 * (k + 1) / connections));
     if (aborted)
     {
@@ -443,8 +435,12 @@ int vtkTopologyPreservingContour::RequestData(
     return 1;
   };
 
+  // The core's loops run on threads started once for this execution
+  // (ExecutionThreads.h).
+  tpc::vtkadapter::ExecutionThreads threads;
+  const tpc::ParallelFor parallelFor = threads.Loop();
   tpc::ContourScene scene;
-  const InputConversion inputs = AddInputSolids(this, inInfo[0], scene, stage, abortRequested);
+  const InputConversion inputs = AddInputSolids(this, inInfo[0], scene, stage, abortRequested, parallelFor);
   if (inputs != InputConversion::Converted)
   {
     return inputs == InputConversion::Aborted ? aborted() : 1;
@@ -460,7 +456,7 @@ int vtkTopologyPreservingContour::RequestData(
   parameters.MaximumDepth = this->MaximumDepth;
   parameters.MaximumNumberOfCells = static_cast<std::size_t>(std::max<vtkIdType>(this->MaximumNumberOfCells, 0));
   tpc::ContourResult result =
-    tpc::Contour(std::move(scene), parameters, ParallelForSMP, coreStage, piece, exchange);
+    tpc::Contour(std::move(scene), parameters, parallelFor, coreStage, piece, exchange);
   for (const tpc::ContourMessage& m : result.Messages)
   {
     if (m.Severity == tpc::ContourMessage::Level::Error)

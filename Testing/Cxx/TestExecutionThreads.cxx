@@ -1,0 +1,146 @@
+// The core's parallel loops on threads started once per execution
+// (ExecutionThreads.h): every index of a loop is visited exactly once, from
+// more than one thread, loops started inside a loop run on their caller, an
+// exception reaches the caller, and the filter's output is the same, bit for
+// bit, on one thread (the Sequential backend) and on two.
+#include "ExecutionThreads.h"
+#include "FilterTestHelpers.h"
+
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkPoints.h"
+#include "vtkSMPTools.h"
+#include "vtkSphereSource.h"
+#include "vtkTriangleFilter.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <mutex>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace
+{
+/// Runs `test` with the given SMP backend and 2 threads, then restores the
+/// backend the tests run with.
+template <typename Test>
+void WithBackend(const char* backend, const Test& test)
+{
+  const std::string before = vtkSMPTools::GetBackend();
+  ASSERT_TRUE(vtkSMPTools::SetBackend(backend)) << backend;
+  vtkSMPTools::Initialize(2);
+  test();
+  vtkSMPTools::SetBackend(before.c_str());
+}
+} // namespace
+
+TEST(ExecutionThreads, EveryIndexOnceFromTwoThreads)
+{
+  WithBackend("STDThread", [] {
+    tpc::vtkadapter::ExecutionThreads threads;
+    const tpc::ParallelFor loop = threads.Loop();
+    for (const std::size_t count : { std::size_t(0), std::size_t(1), std::size_t(5), std::size_t(64),
+           std::size_t(1000), std::size_t(100003) })
+    {
+      std::vector<std::atomic<int>> visits(count);
+      std::mutex mutex;
+      std::set<std::thread::id> seen;
+      loop(count, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i)
+        {
+          ++visits[i];
+        }
+        if (count >= 1000)
+        {
+          // (Long enough that the other thread takes some of the ranges.)
+          std::this_thread::sleep_for(std::chrono::microseconds(200));
+        }
+        std::lock_guard<std::mutex> lock(mutex);
+        seen.insert(std::this_thread::get_id());
+      });
+      for (std::size_t i = 0; i < count; ++i)
+      {
+        ASSERT_EQ(visits[i].load(), 1) << "index " << i << " of " << count;
+      }
+      if (count >= 1000)
+      {
+        EXPECT_EQ(seen.size(), 2u) << count; // the caller and the one thread started
+      }
+    }
+  });
+}
+
+TEST(ExecutionThreads, NestedLoopsAndExceptions)
+{
+  WithBackend("STDThread", [] {
+    tpc::vtkadapter::ExecutionThreads threads;
+    const tpc::ParallelFor loop = threads.Loop();
+    // A loop inside a loop's body runs on the thread that started it.
+    std::atomic<long> total{ 0 };
+    loop(64, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i)
+      {
+        const std::thread::id outer = std::this_thread::get_id();
+        loop(100, [&](std::size_t b, std::size_t e) {
+          EXPECT_EQ(std::this_thread::get_id(), outer);
+          total += static_cast<long>(e - b);
+        });
+      }
+    });
+    EXPECT_EQ(total.load(), 6400);
+    // An exception thrown in a range reaches the caller; the threads stay
+    // usable.
+    EXPECT_THROW(loop(1000, [](std::size_t begin, std::size_t) {
+      if (begin >= 500)
+      {
+        throw std::runtime_error("range failed");
+      }
+    }), std::runtime_error);
+    std::atomic<std::size_t> after{ 0 };
+    loop(1000, [&](std::size_t begin, std::size_t end) { after += end - begin; });
+    EXPECT_EQ(after.load(), 1000u);
+  });
+}
+
+TEST(ExecutionThreads, FilterOutputIsTheSameOnOneThreadAndTwo)
+{
+  // A sphere mesh remeshed at 1/64: the core's loops write only their own
+  // ranges (Parallel.h), so the threads change nothing.
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(48);
+  sphere->SetPhiResolution(32);
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(sphere->GetOutputPort());
+  triangles->Update();
+  std::vector<double> points[2];
+  std::vector<vtkIdType> cells[2];
+  const char* backends[2] = { "Sequential", "STDThread" };
+  for (int k = 0; k < 2; ++k)
+  {
+    WithBackend(backends[k], [&] {
+      vtkNew<vtkTopologyPreservingContour> filter;
+      filter->SetInputData(triangles->GetOutput());
+      filter->SetTolerance(1.0 / 64);
+      const tpctest::FilterResult r = tpctest::Run(filter);
+      EXPECT_EQ(r.Guaranteed, 1) << backends[k];
+      vtkDataArray* xyz = r.Surface->GetPoints()->GetData();
+      for (vtkIdType i = 0; i < xyz->GetNumberOfValues(); ++i)
+      {
+        points[k].push_back(xyz->GetComponent(i / 3, static_cast<int>(i % 3)));
+      }
+      vtkDataArray* connectivity = r.Surface->GetPolys()->GetConnectivityArray();
+      for (vtkIdType i = 0; i < connectivity->GetNumberOfValues(); ++i)
+      {
+        cells[k].push_back(static_cast<vtkIdType>(connectivity->GetComponent(i, 0)));
+      }
+    });
+  }
+  EXPECT_GT(cells[0].size(), 100u);
+  EXPECT_EQ(points[0], points[1]);
+  EXPECT_EQ(cells[0], cells[1]);
+}
