@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cstring>
 #include <exception>
+#include <system_error>
 
 namespace tpc
 {
@@ -40,14 +41,25 @@ struct ExecutionThreads::Job
 
 ExecutionThreads::ExecutionThreads()
 {
-  if (std::strcmp(vtkSMPTools::GetBackend(), "STDThread") != 0)
+  // (Inside a vtkSMPTools loop - the filter run by a threaded pipeline -
+  // VTK runs nested loops on their thread unless nested parallelism is on;
+  // so do these.)
+  if (std::strcmp(vtkSMPTools::GetBackend(), "STDThread") != 0 ||
+    (vtkSMPTools::IsParallelScope() && !vtkSMPTools::GetNestedParallelism()))
   {
     return;
   }
   const int threads = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
   for (int t = 1; t < threads; ++t)
   {
-    this->Threads.emplace_back([this] { this->Serve(); });
+    try
+    {
+      this->Threads.emplace_back([this] { this->Serve(); });
+    }
+    catch (const std::system_error&)
+    {
+      break; // (no more threads to be had: the loops run on those started)
+    }
   }
 }
 
@@ -66,9 +78,9 @@ ExecutionThreads::~ExecutionThreads()
 
 ParallelFor ExecutionThreads::Loop()
 {
-  if (this->Threads.empty() && std::strcmp(vtkSMPTools::GetBackend(), "STDThread") != 0)
+  if (this->Threads.empty())
   {
-    return ForSMP;
+    return ForSMP; // (another backend, one thread, or a parallel scope: as vtkSMPTools does)
   }
   return [this](std::size_t count, const std::function<void(std::size_t, std::size_t)>& body) {
     this->For(count, body);
@@ -98,6 +110,7 @@ void ExecutionThreads::Work(Job& job)
       {
         job.Error = std::current_exception();
       }
+      job.Next.store(job.Ranges); // (the other ranges are not started)
     }
   }
   InLoop = outer;

@@ -8,7 +8,8 @@
 // is the VTK ParaView 5.11 ships.) So for that backend the threads are
 // started once per execution of the filter and handed every loop; with any
 // other backend (Sequential; TBB or OpenMP, which keep their own workers)
-// the loops go to vtkSMPTools::For as they are. Hand-written rather than a
+// the loops go to vtkSMPTools::For as they are, as they do inside a
+// vtkSMPTools loop (a threaded pipeline) unless nested parallelism is on. Hand-written rather than a
 // library's pool: the number of threads and the backend stay VTK's
 // (vtkSMPTools::Initialize, VTK_SMP_MAX_THREADS, VTK_SMP_BACKEND_IN_USE),
 // and the filter takes no new dependency.
@@ -33,7 +34,7 @@ class ExecutionThreads
 {
 public:
   /// Starts vtkSMPTools::GetEstimatedNumberOfThreads() - 1 threads when the
-  /// backend is STDThread (none otherwise).
+  /// backend is STDThread (none otherwise, or as many as the system gives).
   ExecutionThreads();
   /// Joins them.
   ~ExecutionThreads();
@@ -43,8 +44,9 @@ public:
   /// The core's ParallelFor on these threads: body(begin, end) over about
   /// 64 ranges covering [0, count), taken in turn by the calling thread and
   /// the others; returns when all are done (an exception thrown by body is
-  /// thrown again here). A loop started from inside a loop's body, or while
-  /// another thread runs one, runs on the calling thread alone.
+  /// thrown again here, the ranges not yet started skipped). A loop started
+  /// from inside a loop's body, or while another thread runs one, runs on the
+  /// calling thread alone. Without threads of its own: vtkSMPTools::For.
   ParallelFor Loop();
 
 private:

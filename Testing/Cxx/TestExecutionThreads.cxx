@@ -17,6 +17,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <mutex>
 #include <set>
 #include <stdexcept>
@@ -26,22 +27,47 @@
 
 namespace
 {
-/// Runs `test` with the given SMP backend and 2 threads, then restores the
-/// backend the tests run with.
+/// The given SMP backend with 2 threads (as many as the machine has, if
+/// fewer) while it lives; then the backend and number the tests run with.
+class Backend
+{
+public:
+  explicit Backend(const char* backend)
+    : Before(vtkSMPTools::GetBackend())
+    , Threads(vtkSMPTools::GetEstimatedNumberOfThreads())
+  {
+    this->Set = vtkSMPTools::SetBackend(backend);
+    vtkSMPTools::Initialize(2);
+  }
+  ~Backend()
+  {
+    vtkSMPTools::SetBackend(this->Before.c_str());
+    vtkSMPTools::Initialize(this->Threads);
+  }
+  bool Set = false;
+
+private:
+  std::string Before;
+  int Threads;
+};
+
+/// Runs `test` with the backend (Backend).
 template <typename Test>
 void WithBackend(const char* backend, const Test& test)
 {
-  const std::string before = vtkSMPTools::GetBackend();
-  ASSERT_TRUE(vtkSMPTools::SetBackend(backend)) << backend;
-  vtkSMPTools::Initialize(2);
+  const Backend scope(backend);
+  ASSERT_TRUE(scope.Set) << backend;
   test();
-  vtkSMPTools::SetBackend(before.c_str());
 }
 } // namespace
 
 TEST(ExecutionThreads, EveryIndexOnceFromTwoThreads)
 {
   WithBackend("STDThread", [] {
+    if (vtkSMPTools::GetEstimatedNumberOfThreads() < 2)
+    {
+      GTEST_SKIP() << "one processor: no thread to start";
+    }
     tpc::vtkadapter::ExecutionThreads threads;
     const tpc::ParallelFor loop = threads.Loop();
     for (const std::size_t count : { std::size_t(0), std::size_t(1), std::size_t(5), std::size_t(64),
@@ -49,19 +75,24 @@ TEST(ExecutionThreads, EveryIndexOnceFromTwoThreads)
     {
       std::vector<std::atomic<int>> visits(count);
       std::mutex mutex;
+      std::condition_variable arrived;
+      bool waitedInVain = false;
       std::set<std::thread::id> seen;
       loop(count, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i)
         {
           ++visits[i];
         }
-        if (count >= 1000)
-        {
-          // (Long enough that the other thread takes some of the ranges.)
-          std::this_thread::sleep_for(std::chrono::microseconds(200));
-        }
-        std::lock_guard<std::mutex> lock(mutex);
+        std::unique_lock<std::mutex> lock(mutex);
         seen.insert(std::this_thread::get_id());
+        if (count >= 1000 && !waitedInVain)
+        {
+          // Each range waits (3 s at most, once) until the other thread has
+          // taken one: with a thread that never takes work, the caller does
+          // them all, alone.
+          arrived.notify_all();
+          waitedInVain = !arrived.wait_for(lock, std::chrono::seconds(3), [&] { return seen.size() >= 2; });
+        }
       });
       for (std::size_t i = 0; i < count; ++i)
       {
@@ -123,6 +154,10 @@ TEST(ExecutionThreads, FilterOutputIsTheSameOnOneThreadAndTwo)
   for (int k = 0; k < 2; ++k)
   {
     WithBackend(backends[k], [&] {
+      if (k == 1 && vtkSMPTools::GetEstimatedNumberOfThreads() < 2)
+      {
+        GTEST_SKIP() << "one processor: one thread either way";
+      }
       vtkNew<vtkTopologyPreservingContour> filter;
       filter->SetInputData(triangles->GetOutput());
       filter->SetTolerance(1.0 / 64);

@@ -388,6 +388,10 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
 
 namespace
 {
+/// The least |n[axis]| of the unit normal n of a triangle crossing a cell
+/// edge for SpokeStrays to use the crossing (header, Spokes).
+constexpr double WellCrossed = 1e-3;
+
 /// Whether some polygon of `surface` is within `reach` of `p` (its box
 /// first: a lower bound of the distance).
 bool WithinReach(const std::vector<ConvexPolygon>& surface, const Vec3& p, double reach)
@@ -411,10 +415,7 @@ bool SpokeStrays(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3
     return false;
   }
   // (The slack covers the rounding of the crossings, the apex and the
-  // distances here and in the prediction, as there: header, Rounding. A
-  // crossing of a triangle nearly along the edge may be placed farther
-  // apart here and in the loop; that can only split a cell the tests would
-  // have accepted - a cell more, never a fan the guarantee does not cover.)
+  // distances here and in the prediction, as there: header, Rounding.)
   const double reach = tolerance + RoundingSlack(leaf, primitives, cell);
   const Vec3 apex = MeshCellApex(surface, cell);
   if (!WithinReach(surface, apex, reach))
@@ -432,9 +433,11 @@ bool SpokeStrays(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3
         continue; // (each edge once, from its lower corner; only edges with a sign change)
       }
       Vec3 x;
-      if (!mesh.CrossingPoint(cell.Corner(c), cell.Corner(d), axis, *leaf.Triangles, x))
+      std::uint32_t crossed = 0;
+      if (!mesh.CrossingPoint(cell.Corner(c), cell.Corner(d), axis, *leaf.Triangles, x, &crossed) ||
+        std::fabs(mesh.Normal(crossed)[axis]) < WellCrossed)
       {
-        continue; // (crossed more than once, or in a triangle's plane: which loop point is on it is not known here)
+        continue; // (crossed more than once, or nearly along a triangle: header, Spokes)
       }
       for (const double s : { 0.25, 0.5, 0.75 })
       {

@@ -87,8 +87,12 @@
 // that S crosses exactly once, at x_e. Every tiling of C's faces cuts e into
 // sub-edges of which exactly one has ends of different signs - the one
 // holding x_e - so every loop the tests can trace holds its crossing, which
-// PlaceSubEdgeCrossing puts at x_e (the same triangle's plane on the same
-// line; up to rounding, and the clamp of an ulp into the sub-edge). The fan P
+// PlaceSubEdgeCrossing puts at x_e: on the same triangle's plane and the same
+// line, from another end of the segment (or by bisection on exact signs,
+// to 2^-60 of the sub-edge), then clamped an ulp into the sub-edge. The two
+// placements differ by about an ulp of the coordinates divided by |n[axis]|
+// (n the triangle's unit normal): edges crossed with |n[axis]| < 1e-3 are
+// not used, so that the rounding slack covers the difference. The fan P
 // over that loop has the spoke [c, x_e] as an edge of two of its triangles,
 // with c = MeshCellApex(S_C, C), which depends on C and S_C only. So
 //   E(P) >= h(P, S_C) >= max over z in [c, x_e] of d(z, S_C),
@@ -99,7 +103,9 @@
 // the rounding slack from S_C, no loop the tests could trace gives a fan
 // within the tolerance: the cell splits for its size at once (SpokeStrays).
 // This only moves the decision earlier: a cell it splits would have failed
-// its prediction (or an earlier test) after the tests.
+// its prediction (or an earlier test) after the tests; its grid reason is
+// then HausdorffSize, whatever test would have failed first. (Not at the
+// depth or cell limit, where the failed test is reported: SplitDecision.)
 //
 // Cells no larger than the tolerance keep their usual patch
 // (LoopTriangulation.h), bounded by their diagonal; E of that patch is

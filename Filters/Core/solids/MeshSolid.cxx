@@ -198,7 +198,7 @@ int MeshSolid::CountCrossings(
 }
 
 bool MeshSolid::CrossingPoint(
-  const Vec3& a, const Vec3& b, int axis, const TriangleList& triangles, Vec3& point) const
+  const Vec3& a, const Vec3& b, int axis, const TriangleList& triangles, Vec3& point, std::uint32_t* crossed) const
 {
   int crossings = 0;
   std::uint32_t hit = 0;
@@ -220,6 +220,10 @@ bool MeshSolid::CrossingPoint(
   }
   point = a;
   point[axis] = a[axis] + t * (b[axis] - a[axis]);
+  if (crossed)
+  {
+    *crossed = hit;
+  }
   return true;
 }
 

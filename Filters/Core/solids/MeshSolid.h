@@ -46,8 +46,10 @@ public:
   /// (which must include every triangle meeting the segment).
   int CountCrossings(const Vec3& a, const Vec3& b, int axis, const TriangleList& triangles) const;
   /// When that segment crosses the surface exactly once: the crossing, on the
-  /// crossed triangle's plane (floating point), in `point`. False otherwise.
-  bool CrossingPoint(const Vec3& a, const Vec3& b, int axis, const TriangleList& triangles, Vec3& point) const;
+  /// crossed triangle's plane (floating point), in `point`, and that
+  /// triangle in `crossed` (if given). False otherwise.
+  bool CrossingPoint(const Vec3& a, const Vec3& b, int axis, const TriangleList& triangles, Vec3& point,
+    std::uint32_t* crossed = nullptr) const;
 
   /// The triangles of `candidates` that may meet the closed box (a
   /// conservative separating-axis test: never drops a triangle that does).

@@ -27,7 +27,9 @@ CellTests TestCell(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveS
   const int levels =
     std::max(0, std::min(FaceRefinementLevels, SampleDepth(tree.Grid, parameters.MaximumDepth) - limits.Level));
   tests.Verdict = TestMcCompatibility(tree, n, primitives, parameters.HausdorffTolerance,
-    keepsOnFailure ? std::min(levels, ExactCellFaceRefinementLevels) : levels, parameters.SpokesFirst);
+    keepsOnFailure ? std::min(levels, ExactCellFaceRefinementLevels) : levels,
+    // (A cell stopped by a limit reports the test it fails: all of them run.)
+    parameters.SpokesFirst && !limits.AtDepthLimit && !limits.AtCellLimit);
   if (limits.ToleranceSize && tests.Verdict.Kind == McVerdict::Split)
   {
     tests.Facing = HasFacingSurfaces(expression, primitives, tree.Grid.CellBox(limits.Level, tree.Nodes[n].Ijk),
