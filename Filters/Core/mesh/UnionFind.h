@@ -18,6 +18,12 @@ struct UnionFind
   {
     std::iota(Parent.begin(), Parent.end(), 0u);
   }
+  /// n singletons again, keeping the storage (for reuse in a loop).
+  void Reset(std::size_t n)
+  {
+    Parent.resize(n);
+    std::iota(Parent.begin(), Parent.end(), 0u);
+  }
   std::uint32_t Find(std::uint32_t x)
   {
     while (Parent[x] != x)

@@ -1,5 +1,7 @@
 #include "VertexLinks.h"
 
+#include "UnionFind.h"
+
 #include <algorithm>
 #include <atomic>
 #include <numeric>
@@ -15,7 +17,8 @@ namespace
 /// thread: three allocations per vertex were most of the test.)
 bool HasOneCycleLink(const Triangle* triangles, std::uint32_t v, const std::uint32_t* fan, std::size_t m)
 {
-  thread_local std::vector<std::uint32_t> link, distinct, parent;
+  thread_local std::vector<std::uint32_t> link, distinct;
+  thread_local UnionFind joined(0);
   link.clear(); // pairs of opposite vertices
   for (std::size_t k = 0; k < m; ++k)
   {
@@ -40,23 +43,11 @@ bool HasOneCycleLink(const Triangle* triangles, std::uint32_t v, const std::uint
   auto index = [&](std::uint32_t x) {
     return static_cast<std::uint32_t>(std::lower_bound(distinct.begin(), distinct.end(), x) - distinct.begin());
   };
-  // Union-find over the link vertices (path halving, as UnionFind.h).
-  parent.resize(distinct.size());
-  std::iota(parent.begin(), parent.end(), 0u);
-  auto find = [&](std::uint32_t x) {
-    while (parent[x] != x)
-    {
-      parent[x] = parent[parent[x]];
-      x = parent[x];
-    }
-    return x;
-  };
+  joined.Reset(distinct.size());
   std::size_t groups = distinct.size();
   for (std::size_t k = 0; k + 1 < link.size(); k += 2)
   {
-    const std::uint32_t a = find(index(link[k])), b = find(index(link[k + 1]));
-    parent[a] = b;
-    groups -= a != b ? 1 : 0;
+    groups -= joined.Join(index(link[k]), index(link[k + 1])) ? 1 : 0;
   }
   return groups == 1 && distinct.size() == m;
 }

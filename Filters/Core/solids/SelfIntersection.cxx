@@ -460,10 +460,11 @@ struct BinnedTriangles
 /// pair is tried twice. The pairs are tried where they are found, bin by bin
 /// (a list of them all would be written and read once, and merged on one
 /// thread: a quarter of the check on armadillo). Blocks of whole bins, of
-/// about as many entries each, are searched in parallel, each counting up to the limit, so the capped sum is
-/// min(total, limit) whatever the thread count; blocks run in chunks that
-/// report progress, and counting stops once the limit is reached (or on an
-/// abort: the count is then partial, and the caller that asked discards it).
+/// about as many entries each, are searched in parallel, each counting up to
+/// the limit, so the capped sum is min(total, limit) whatever the thread
+/// count; blocks run in chunks that report progress, and counting stops once
+/// the limit is reached (or on an abort: the count is then partial, and the
+/// caller that asked discards it).
 template <typename Accept>
 std::size_t CountAcceptedPairs(const std::vector<Vec3>& points,
   const std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t limit, const ParallelFor& parallelFor,
@@ -498,7 +499,6 @@ std::size_t CountAcceptedPairs(const std::vector<Vec3>& points,
     blockBin[b] = std::min<std::size_t>(binCount,
       static_cast<std::size_t>(std::lower_bound(bins.Start.begin(), bins.Start.end(), share) - bins.Start.begin()));
   }
-  blockBin[0] = 0;
   std::vector<std::size_t> found(Blocks, 0);
   std::size_t total = 0;
   ForEachChunk(Blocks, BlocksPerChunk, parallelFor, [&](std::size_t begin, std::size_t end) {
