@@ -172,8 +172,8 @@ void FaceSegments(const CellBoundary& b, int f, TraceScratch& scratch, std::vect
         segments[first].first.Kind != CrossingKind::Bend && segments[first].second.Kind != CrossingKind::Bend)
       {
         const Crossing out = segments[first].second;
-        segments[first].second = *b.Creases[f][k];
-        segments.emplace_back(*b.Creases[f][k], out);
+        segments[first].second = b.Creases[f][k]->X;
+        segments.emplace_back(b.Creases[f][k]->X, out);
       }
     }
   }

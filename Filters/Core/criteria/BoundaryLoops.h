@@ -96,6 +96,19 @@ struct Crossing
   }
 };
 
+/// A crease tile (CreaseCrossing.h, CsgCreaseCrossing.h): the crossing x
+/// its chord is drawn through. For a mesh's crease also x's position and the
+/// trace's two halves from x: the mesh edges' crossings inside the tile, in
+/// order, then the crossing just outside it (the half's last segment leaves
+/// the tile through a or b); a CSG crease has X only (placed with the cell,
+/// CsgCreaseCrossing.h).
+struct CreaseTile
+{
+  Crossing X;
+  Vec3 Position;
+  std::vector<Vec3> Sides[2];
+};
+
 /// The samples on a cell's boundary.
 struct CellBoundary
 {
@@ -113,10 +126,10 @@ struct CellBoundary
   /// 0 (or empty) where they come from the samples.
   std::vector<std::uint8_t> ExactTile[6];
   std::vector<std::pair<Crossing, Crossing>> ExactSegments;
-  /// Per tile of face f (or empty): the crossing of a crease that the tile's
-  /// chord is drawn through, where it has one: a mesh's sharpest edge on it
+  /// Per tile of face f (or empty): the crease that the tile's chord is
+  /// drawn through, where it has one: a mesh's sharpest edge on it
   /// (CreaseCrossing.h) or two quadric leaves' crease (CsgCreaseCrossing.h).
-  std::vector<std::optional<Crossing>> Creases[6];
+  std::vector<std::optional<CreaseTile>> Creases[6];
 };
 
 struct BoundaryLoopSet

@@ -92,17 +92,6 @@ constexpr double CreaseAngleDegrees = 30.0;
 /// makes a tile it crosses a crease tile (header: why below a crease's).
 constexpr double CreaseTileAngleDegrees = 25.0;
 
-/// A crease tile: its sharpest edge's crossing x (named as exact cells name
-/// it) and its position, and the trace's two halves from x: the mesh edges'
-/// crossings inside the tile, in order, then the crossing just outside it
-/// (the half's last segment leaves the tile through a or b).
-struct CreaseTile
-{
-  Crossing X;
-  Vec3 Position;
-  std::vector<Vec3> Sides[2];
-};
-
 /// Tile `tile` of the lattice plane x_axis = `plane` as a crease tile of the
 /// mesh of `leaf` (its triangle list holds every triangle meeting the tile);
 /// nothing when it is not one.
@@ -110,8 +99,10 @@ std::optional<CreaseTile> CreaseOnTile(const CsgLeaf& leaf, const PrimitiveSet& 
   int axis, LatticeIndex plane, const FaceTile& tile);
 
 /// Marks the crease tiles of every face of `boundary` (a cell of the mesh of
-/// `leaf`) in boundary.Creases, where `draws(f, k)` says that tile k of face
-/// f may be drawn so (both cells sharing it agree); whether it marked any.
+/// `leaf`) in boundary.Creases, with their halves (the subdivision's
+/// prediction reads them: CreaseOnTile's walk is not repeated), where
+/// `draws(f, k)` says that tile k of face f may be drawn so (both cells
+/// sharing it agree); whether it marked any.
 template <typename Draws>
 bool MarkCreaseTiles(CellBoundary& boundary, const CsgLeaf& leaf, const PrimitiveSet& primitives,
   const RootGrid& grid, const Draws& draws)
@@ -126,11 +117,8 @@ bool MarkCreaseTiles(CellBoundary& boundary, const CsgLeaf& leaf, const Primitiv
     {
       if (draws(f, k))
       {
-        if (const auto crease = CreaseOnTile(leaf, primitives, grid, axis, plane, boundary.Tiles[f][k]))
-        {
-          boundary.Creases[f][k] = crease->X;
-          marked = true;
-        }
+        boundary.Creases[f][k] = CreaseOnTile(leaf, primitives, grid, axis, plane, boundary.Tiles[f][k]);
+        marked = marked || boundary.Creases[f][k];
       }
     }
   }

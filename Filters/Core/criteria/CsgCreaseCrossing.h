@@ -84,7 +84,7 @@ void MarkCsgCreaseTiles(
       if (expression && *expression &&
         CsgCreaseOnTile(*expression, primitives, grid, axis, plane, boundary.Tiles[f][k]))
       {
-        boundary.Creases[f][k] = CsgCreaseCrossing(axis, plane, boundary.Tiles[f][k]);
+        boundary.Creases[f][k] = CreaseTile{ CsgCreaseCrossing(axis, plane, boundary.Tiles[f][k]), Vec3(), {} };
       }
     }
   }

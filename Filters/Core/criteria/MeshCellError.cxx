@@ -316,7 +316,6 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
     const Crossing &p = loop[k], &q = loop[(k + 1) % m];
     const Vec3 &a = points[k], &b = points[(k + 1) % m];
     const int axis = f / 2;
-    const LatticeIndex plane = boundary.Base[axis] + (f % 2 ? boundary.Size : 0);
     double chord = HUGE_VAL;
     for (std::size_t k = 0; k < boundary.Tiles[f].size(); ++k)
     {
@@ -324,15 +323,14 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
       if (p.Kind == CrossingKind::MeshEdge || q.Kind == CrossingKind::MeshEdge)
       {
         // The crease tile whose crease crossing this is (marked in
-        // boundary.Creases; its halves walked again here).
+        // boundary.Creases with its halves).
         const bool fromCrease = p.Kind == CrossingKind::MeshEdge;
         const Crossing& x = fromCrease ? p : q;
-        const bool marked = k < boundary.Creases[f].size() && boundary.Creases[f][k] &&
-          boundary.Creases[f][k]->SameVertex(x);
-        const auto crease = marked ? CreaseOnTile(*leaf, primitives, grid, axis, plane, t) : std::nullopt;
-        if (crease && crease->X.SameVertex(x))
+        const std::optional<CreaseTile>* crease =
+          k < boundary.Creases[f].size() ? &boundary.Creases[f][k] : nullptr;
+        if (crease && *crease && (*crease)->X.SameVertex(x))
         {
-          chord = CreaseChordDeviation(*crease, fromCrease ? b : a);
+          chord = CreaseChordDeviation(**crease, fromCrease ? b : a);
           break;
         }
       }

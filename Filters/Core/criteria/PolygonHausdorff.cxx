@@ -192,14 +192,35 @@ void Evaluate(
     }
   };
   // Nearest box first: its target usually bounds the piece well enough to
-  // rule out most others by their box distance alone. The rest are taken as
-  // they come, each skipped where its box distance already rules it out:
-  // most of those still in the running after the first are visited anyway
-  // (armadillo at 1/128: 7.6 of 9.6), so ordering them (a sort, earlier a
-  // heap) cost more than the distances it saved.
+  // rule out most others by their box distance alone. Among boxes equally
+  // near - a large piece's box meets many targets' boxes, all at distance
+  // 0 - the one nearest the piece's centroid: its single-target bound is
+  // about the piece's circumradius, which rules out more of the others than
+  // a target near one corner would (couplingdown at 1/128: 13 % fewer
+  // instructions measuring polygon distances, 1.2 % fewer in all; the order
+  // changes no bound, each being a minimum over every target that can lower
+  // it). The
+  // rest are taken as they come, each skipped where its box distance already
+  // rules it out: most of those still in the running after the first are
+  // visited anyway (armadillo at 1/128: 7.6 of 9.6), so ordering them (a
+  // sort, earlier a heap) cost more than the distances it saved.
   if (!inReach.empty())
   {
-    const auto nearestBox = std::min_element(inReach.begin(), inReach.end());
+    const Vec3 centroid = (piece.Vertices[0] + piece.Vertices[1] + piece.Vertices[2]) * (1.0 / 3.0);
+    auto nearestBox = inReach.begin();
+    double best = HUGE_VAL;
+    for (auto e = inReach.begin(); e != inReach.end(); ++e)
+    {
+      if (e->first <= nearestBox->first)
+      {
+        const double d2 = targets.Boxes[e->second].Distance2(centroid);
+        if (e->first < nearestBox->first || d2 < best)
+        {
+          best = d2;
+          nearestBox = e;
+        }
+      }
+    }
     std::iter_swap(inReach.begin(), nearestBox);
     visit(inReach.front().second);
     for (auto e = inReach.begin() + 1; e != inReach.end(); ++e)
