@@ -108,7 +108,7 @@ bool CreaseFanWithinTolerance(const QuadricCellError& bound, const Vec3& apex, c
 } // namespace
 
 McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& prims,
-  double tolerance, int faceRefinementLevels, bool spokesFirst)
+  double tolerance, int faceRefinementLevels, bool provenFailuresFirst)
 {
   McCompatibility v;
   v.Kind = McVerdict::Split;
@@ -166,7 +166,7 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   // (MeshCellError.h: Spokes).
   const std::vector<ConvexPolygon> meshSurface =
     meshBounded ? SurfaceInCell(*LoneMeshLeaf(*expression), prims, box) : std::vector<ConvexPolygon>();
-  if (meshBounded && spokesFirst && SpokeStrays(*LoneMeshLeaf(*expression), prims, box, mask, meshSurface, tolerance))
+  if (meshBounded && provenFailuresFirst && SpokeStrays(*LoneMeshLeaf(*expression), prims, box, mask, meshSurface, tolerance))
   {
     v.Reason = SplitReason::HausdorffSize;
     v.SplitBySpoke = true;
@@ -212,11 +212,13 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     const bool creases = IsOneMesh(*tree.SceneExpression) &&
       MarkCreaseTiles(boundary, *LoneMeshLeaf(*expression), prims, grid, [](int, std::size_t) { return true; });
     v.PredictedError = PredictedMeshCellError(*expression, prims, grid, box, boundary,
-      creases ? TraceBoundaryLoops(boundary) : loops, tolerance, v.MeshPrediction, &meshSurface);
+      creases ? TraceBoundaryLoops(boundary) : loops, tolerance, v.MeshPrediction, &meshSurface,
+      provenFailuresFirst);
     v.ErrorBounded = v.MeshSurface = v.PredictedError <= tolerance;
     if (!v.ErrorBounded)
     {
       v.Reason = SplitReason::HausdorffSize;
+      v.SplitByProbe = v.MeshPrediction.ProbeStrayed;
       return v;
     }
   }

@@ -55,6 +55,9 @@ struct McCompatibility
   /// prediction could be made with strays beyond the tolerance
   /// (MeshCellError.h: Spokes).
   bool SplitBySpoke = false;
+  /// Split for its size because its prediction's fan has a point too far
+  /// from the mesh (MeshCellError.h: Probes).
+  bool SplitByProbe = false;
   /// Faces this cell refined (only kept if it passes).
   std::vector<std::pair<FaceKey, std::vector<FaceTile>>> Refinements;
   /// Signs evaluated during the tests, for the global table.
@@ -83,11 +86,12 @@ constexpr int FaceRefinementLevels = 10;
 ///   disk (Lemma 3) bounded by its own loop.
 /// `faceRefinementLevels` below the cell at most (FaceRefinementLevels; fewer
 /// where a failing cell keeps its mesh anyway, ExactCell.h). With
-/// `spokesFirst`, a cell larger than the tolerance whose surface is one mesh
-/// is first checked for a spoke that rules out every fan (MeshCellError.h:
-/// Spokes; SubdivisionParameters::SpokesFirst).
+/// `provenFailuresFirst`, a cell larger than the tolerance whose surface is
+/// one mesh is first checked for a spoke that rules out every fan, and its
+/// prediction probes its fan before the branch and bound (MeshCellError.h:
+/// Spokes, Probes; SubdivisionParameters::ProvenFailuresFirst).
 McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   const PrimitiveSet& primitives, double tolerance, int faceRefinementLevels = FaceRefinementLevels,
-  bool spokesFirst = true);
+  bool provenFailuresFirst = true);
 
 } // namespace tpc

@@ -72,17 +72,6 @@ std::vector<Vec3> ClipToBox(std::vector<Vec3> points, const Box3& box)
   return points;
 }
 
-/// Twice the polygon's area (its Newell vector's length).
-double DoubleArea(const ConvexPolygon& q)
-{
-  Vec3 n;
-  for (std::size_t i = 0; i < q.Points.size(); ++i)
-  {
-    n += Cross(q.Points[i], q.Points[(i + 1) % q.Points.size()]);
-  }
-  return Norm(n);
-}
-
 /// Pieces the subdivision's prediction may examine per direction (a cell
 /// whose bound needs more is split instead: smaller cells are cheaper).
 constexpr std::size_t PredictionBudget = 1024;
@@ -152,6 +141,43 @@ Box3 TileBox(const RootGrid& grid, const CellBoundary& boundary, int f, const Fa
   const LatticeIndex plane = boundary.Base[axis] + (f % 2 ? boundary.Size : 0);
   return { grid.Point(TileCorner(axis, plane, t, 0)), grid.Point(TileCorner(axis, plane, t, 3)) };
 }
+/// Whether some polygon of `surface` is within `reach` of `p` (its box
+/// first: a lower bound of the distance).
+bool WithinReach(const std::vector<ConvexPolygon>& surface, const Vec3& p, double reach)
+{
+  for (const ConvexPolygon& q : surface)
+  {
+    if (q.Bounds.Distance2(p) <= reach * reach && PolygonDistance(p, q) <= reach)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+/// Whether a point of the fan `fan` (triangle k over chord k, whose delta
+/// with the slack is chordDelta[k]) is proven to fail both of the
+/// prediction's bounds before their branch and bound (header: Probes): its
+/// centroid or an edge's midpoint farther from S_C than the tolerance minus
+/// chordDelta[k], plus twice the slack.
+bool FanPointStrays(const std::vector<ConvexPolygon>& surface, const std::vector<SourceTriangle>& fan,
+  const std::vector<double>& chordDelta, double slack, double tolerance)
+{
+  for (std::size_t k = 0; k < fan.size(); ++k)
+  {
+    const SourceTriangle& t = fan[k];
+    const double reach = tolerance - chordDelta[k] + 2.0 * slack;
+    for (const Vec3& x : { (t[0] + t[1] + t[2]) * (1.0 / 3.0), (t[0] + t[1]) * 0.5, (t[1] + t[2]) * 0.5,
+           (t[2] + t[0]) * 0.5 })
+    {
+      if (!WithinReach(surface, x, reach))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
 } // namespace
 
 std::vector<ConvexPolygon> SurfaceInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives,
@@ -159,6 +185,7 @@ std::vector<ConvexPolygon> SurfaceInCell(const CsgLeaf& leaf, const PrimitiveSet
 {
   const MeshSolid& mesh = primitives.Meshes[leaf.Primitive];
   std::vector<ConvexPolygon> surface;
+  surface.reserve(leaf.Triangles->size());
   for (const std::uint32_t t : *leaf.Triangles)
   {
     std::vector<Vec3> clipped = ClipToBox({ mesh.Vertex(t, 0), mesh.Vertex(t, 1), mesh.Vertex(t, 2) }, cell);
@@ -176,7 +203,7 @@ Vec3 MeshCellApex(const std::vector<ConvexPolygon>& surface, const Box3& cell)
   double weight = 0.0;
   for (const ConvexPolygon& q : surface)
   {
-    const double w = DoubleArea(q);
+    const double w = q.TwiceArea;
     for (const Vec3& p : q.Points)
     {
       centroid += p * (w / q.Points.size());
@@ -191,7 +218,7 @@ Vec3 MeshCellApex(const std::vector<ConvexPolygon>& surface, const Box3& cell)
   for (const ConvexPolygon& q : surface)
   {
     const Vec3& n = q.Normal;
-    const double w = weight > 0.0 ? DoubleArea(q) / weight : 1.0, d = Dot(n, q.Points[0] - centroid);
+    const double w = weight > 0.0 ? q.TwiceArea / weight : 1.0, d = Dot(n, q.Points[0] - centroid);
     for (int i = 0; i < 3; ++i)
     {
       for (int j = 0; j < 3; ++j)
@@ -271,7 +298,8 @@ HausdorffEstimate CertifiedMeshPatchError(const std::vector<ConvexPolygon>& surf
 
 double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSet& primitives,
   const RootGrid& grid, const Box3& cell, const CellBoundary& boundary, const BoundaryLoopSet& loops,
-  double tolerance, AdaptiveOctree::MeshCellPrediction& prediction, const std::vector<ConvexPolygon>* given)
+  double tolerance, AdaptiveOctree::MeshCellPrediction& prediction, const std::vector<ConvexPolygon>* given,
+  bool probesFirst)
 {
   prediction = AdaptiveOctree::MeshCellPrediction();
   const CsgLeaf* leaf = LoneMeshLeaf(expression);
@@ -363,6 +391,11 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
   {
     fan.push_back({ points[k], points[(k + 1) % m], apex });
   }
+  if (probesFirst && FanPointStrays(surface, fan, chordDelta, slack, tolerance))
+  {
+    prediction.ProbeStrayed = true;
+    return HUGE_VAL;
+  }
   const HausdorffEstimate error =
     CertifiedMeshPatchError(surface, fan, slack, tolerance - delta, tolerance - delta, PredictionBudget);
   prediction.Loop = std::move(points);
@@ -389,20 +422,6 @@ namespace
 /// The least |n[axis]| of the unit normal n of a triangle crossing a cell
 /// edge for SpokeStrays to use the crossing (header, Spokes).
 constexpr double WellCrossed = 1e-3;
-
-/// Whether some polygon of `surface` is within `reach` of `p` (its box
-/// first: a lower bound of the distance).
-bool WithinReach(const std::vector<ConvexPolygon>& surface, const Vec3& p, double reach)
-{
-  for (const ConvexPolygon& q : surface)
-  {
-    if (q.Bounds.Distance2(p) <= reach * reach && PolygonDistance(p, q) <= reach)
-    {
-      return true;
-    }
-  }
-  return false;
-}
 } // namespace
 
 bool SpokeStrays(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell, unsigned insideCorners,

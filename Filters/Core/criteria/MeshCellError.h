@@ -107,6 +107,24 @@
 // then HausdorffSize, whatever test would have failed first. (Not at the
 // depth or cell limit, where the failed test is reported: SplitDecision.)
 //
+// Probes: once the fan P and the chords' deltas are known, a few points of
+// P are measured before either bound's branch and bound. Let x be a point of
+// the fan triangle T_k over chord k, whose delta with the slack is d_k
+// (<= delta). If the distance from x to S_C, as computed, exceeds tol - d_k
+// + 2 slack, its true distance exceeds tol - d_k + slack (the slack is far
+// above a distance's rounding), so both bounds fail whatever their branch
+// and bound would find: E(P) >= h(P, S_C) >= d(x, S_C) > tol - delta +
+// slack, so E(P) + delta > tol; and the per-chord bound is at least
+// d_k + g(x) for x in T_k (its source offset; g has no target offsets in
+// this direction) >= d_k + d(x, S_C) > tol. The cell then splits for its
+// size as it would have after both (the per-chord bound is only tried after
+// E(P) + delta failed, and fails too): the same cells, patches and reasons,
+// one branch and bound fewer (two where the per-chord bound was tried). The
+// points: each triangle's centroid and edge midpoints (the chord's midpoint
+// among them, where a chord cutting across S strays most). On armadillo at
+// 1/64 this and the crease tiles' kept halves take the prediction from 1.41
+// to 0.99 G instructions of the filter's 5.92 G.
+//
 // Cells no larger than the tolerance keep their usual patch
 // (LoopTriangulation.h), bounded by their diagonal; E of that patch is
 // computed too, and the smaller of the two reported, so that HausdorffBound
@@ -176,11 +194,13 @@ double RoundingSlack(const CsgLeaf& leaf, const PrimitiveSet& primitives, const 
 /// cell's own, SameLoop; +inf where the cell passed on the per-chord bound,
 /// E(P) + delta having failed before E(P) was proven).
 /// `surface`: S_C when the caller has it (SurfaceInCell with `cell`), else
-/// null.
+/// null. With `probesFirst`, the fan's probes (header: Probes) may fail it
+/// before the branch and bound (then prediction.ProbeStrayed is set): off
+/// only to check that they change nothing.
 double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSet& primitives,
   const RootGrid& grid, const Box3& cell, const CellBoundary& boundary, const BoundaryLoopSet& loops,
   double tolerance, AdaptiveOctree::MeshCellPrediction& prediction,
-  const std::vector<ConvexPolygon>* surface = nullptr);
+  const std::vector<ConvexPolygon>* surface = nullptr, bool probesFirst = true);
 
 /// Whether a spoke of the fan over every loop the tests could trace in
 /// `cell` strays farther than `tolerance` from S_C `surface` (header:

@@ -265,6 +265,7 @@ ConvexPolygon MakeConvexPolygon(std::vector<Vec3> points)
   }
   const double length = Norm(normal);
   polygon.Normal = length > 0.0 ? normal * (1.0 / length) : Vec3();
+  polygon.TwiceArea = length;
   polygon.Bounds = m ? BoundsOf(polygon.Points.data(), m) : Box3{};
   if (m >= 3 && length > 0.0)
   {

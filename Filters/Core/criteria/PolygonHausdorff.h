@@ -54,6 +54,7 @@ struct ConvexPolygon
 {
   std::vector<Vec3> Points;
   Vec3 Normal; ///< unit, from the vertex order (Newell); zero when degenerate
+  double TwiceArea = 0.0; ///< the Newell vector's length
   Box3 Bounds;
   /// Normal x (edge from Points[i] to Points[i + 1]): points into the polygon
   /// within its plane (empty when degenerate).

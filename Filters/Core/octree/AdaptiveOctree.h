@@ -140,6 +140,9 @@ public:
     /// the fan's error too, but far above it: not kept as one,
     /// MeshCellError.h).
     double OwnFanError = HUGE_VAL;
+    /// Set where the prediction failed at a probe, before its branch and
+    /// bound (MeshCellError.h: Probes; such cells split).
+    bool ProbeStrayed = false;
   };
   std::unordered_map<std::uint32_t, MeshCellPrediction> MeshCellPredictions;
 

@@ -29,7 +29,7 @@ CellTests TestCell(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveS
   tests.Verdict = TestMcCompatibility(tree, n, primitives, parameters.HausdorffTolerance,
     keepsOnFailure ? std::min(levels, ExactCellFaceRefinementLevels) : levels,
     // (A cell stopped by a limit reports the test it fails: all of them run.)
-    parameters.SpokesFirst && !limits.AtDepthLimit && !limits.AtCellLimit);
+    parameters.ProvenFailuresFirst && !limits.AtDepthLimit && !limits.AtCellLimit);
   if (limits.ToleranceSize && tests.Verdict.Kind == McVerdict::Split)
   {
     tests.Facing = HasFacingSurfaces(expression, primitives, tree.Grid.CellBox(limits.Level, tree.Nodes[n].Ijk),
@@ -109,6 +109,7 @@ bool DecideCell(AdaptiveOctree& tree, std::uint32_t n, const CellTests& tests, c
   node.Reason = v.Reason;
   result.SplitsByReason[static_cast<int>(v.Reason)] += mine;
   result.SpokeSplitCells += v.SplitBySpoke ? mine : 0;
+  result.ProbeSplitCells += v.SplitByProbe ? mine : 0;
   return true;
 }
 

@@ -44,10 +44,12 @@ struct SubdivisionParameters
   /// (ExactCell.h) instead of refining. For scenes of one closed mesh that
   /// meets the paper's assumptions (remeshing).
   bool ExactCells = false;
-  /// Oversized cells of one mesh whose fans would stray beyond the
-  /// tolerance split before their tests (MeshCellError.h: Spokes). Off only
-  /// to check that this changes no cell's fate.
-  bool SpokesFirst = true;
+  /// Proven failures first: oversized cells of one mesh whose fans would
+  /// stray beyond the tolerance split before their tests (MeshCellError.h:
+  /// Spokes), and a prediction whose fan has a point too far from the mesh
+  /// fails before its branch and bound (Probes). Off only to check that this
+  /// changes no cell's fate.
+  bool ProvenFailuresFirst = true;
   /// A piece of a split run (ForestPartition.h): the role of each tree of
   /// the root grid; skipped trees stay empty roots. Empty: every tree.
   std::vector<TreeRole> TreeRoles;
@@ -78,8 +80,11 @@ struct SubdivisionResult
   /// than the tolerance.
   std::size_t ErrorBoundedCells = 0;
   std::size_t OversizedErrorBoundedCells = 0;
-  /// Cells split for their size before their tests (SpokesFirst).
+  /// Cells split for their size before their tests (Spokes), or whose
+  /// prediction failed before its branch and bound (Probes);
+  /// ProvenFailuresFirst.
   std::size_t SpokeSplitCells = 0;
+  std::size_t ProbeSplitCells = 0;
   /// The proven two-sided Hausdorff bound between the exact surface and the
   /// extracted one over the leaves other than error-bounded cells (those are
   /// certified on their patches: ExtractionResult::CertifiedBound): the

@@ -609,15 +609,17 @@ TEST(MeshCellError, CertificatesBoundTheMeasuredDistanceAlongNarrowChamfers)
   }
 }
 
-TEST(MeshCellError, SpokesSplitOnlyCellsThePredictionWouldSplit)
+TEST(MeshCellError, ProvenFailuresSplitOnlyCellsThePredictionWouldSplit)
 {
   // Cells of one mesh larger than the tolerance where a spoke of every fan
   // the prediction could be made with strays beyond the tolerance split
-  // before their tests (MeshCellError.h: Spokes). That only moves the
-  // decision earlier: with the check off, every cell meets the same fate and
-  // the surface is the same, point for point. (A check stricter than the
-  // prediction - half the tolerance for the spokes' reach - splits cells the
-  // tests accept, and the surfaces differ.)
+  // before their tests (MeshCellError.h: Spokes), and a prediction whose fan
+  // has a point farther from the mesh than the tolerance minus its chord's
+  // delta fails before its branch and bound (Probes). That only moves the
+  // decision earlier: with both off, every cell meets the same fate and the
+  // surface is the same, point for point. (A check stricter than the
+  // prediction - half the tolerance for the spokes' reach, or for the
+  // probes' - splits cells the tests accept, and the surfaces differ.)
   struct Case
   {
     const char* Name;
@@ -636,10 +638,12 @@ TEST(MeshCellError, SpokesSplitOnlyCellsThePredictionWouldSplit)
     p.HausdorffTolerance = c.Tolerance;
     p.MaximumDepth = 16;
     const tpc::SubdivisionResult on = tpc::RunTopologyPreservingSubdivision(b.Scene, grid, p);
-    p.SpokesFirst = false;
+    p.ProvenFailuresFirst = false;
     const tpc::SubdivisionResult off = tpc::RunTopologyPreservingSubdivision(b.Scene, grid, p);
     EXPECT_GT(on.SpokeSplitCells, 0u) << c.Name;
     EXPECT_EQ(off.SpokeSplitCells, 0u) << c.Name;
+    EXPECT_GT(on.ProbeSplitCells, 0u) << c.Name;
+    EXPECT_EQ(off.ProbeSplitCells, 0u) << c.Name;
     EXPECT_GT(on.OversizedErrorBoundedCells, 0u) << c.Name; // (cells larger than the tolerance were accepted)
     ASSERT_EQ(on.Octree.Nodes.size(), off.Octree.Nodes.size()) << c.Name;
     for (std::size_t n = 0; n < on.Octree.Nodes.size(); ++n)
@@ -659,7 +663,8 @@ TEST(MeshCellError, SpokesSplitOnlyCellsThePredictionWouldSplit)
     EXPECT_EQ(withSpokes.Mesh.Triangles.ToVector(), without.Mesh.Triangles.ToVector()) << c.Name;
     EXPECT_EQ(withSpokes.CertifiedBound, without.CertifiedBound) << c.Name;
     std::cout << c.Name << ": " << on.SpokeSplitCells << " of " << on.Octree.Nodes.size() << " cells split by a spoke, "
-              << withSpokes.Mesh.Triangles.size() << " triangles either way\n";
+              << on.ProbeSplitCells << " by a probe, " << withSpokes.Mesh.Triangles.size()
+              << " triangles either way\n";
   }
 }
 
