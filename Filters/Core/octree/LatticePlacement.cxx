@@ -120,17 +120,47 @@ LatticeCreases FindLatticeCreases(const PrimitiveSet& primitives, double ridgeTh
   {
     std::vector<EdgeUse> uses;
     BuildEdgeTable(mesh.Triangles().data(), mesh.Triangles().size(), uses, parallelFor);
-    // (Closed meshes: every edge has two triangles; a non-manifold edge's
-    // uses are taken in pairs.)
-    ForEachEdge(uses, [&](std::size_t first, std::size_t count) {
-      for (std::size_t k = first; k + 1 < first + count; k += 2)
+    // Blocks of whole edges classified in parallel, then appended in block
+    // order: the lists are in the edge table's order, as one pass would
+    // leave them (the penalty sums them in that order).
+    constexpr std::size_t Blocks = 64;
+    std::vector<std::size_t> start(Blocks + 1, uses.size());
+    for (std::size_t b = 0; b < Blocks; ++b)
+    {
+      std::size_t i = uses.size() * b / Blocks;
+      while (i > 0 && i < uses.size() && uses[i].Key == uses[i - 1].Key)
       {
-        const std::uint64_t key = uses[k].Key;
-        AddCreaseEdge(mesh.Points()[EdgeLow(key)], mesh.Points()[EdgeHigh(key)],
-          ThirdVertex(mesh, uses[k].Triangle, key), ThirdVertex(mesh, uses[k + 1].Triangle, key), ridgeThickness,
-          planeThickness, creases);
+        ++i;
+      }
+      start[b] = std::max(i, b > 0 ? start[b - 1] : 0);
+    }
+    std::vector<LatticeCreases> found(Blocks);
+    parallelFor(Blocks, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t b = begin; b < end; ++b)
+      {
+        // (Closed meshes: every edge has two triangles; a non-manifold
+        // edge's uses are taken in pairs.)
+        for (std::size_t k = start[b]; k + 1 < start[b + 1]; ++k)
+        {
+          const std::uint64_t key = uses[k].Key;
+          if (uses[k + 1].Key == key)
+          {
+            AddCreaseEdge(mesh.Points()[EdgeLow(key)], mesh.Points()[EdgeHigh(key)],
+              ThirdVertex(mesh, uses[k].Triangle, key), ThirdVertex(mesh, uses[k + 1].Triangle, key),
+              ridgeThickness, planeThickness, found[b]);
+            ++k;
+          }
+        }
       }
     });
+    for (const LatticeCreases& f : found)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        creases.Ridges[a].insert(creases.Ridges[a].end(), f.Ridges[a].begin(), f.Ridges[a].end());
+        creases.InPlane[a].insert(creases.InPlane[a].end(), f.InPlane[a].begin(), f.InPlane[a].end());
+      }
+    }
   }
   return creases;
 }
