@@ -166,7 +166,8 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   // (MeshCellError.h: Spokes).
   const std::vector<ConvexPolygon> meshSurface =
     meshBounded ? SurfaceInCell(*LoneMeshLeaf(*expression), prims, box) : std::vector<ConvexPolygon>();
-  if (meshBounded && provenFailuresFirst && SpokeStrays(*LoneMeshLeaf(*expression), prims, box, mask, meshSurface, tolerance))
+  if (meshBounded && provenFailuresFirst &&
+    SpokeStrays(*LoneMeshLeaf(*expression), prims, box, mask, meshSurface, tolerance))
   {
     v.Reason = SplitReason::HausdorffSize;
     v.SplitBySpoke = true;

@@ -141,6 +141,7 @@ Box3 TileBox(const RootGrid& grid, const CellBoundary& boundary, int f, const Fa
   const LatticeIndex plane = boundary.Base[axis] + (f % 2 ? boundary.Size : 0);
   return { grid.Point(TileCorner(axis, plane, t, 0)), grid.Point(TileCorner(axis, plane, t, 3)) };
 }
+
 /// Whether some polygon of `surface` is within `reach` of `p` (its box
 /// first: a lower bound of the distance).
 bool WithinReach(const std::vector<ConvexPolygon>& surface, const Vec3& p, double reach)

@@ -108,16 +108,17 @@
 // depth or cell limit, where the failed test is reported: SplitDecision.)
 //
 // Probes: once the fan P and the chords' deltas are known, a few points of
-// P are measured before either bound's branch and bound. Let x be a point of
+// P are measured before either bound's branch and bound. Let y be a point of
 // the fan triangle T_k over chord k, whose delta with the slack is d_k
-// (<= delta). If the distance from x to S_C, as computed, exceeds tol - d_k
-// + 2 slack, its true distance exceeds tol - d_k + slack (the slack is far
-// above a distance's rounding), so both bounds fail whatever their branch
-// and bound would find: E(P) >= h(P, S_C) >= d(x, S_C) > tol - delta +
-// slack, so E(P) + delta > tol; and the per-chord bound is at least
-// d_k + g(x) for x in T_k (its source offset; g has no target offsets in
-// this direction) >= d_k + d(x, S_C) > tol. The cell then splits for its
-// size as it would have after both (the per-chord bound is only tried after
+// (<= delta), and x its computed position (a centroid or an edge midpoint,
+// within a few ulps of y). If the distance from x to S_C, as computed,
+// exceeds tol - d_k + 2 slack, then d(y, S_C) > tol - d_k + slack (the
+// slack is far above both roundings), so both bounds fail whatever their
+// branch and bound would find: E(P) >= h(P, S_C) >= d(y, S_C) > tol - delta
+// + slack, so E(P) + delta > tol; and the per-chord bound is at least
+// d_k + g(y) (T_k's source offset; g has no target offsets in this
+// direction) >= d_k + d(y, S_C) > tol. The cell then splits for its size
+// as it would have after both (the per-chord bound is only tried after
 // E(P) + delta failed, and fails too): the same cells, patches and reasons,
 // one branch and bound fewer (two where the per-chord bound was tried). The
 // points: each triangle's centroid and edge midpoints (the chord's midpoint

@@ -199,11 +199,11 @@ void Evaluate(
   // a target near one corner would (couplingdown at 1/128: 13 % fewer
   // instructions measuring polygon distances, 1.2 % fewer in all; the order
   // changes no bound, each being a minimum over every target that can lower
-  // it). The
-  // rest are taken as they come, each skipped where its box distance already
-  // rules it out: most of those still in the running after the first are
-  // visited anyway (armadillo at 1/128: 7.6 of 9.6), so ordering them (a
-  // sort, earlier a heap) cost more than the distances it saved.
+  // it). The rest are taken as they come, each skipped where its box
+  // distance already rules it out: most of those still in the running after
+  // the first are visited anyway (armadillo at 1/128: 7.6 of 9.6), so
+  // ordering them (a sort, earlier a heap) cost more than the distances it
+  // saved.
   if (!inReach.empty())
   {
     const Vec3 centroid = (piece.Vertices[0] + piece.Vertices[1] + piece.Vertices[2]) * (1.0 / 3.0);
