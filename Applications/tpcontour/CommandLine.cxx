@@ -52,6 +52,8 @@ Options:
                          has its side's normal, SurfacePointId maps it back
                          (the .vtp is then no longer closed by shared points:
                          leave it off for CAD or mesh Booleans)
+      --threads N        threads to run on (default and at most: one per
+                         processor); the output is the same on any number
       --json             print the report as JSON on standard output (with
                          --batch: an array, one report per input)
   -q, --quiet            no progress bar, no warnings
@@ -71,7 +73,9 @@ Exit status: 0 the surface was written and the topology guarantee holds;
 A batch goes on past inputs it cannot read and exits with the worst status
 of its inputs: 1 if any failed, else 2 if any lacks the guarantee, else 0.
 
-Threads: set VTK_SMP_BACKEND_IN_USE=STDThread to use all cores.
+Threads: VTK's STDThread backend unless VTK_SMP_BACKEND_IN_USE names
+another (Sequential runs on one thread whatever --threads says); the report
+says how many threads ran.
 )";
 
 namespace
@@ -166,6 +170,14 @@ std::string ParseOption(const std::string& a, const std::vector<std::string>& ar
       return "--max-depth needs an integer from 0 to 40";
     }
     o.MaxDepth = static_cast<int>(x);
+  }
+  else if (a == "--threads")
+  {
+    if (!value(v) || !ParseDecimal(v, x) || x < 1 || x > 4096 || x != static_cast<int>(x))
+    {
+      return "--threads needs an integer from 1 to 4096";
+    }
+    o.Threads = static_cast<int>(x);
   }
   else if (a == "--max-cells")
   {

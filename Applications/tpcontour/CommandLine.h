@@ -28,6 +28,8 @@ struct Options
   long long MaxCells = 10000000;
   bool FillHoles = false;
   bool SplitCreases = false; ///< the filter's SplitCreases (crisp shading)
+  /// Threads to run on; 0: VTK's default, every processor.
+  int Threads = 0;
   bool Json = false, Quiet = false, Help = false;
 };
 

@@ -8,6 +8,7 @@
 #include "vtkHyperTreeGrid.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 #include "vtkSTLWriter.h"
 #include "vtkXMLHyperTreeGridWriter.h"
 #include "vtkXMLPolyDataWriter.h"
@@ -127,6 +128,8 @@ RunReport RunContour(const Options& o, const RunFiles& files, const std::string&
   const auto start = std::chrono::steady_clock::now();
   filter->Update();
   report.Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  report.Backend = vtkSMPTools::GetBackend();
+  report.Threads = vtkSMPTools::GetEstimatedNumberOfThreads();
   log.ClearProgressBar();
   if (!o.Quiet)
   {

@@ -82,7 +82,8 @@ std::string TextReport(const RunReport& r)
     << "Hausdorff bound      " << Number(r.HausdorffBound, "not proven") << " (tolerance " << r.AbsoluteTolerance
     << ")\n"
     << "triangles            " << r.Triangles << "\n"
-    << "seconds              " << r.Seconds << "\n"
+    << "seconds              " << r.Seconds << " (" << r.Threads << (r.Threads == 1 ? " thread, " : " threads, ")
+    << r.Backend << ")\n"
     << "wrote " << r.Surface << (r.Grid.empty() ? "" : " and " + r.Grid) << "\n";
   return t.str();
 }
@@ -107,6 +108,7 @@ std::string JsonReport(const RunReport& r)
       << ",\n  \"unresolved_cells\": " << r.UnresolvedCells
       << ",\n  \"hausdorff_bound\": " << Number(r.HausdorffBound, "null") << ",\n  \"triangles\": " << r.Triangles
       << ",\n  \"grid_cells\": " << r.GridCells << ",\n  \"seconds\": " << r.Seconds
+      << ",\n  \"threads\": " << r.Threads << ",\n  \"smp_backend\": " << JsonString(r.Backend)
       << ",\n  \"surface\": " << JsonString(r.Surface)
       << ",\n  \"grid\": " << (r.Grid.empty() ? "null" : JsonString(r.Grid));
   }

@@ -26,6 +26,9 @@ struct RunReport
   bool Closed = false, Manifold = false, Embedded = false, Guaranteed = false;
   long long Triangles = 0, GridCells = 0;
   double Seconds = 0;
+  /// VTK's SMP backend and how many threads it ran the loops on.
+  std::string Backend;
+  int Threads = 1;
   std::string Surface, Grid;
 
   /// Copies the topology report from the surface's field data.

@@ -7,6 +7,9 @@
 #include "RunContour.h"
 #include "RunReport.h"
 
+#include "vtkSMPTools.h"
+
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 
@@ -18,6 +21,20 @@ int Fail(const std::string& message)
 {
   std::cerr << "tpcontour: " << message << "\n";
   return 1;
+}
+
+/// Runs the filter's loops on `threads` threads (0: every processor). A
+/// command-line run owns its process, so unlike the filter in a pipeline it
+/// chooses VTK's backend: STDThread (ParaView's VTK defaults to Sequential,
+/// which would leave every core but one idle), unless VTK_SMP_BACKEND_IN_USE
+/// names one.
+void UseThreads(int threads)
+{
+  if (!std::getenv("VTK_SMP_BACKEND_IN_USE"))
+  {
+    vtkSMPTools::SetBackend("STDThread"); // (false where unavailable: Sequential stays)
+  }
+  vtkSMPTools::Initialize(threads);
 }
 
 /// The inputs combined into one surface.
@@ -70,5 +87,6 @@ int main(int argc, char* argv[])
     std::cout << Help;
     return 0;
   }
+  UseThreads(options.Threads);
   return options.Batch ? RunBatch(options) : RunOnce(options);
 }

@@ -74,7 +74,8 @@ def write(writer, mesh, name):
 code, out, _ = run("--help")
 check(code == 0 and all(o in out for o in ("--output", "--grid", "--operation", "--batch", "--output-dir",
                                            "--format", "--grids", "--tolerance", "--absolute-tolerance",
-                                           "--max-depth", "--json", "1/64", "Exit status", "worst")),
+                                           "--max-depth", "--threads", "--json", "1/64", "Exit status",
+                                           "worst")),
       "--help documents the options")
 
 # Every input format gives knot1's topology (genus 1), guaranteed.
@@ -127,6 +128,30 @@ fraction = json.loads(out) if code == 0 else {}
 decimal = json.loads(run(inputs["vtp"], "-t", "0.03125", "--json", "-o", "decimal.vtp")[1])
 check(code == 0 and fraction.get("absolute_tolerance") == decimal["absolute_tolerance"]
       and fraction.get("triangles") == decimal["triangles"], "-t 1/32 is -t 0.03125")
+
+# Threads: every processor by default, on STDThread even where the environment
+# names no backend (ParaView's VTK would run on one); --threads sets the
+# number (VTK's STDThread runs at most one per processor),
+# VTK_SMP_BACKEND_IN_USE=Sequential runs on one; the same surface on any
+# number.
+no_backend = {k: v for k, v in os.environ.items() if k != "VTK_SMP_BACKEND_IN_USE"}
+threaded = {}
+for label, args, env in (("default", [], no_backend), ("1", ["--threads", "1"], no_backend),
+                         ("3", ["--threads", "3"], no_backend),
+                         ("sequential", ["--threads", "3"], dict(no_backend, VTK_SMP_BACKEND_IN_USE="Sequential"))):
+    p = subprocess.run([tpcontour, inputs["off"], "-t", "1/32", "--json", "-o", f"threads-{label}.stl", *args],
+                       capture_output=True, text=True, env=env)
+    threaded[label] = json.loads(p.stdout) if p.returncode == 0 else {}
+check(threaded["default"].get("smp_backend") == "STDThread"
+      and threaded["default"].get("threads") == os.cpu_count()
+      and threaded["1"].get("threads") == 1 and threaded["3"].get("threads") == min(3, os.cpu_count())
+      and threaded["sequential"].get("smp_backend") == "Sequential" and threaded["sequential"].get("threads") == 1,
+      "threads: " + ", ".join(f"{k} {v.get('smp_backend')} x {v.get('threads')}" for k, v in threaded.items()))
+surfaces = {label: open(f"threads-{label}.stl", "rb").read() for label in threaded}
+check(len(set(surfaces.values())) == 1 and len(surfaces["3"]) > 1000, "the same surface on one thread, three, every processor and Sequential")
+for bad in ("0", "x", "1.5"):
+    code, _, err = run(inputs["off"], "--threads", bad)
+    check(code == 1 and "--threads needs an integer" in err, f"--threads {bad} is refused")
 
 # Absolute tolerance and the text report.
 code, out, _ = run(inputs["vtp"], "--absolute-tolerance", "0.05", "-o", "abs.vtp")
