@@ -31,5 +31,8 @@ import sys; sys.path.insert(0, '$prefix/lib/python3/site-packages')
 from topologypreserving import vtkTopologyPreservingContour, vtkOFFReader
 print('installed Python package: imports')
 "
-"$prefix/bin/tpcontour" --help | grep -q -- "--operation"
+# (Its whole help first: grep -q stops reading at the first match, and with
+# pipefail a help longer than one pipe write would then fail on SIGPIPE.)
+help=$("$prefix/bin/tpcontour" --help)
+grep -q -- "--operation" <<< "$help"
 echo "installed tpcontour: runs"
