@@ -108,7 +108,7 @@ bool CreaseFanWithinTolerance(const QuadricCellError& bound, const Vec3& apex, c
 } // namespace
 
 McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& prims,
-  double tolerance, int faceRefinementLevels, bool provenFailuresFirst)
+  double tolerance, int faceRefinementLevels, bool provenFailuresFirst, PolygonSet* surfaceScratch)
 {
   McCompatibility v;
   v.Kind = McVerdict::Split;
@@ -164,8 +164,13 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   // S_C, for the prediction; a spoke of every fan it could be made with that
   // strays beyond the tolerance fails it before the costlier tests
   // (MeshCellError.h: Spokes).
-  const std::vector<ConvexPolygon> meshSurface =
-    meshBounded ? SurfaceInCell(*LoneMeshLeaf(*expression), prims, box) : std::vector<ConvexPolygon>();
+  PolygonSet ownSurface;
+  PolygonSet& meshSurface = surfaceScratch ? *surfaceScratch : ownSurface;
+  meshSurface.clear();
+  if (meshBounded)
+  {
+    SurfaceInCell(*LoneMeshLeaf(*expression), prims, box, meshSurface);
+  }
   if (meshBounded && provenFailuresFirst &&
     SpokeStrays(*LoneMeshLeaf(*expression), prims, box, mask, meshSurface, tolerance))
   {

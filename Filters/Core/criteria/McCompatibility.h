@@ -5,6 +5,7 @@
 
 #include "AdaptiveOctree.h"
 #include "BoundaryLoops.h"
+#include "ConvexPolygons.h"
 
 #include <cmath>
 #include <utility>
@@ -90,8 +91,10 @@ constexpr int FaceRefinementLevels = 10;
 /// one mesh is first checked for a spoke that rules out every fan, and its
 /// prediction probes its fan before the branch and bound (MeshCellError.h:
 /// Spokes, Probes; SubdivisionParameters::ProvenFailuresFirst).
+/// `surfaceScratch`: where S_C is built (a buffer reused across cells,
+/// ScratchPool.h); null for one of its own.
 McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   const PrimitiveSet& primitives, double tolerance, int faceRefinementLevels = FaceRefinementLevels,
-  bool provenFailuresFirst = true);
+  bool provenFailuresFirst = true, PolygonSet* surfaceScratch = nullptr);
 
 } // namespace tpc

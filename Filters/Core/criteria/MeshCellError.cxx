@@ -16,12 +16,14 @@ namespace tpc
 namespace
 {
 /// The part of the polygon `points` with x[axis] <= value (`below`) or >=
-/// value (Sutherland-Hodgman); new points get exactly x[axis] = value.
-std::vector<Vec3> ClipToHalfSpace(const std::vector<Vec3>& points, int axis, double value, bool below)
+/// value (Sutherland-Hodgman) in `out`; new points get exactly x[axis] =
+/// value.
+template <std::size_t Capacity>
+void ClipToHalfSpace(const BoundedVector<Vec3, Capacity>& points, BoundedVector<Vec3, Capacity>& out, int axis,
+  double value, bool below)
 {
-  std::vector<Vec3> out;
+  out.clear();
   const std::size_t m = points.size();
-  out.reserve(m + 1); // (a convex polygon gains at most one vertex)
   const auto kept = [&](const Vec3& p) { return below ? p[axis] <= value : p[axis] >= value; };
   for (std::size_t i = 0; i < m; ++i)
   {
@@ -39,15 +41,18 @@ std::vector<Vec3> ClipToHalfSpace(const std::vector<Vec3>& points, int axis, dou
       out.push_back(p);
     }
   }
-  return out;
 }
 
-/// The polygon `points` clipped to the closed box (possibly degenerate). A
-/// side the polygon lies within is skipped, one it lies beyond empties it:
-/// what clipping would give, without building it (most triangles of a cell
-/// cross no side or one).
-std::vector<Vec3> ClipToBox(std::vector<Vec3> points, const Box3& box)
+/// The polygon `points` clipped to the closed box (possibly degenerate), in
+/// place: a convex polygon gains at most one corner per side (and rounding
+/// rarely one more: ClippedCorners), so Capacity must exceed its count by 6
+/// and some. A side the polygon lies within is skipped, one it lies beyond
+/// empties it: what clipping would give, without building it (most triangles
+/// of a cell cross no side or one).
+template <std::size_t Capacity>
+void ClipToBox(BoundedVector<Vec3, Capacity>& points, const Box3& box)
 {
+  BoundedVector<Vec3, Capacity> clipped;
   for (int axis = 0; axis < 3 && !points.empty(); ++axis)
   {
     double lo = points[0][axis], hi = lo;
@@ -58,18 +63,20 @@ std::vector<Vec3> ClipToBox(std::vector<Vec3> points, const Box3& box)
     }
     if (lo > box.hi[axis] || hi < box.lo[axis])
     {
-      return {};
+      points.clear();
+      return;
     }
     if (hi > box.hi[axis])
     {
-      points = ClipToHalfSpace(points, axis, box.hi[axis], true);
+      ClipToHalfSpace(points, clipped, axis, box.hi[axis], true);
+      points = clipped;
     }
     if (lo < box.lo[axis] && !points.empty())
     {
-      points = ClipToHalfSpace(points, axis, box.lo[axis], false);
+      ClipToHalfSpace(points, clipped, axis, box.lo[axis], false);
+      points = clipped;
     }
   }
-  return points;
 }
 
 /// Pieces the subdivision's prediction may examine per direction (a cell
@@ -144,7 +151,7 @@ Box3 TileBox(const RootGrid& grid, const CellBoundary& boundary, int f, const Fa
 
 /// Whether some polygon of `surface` is within `reach` of `p` (its box
 /// first: a lower bound of the distance).
-bool WithinReach(const std::vector<ConvexPolygon>& surface, const Vec3& p, double reach)
+bool WithinReach(const PolygonSet& surface, const Vec3& p, double reach)
 {
   for (const ConvexPolygon& q : surface)
   {
@@ -161,7 +168,7 @@ bool WithinReach(const std::vector<ConvexPolygon>& surface, const Vec3& p, doubl
 /// prediction's bounds before their branch and bound (header: Probes): its
 /// centroid or an edge's midpoint farther from S_C than the tolerance minus
 /// chordDelta[k], plus twice the slack.
-bool FanPointStrays(const std::vector<ConvexPolygon>& surface, const std::vector<SourceTriangle>& fan,
+bool FanPointStrays(const PolygonSet& surface, const std::vector<SourceTriangle>& fan,
   const std::vector<double>& chordDelta, double slack, double tolerance)
 {
   for (std::size_t k = 0; k < fan.size(); ++k)
@@ -181,24 +188,32 @@ bool FanPointStrays(const std::vector<ConvexPolygon>& surface, const std::vector
 }
 } // namespace
 
-std::vector<ConvexPolygon> SurfaceInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives,
+PolygonSet SurfaceInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives,
   const Box3& cell)
 {
-  const MeshSolid& mesh = primitives.Meshes[leaf.Primitive];
-  std::vector<ConvexPolygon> surface;
-  surface.reserve(leaf.Triangles->size());
-  for (const std::uint32_t t : *leaf.Triangles)
-  {
-    std::vector<Vec3> clipped = ClipToBox({ mesh.Vertex(t, 0), mesh.Vertex(t, 1), mesh.Vertex(t, 2) }, cell);
-    if (!clipped.empty())
-    {
-      surface.push_back(MakeConvexPolygon(std::move(clipped)));
-    }
-  }
+  PolygonSet surface;
+  SurfaceInCell(leaf, primitives, cell, surface);
   return surface;
 }
 
-Vec3 MeshCellApex(const std::vector<ConvexPolygon>& surface, const Box3& cell)
+void SurfaceInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell, PolygonSet& surface)
+{
+  const MeshSolid& mesh = primitives.Meshes[leaf.Primitive];
+  surface.clear();
+  // (Most triangles of a cell lie in it whole: three corners each.)
+  surface.reserve(leaf.Triangles->size(), 3 * leaf.Triangles->size());
+  for (const std::uint32_t t : *leaf.Triangles)
+  {
+    ClippedCorners clipped{ mesh.Vertex(t, 0), mesh.Vertex(t, 1), mesh.Vertex(t, 2) };
+    ClipToBox(clipped, cell);
+    if (!clipped.empty())
+    {
+      surface.Add(clipped.data(), clipped.size());
+    }
+  }
+}
+
+Vec3 MeshCellApex(const PolygonSet& surface, const Box3& cell)
 {
   Vec3 centroid;
   double weight = 0.0;
@@ -234,14 +249,22 @@ Vec3 MeshCellApex(const std::vector<ConvexPolygon>& surface, const Box3& cell)
   return cell.Shrunk(1.0 / 32.0).Clamp(centroid + delta);
 }
 
-double ChordDeviation(const std::vector<ConvexPolygon>& surface, const Box3& tile, const Vec3& a, const Vec3& b)
+double ChordDeviation(const PolygonSet& surface, const Box3& tile, const Vec3& a, const Vec3& b)
 {
   double deviation = 0.0;
   for (const ConvexPolygon& q : surface)
   {
     if (q.Bounds.Overlaps(tile))
     {
-      for (const Vec3& p : ClipToBox(q.Points, tile))
+      // (S_C's polygons have at most ClippedCorners' corners; one more per
+      // side of the tile, and some.)
+      BoundedVector<Vec3, 2 * ClippedCorners::capacity()> clipped;
+      for (const Vec3& p : q.Points)
+      {
+        clipped.push_back(p);
+      }
+      ClipToBox(clipped, tile);
+      for (const Vec3& p : clipped)
       {
         deviation = std::max(deviation, SegmentDistance(p, a, b));
       }
@@ -256,7 +279,7 @@ double RoundingSlack(const CsgLeaf& leaf, const PrimitiveSet& primitives, const 
   return 4096.0 * DBL_EPSILON * magnitude + 1e-12 * cell.Diagonal();
 }
 
-HausdorffEstimate CertifiedMeshPatchError(const std::vector<ConvexPolygon>& surface,
+HausdorffEstimate CertifiedMeshPatchError(const PolygonSet& surface,
   const std::vector<SourceTriangle>& patch, double slack, double enough, double giveUp, std::size_t budget,
   const std::vector<double>* patchOffsets)
 {
@@ -284,10 +307,11 @@ HausdorffEstimate CertifiedMeshPatchError(const std::vector<ConvexPolygon>& surf
       pieces.push_back({ q.Points.front(), q.Points.back(), q.Points.back() });
     }
   }
-  std::vector<ConvexPolygon> targets;
+  PolygonSet targets;
+  targets.reserve(patch.size(), 3 * patch.size());
   for (const SourceTriangle& t : patch)
   {
-    targets.push_back(MakeConvexPolygon({ t[0], t[1], t[2] }));
+    targets.Add({ t[0], t[1], t[2] });
   }
   const HausdorffEstimate toPatch =
     OneSidedHausdorff(pieces, targets, enough - slack, giveUp - slack, budget, { nullptr, patchOffsets });
@@ -299,7 +323,7 @@ HausdorffEstimate CertifiedMeshPatchError(const std::vector<ConvexPolygon>& surf
 
 double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSet& primitives,
   const RootGrid& grid, const Box3& cell, const CellBoundary& boundary, const BoundaryLoopSet& loops,
-  double tolerance, AdaptiveOctree::MeshCellPrediction& prediction, const std::vector<ConvexPolygon>* given,
+  double tolerance, AdaptiveOctree::MeshCellPrediction& prediction, const PolygonSet* given,
   bool probesFirst)
 {
   prediction = AdaptiveOctree::MeshCellPrediction();
@@ -308,8 +332,8 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
   {
     return HUGE_VAL;
   }
-  const std::vector<ConvexPolygon> computed = given ? std::vector<ConvexPolygon>() : SurfaceInCell(*leaf, primitives, cell);
-  const std::vector<ConvexPolygon>& surface = given ? *given : computed;
+  const PolygonSet computed = given ? PolygonSet() : SurfaceInCell(*leaf, primitives, cell);
+  const PolygonSet& surface = given ? *given : computed;
   const std::vector<Crossing>& loop = loops.Crossings;
   const std::size_t m = loop.size();
   std::vector<Vec3> points(m);
@@ -426,7 +450,7 @@ constexpr double WellCrossed = 1e-3;
 } // namespace
 
 bool SpokeStrays(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell, unsigned insideCorners,
-  const std::vector<ConvexPolygon>& surface, double tolerance)
+  const PolygonSet& surface, double tolerance)
 {
   if (surface.empty() || !leaf.Triangles)
   {

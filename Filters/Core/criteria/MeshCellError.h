@@ -151,19 +151,21 @@ namespace tpc
 
 /// S_C: each listed triangle of the lone mesh leaf (LoneMeshLeaf,
 /// ExactCellCriterion.h) clipped to `cell` (the empty clips dropped).
-std::vector<ConvexPolygon> SurfaceInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives,
+PolygonSet SurfaceInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives,
   const Box3& cell);
+/// The same in `surface` (cleared first; its memory is reused: ScratchPool.h).
+void SurfaceInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell, PolygonSet& surface);
 
 /// The fan's apex: the point nearest to S_C's planes (least squares, area
 /// weighted, as Dual Contouring places vertices: on a crease or corner of S it
 /// lands on it), flat directions left at S_C's area centroid; kept 1/32 of the
 /// cell's width inside it, so strictly inside (the fan is then embedded,
 /// LoopTriangulation.h).
-Vec3 MeshCellApex(const std::vector<ConvexPolygon>& surface, const Box3& cell);
+Vec3 MeshCellApex(const PolygonSet& surface, const Box3& cell);
 
 /// max over S ∩ tile of the distance to the chord [a, b] (`tile` is a face
 /// tile, degenerate along the face's axis).
-double ChordDeviation(const std::vector<ConvexPolygon>& surface, const Box3& tile, const Vec3& a, const Vec3& b);
+double ChordDeviation(const PolygonSet& surface, const Box3& tile, const Vec3& a, const Vec3& b);
 
 /// E(P) for the patch triangles `patch`: Upper (`slack` added) proven when <=
 /// `giveUp` (+inf beyond it, or when there is nothing to compare), Lower
@@ -172,7 +174,7 @@ double ChordDeviation(const std::vector<ConvexPolygon>& surface, const Box3& til
 /// `patchOffsets` (one per patch triangle: its chord's delta, >= 0), the
 /// per-chord bound of E(P') instead (header); Lower is then a value the
 /// offset distances attain, not a distance.
-HausdorffEstimate CertifiedMeshPatchError(const std::vector<ConvexPolygon>& surface,
+HausdorffEstimate CertifiedMeshPatchError(const PolygonSet& surface,
   const std::vector<SourceTriangle>& patch, double slack, double enough, double giveUp,
   std::size_t budget = 4096, const std::vector<double>* patchOffsets = nullptr);
 
@@ -201,7 +203,7 @@ double RoundingSlack(const CsgLeaf& leaf, const PrimitiveSet& primitives, const 
 double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSet& primitives,
   const RootGrid& grid, const Box3& cell, const CellBoundary& boundary, const BoundaryLoopSet& loops,
   double tolerance, AdaptiveOctree::MeshCellPrediction& prediction,
-  const std::vector<ConvexPolygon>* surface = nullptr, bool probesFirst = true);
+  const PolygonSet* surface = nullptr, bool probesFirst = true);
 
 /// Whether a spoke of the fan over every loop the tests could trace in
 /// `cell` strays farther than `tolerance` from S_C `surface` (header:
@@ -209,7 +211,7 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
 /// c of the cell (bit a of c: the upper end along axis a) is inside the
 /// solid when bit c of `insideCorners` is set (the exact signs).
 bool SpokeStrays(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell, unsigned insideCorners,
-  const std::vector<ConvexPolygon>& surface, double tolerance);
+  const PolygonSet& surface, double tolerance);
 
 /// Whether the final loop `final` holds every point of the cell's own loop
 /// `own` in the same cyclic order (up to rounding): then each chord ab of

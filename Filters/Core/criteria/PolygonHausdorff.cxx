@@ -22,20 +22,6 @@ double BoxDistance2(const Box3& a, const Box3& b)
   return sum;
 }
 
-Box3 BoundsOf(const Vec3* points, std::size_t count)
-{
-  Box3 box{ points[0], points[0] };
-  for (std::size_t i = 1; i < count; ++i)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      box.lo[k] = std::min(box.lo[k], points[i][k]);
-      box.hi[k] = std::max(box.hi[k], points[i][k]);
-    }
-  }
-  return box;
-}
-
 /// A piece of a source triangle. Its candidates - the targets that may be
 /// nearest to one of its points - are Count entries of the branch and
 /// bound's candidate arena from First (one buffer for all pieces, reused
@@ -102,7 +88,7 @@ namespace
 /// the scratch reused across pieces.
 struct Targets
 {
-  const std::vector<ConvexPolygon>& Polygons;
+  const PolygonSet& Polygons;
   std::vector<Box3>& Boxes;
   /// A piece's candidates with their squared box distances.
   std::vector<std::pair<double, std::uint32_t>>& InReach;
@@ -163,13 +149,12 @@ void Evaluate(
   // that far rules the target out of the single-target bound, which for a
   // piece much larger than the targets is most of them.)
   const auto visit = [&](std::uint32_t t) {
-    const ConvexPolygon& target = targets.Polygons[t];
     const double offset = targets.OffsetOf(t);
     double boxDistance2Of[3];
     double farthestBox2 = 0.0;
     for (int i = 0; i < 3; ++i)
     {
-      boxDistance2Of[i] = target.Bounds.Distance2(piece.Vertices[i]);
+      boxDistance2Of[i] = targets.Boxes[t].Distance2(piece.Vertices[i]);
       farthestBox2 = std::max(farthestBox2, boxDistance2Of[i]);
     }
     bool improvesSingle = CloserThan(farthestBox2, offset, single);
@@ -181,7 +166,7 @@ void Evaluate(
       {
         continue;
       }
-      const double d = PolygonDistance(piece.Vertices[i], target) + offset;
+      const double d = targets.Polygons.Distance(piece.Vertices[i], t) + offset;
       nearest[i] = std::min(nearest[i], d);
       farthest = std::max(farthest, d);
       improvesSingle = improvesSingle && farthest < single;
@@ -253,84 +238,8 @@ void Evaluate(
 }
 } // namespace
 
-ConvexPolygon MakeConvexPolygon(std::vector<Vec3> points)
-{
-  ConvexPolygon polygon;
-  polygon.Points = std::move(points);
-  Vec3 normal;
-  const std::size_t m = polygon.Points.size();
-  for (std::size_t i = 0; i < m; ++i)
-  {
-    normal += Cross(polygon.Points[i], polygon.Points[(i + 1) % m]);
-  }
-  const double length = Norm(normal);
-  polygon.Normal = length > 0.0 ? normal * (1.0 / length) : Vec3();
-  polygon.TwiceArea = length;
-  polygon.Bounds = m ? BoundsOf(polygon.Points.data(), m) : Box3{};
-  if (m >= 3 && length > 0.0)
-  {
-    polygon.Inward.resize(m);
-    for (std::size_t i = 0; i < m; ++i)
-    {
-      polygon.Inward[i] = Cross(polygon.Normal, polygon.Points[(i + 1) % m] - polygon.Points[i]);
-    }
-  }
-  return polygon;
-}
-
-namespace
-{
-/// Squared distance from `p` to the segment [a, b].
-double SegmentDistance2(const Vec3& p, const Vec3& a, const Vec3& b)
-{
-  const Vec3 ab = b - a;
-  const double length2 = Dot(ab, ab);
-  const double t = length2 > 0.0 ? std::clamp(Dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
-  const Vec3 d = p - (a + ab * t);
-  return Dot(d, d);
-}
-} // namespace
-
-double SegmentDistance(const Vec3& p, const Vec3& a, const Vec3& b)
-{
-  return std::sqrt(SegmentDistance2(p, a, b));
-}
-
-double PolygonDistance(const Vec3& p, const ConvexPolygon& polygon)
-{
-  const std::vector<Vec3>& v = polygon.Points;
-  const std::size_t m = v.size();
-  if (m == 1)
-  {
-    return Norm(p - v[0]);
-  }
-  if (!polygon.Inward.empty())
-  {
-    // Inside the polygon's prism: the distance to its plane. Outside it, the
-    // nearest point of a convex polygon lies on an edge whose line has p's
-    // projection on its outer side (a nearest vertex has such an edge too):
-    // only those edges are measured. (Inward is normal to the polygon's
-    // normal, so p's side of an edge is its projection's.)
-    double d2 = HUGE_VAL;
-    for (std::size_t i = 0; i < m; ++i)
-    {
-      if (Dot(p - v[i], polygon.Inward[i]) < 0.0)
-      {
-        d2 = std::min(d2, SegmentDistance2(p, v[i], v[(i + 1) % m]));
-      }
-    }
-    return d2 == HUGE_VAL ? std::fabs(Dot(p - v[0], polygon.Normal)) : std::sqrt(d2);
-  }
-  double d2 = HUGE_VAL;
-  for (std::size_t i = 0; i < m; ++i)
-  {
-    d2 = std::min(d2, SegmentDistance2(p, v[i], v[(i + 1) % m]));
-  }
-  return std::sqrt(d2);
-}
-
 HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
-  const std::vector<ConvexPolygon>& targets, double enough, double giveUp, std::size_t budget,
+  const PolygonSet& targets, double enough, double giveUp, std::size_t budget,
   const DistanceOffsets& offsets)
 {
   HausdorffEstimate estimate;

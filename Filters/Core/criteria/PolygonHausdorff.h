@@ -39,6 +39,7 @@
 // slack (MeshCellError.h).
 #pragma once
 
+#include "ConvexPolygons.h"
 #include "Vector3.h"
 
 #include <array>
@@ -48,30 +49,8 @@
 namespace tpc
 {
 
-/// A convex polygon in a plane (vertices in order; a segment or a point when
-/// degenerate).
-struct ConvexPolygon
-{
-  std::vector<Vec3> Points;
-  Vec3 Normal; ///< unit, from the vertex order (Newell); zero when degenerate
-  double TwiceArea = 0.0; ///< the Newell vector's length
-  Box3 Bounds;
-  /// Normal x (edge from Points[i] to Points[i + 1]): points into the polygon
-  /// within its plane (empty when degenerate).
-  std::vector<Vec3> Inward;
-};
-
-/// The polygon with `points` (convex, planar, in order) and its normal and box.
-ConvexPolygon MakeConvexPolygon(std::vector<Vec3> points);
-
-/// Distance from `p` to the segment [a, b].
-double SegmentDistance(const Vec3& p, const Vec3& a, const Vec3& b);
-
 /// max over the triangle of the distance to its nearest vertex (rounded up).
 double CoveringRadius(const std::array<Vec3, 3>& triangle);
-
-/// Distance from `p` to the polygon (its interior included).
-double PolygonDistance(const Vec3& p, const ConvexPolygon& polygon);
 
 using SourceTriangle = std::array<Vec3, 3>;
 
@@ -92,7 +71,7 @@ struct DistanceOffsets
 /// Bounds h(sources, targets) as above (with `offsets`, the offset distance);
 /// Upper is +inf when there are sources but no targets.
 HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
-  const std::vector<ConvexPolygon>& targets, double enough, double giveUp, std::size_t budget = 4096,
+  const PolygonSet& targets, double enough, double giveUp, std::size_t budget = 4096,
   const DistanceOffsets& offsets = {});
 
 } // namespace tpc

@@ -34,7 +34,7 @@ double CertifiedPatchError(const QuadricCellError& bound, const CellPatches& pat
   return error <= bound.Margin ? error : HUGE_VAL;
 }
 
-HausdorffEstimate CertifiedMeshCellError(const std::vector<ConvexPolygon>& surface, const CellPatches& patches,
+HausdorffEstimate CertifiedMeshCellError(const PolygonSet& surface, const CellPatches& patches,
   const TriangleMesh& mesh, double slack, double enough, double giveUp, std::size_t budget)
 {
   return CertifiedMeshPatchError(surface, PatchTriangles(patches, mesh), slack, enough, giveUp, budget);

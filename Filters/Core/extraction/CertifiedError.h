@@ -24,7 +24,7 @@ double CertifiedPatchError(const QuadricCellError& bound, const CellPatches& pat
 
 /// E(P) of MeshCellError.h for the cell's `patches` against `surface` (S in
 /// the cell): CertifiedMeshPatchError on the patch's triangles.
-HausdorffEstimate CertifiedMeshCellError(const std::vector<ConvexPolygon>& surface, const CellPatches& patches,
+HausdorffEstimate CertifiedMeshCellError(const PolygonSet& surface, const CellPatches& patches,
   const TriangleMesh& mesh, double slack, double enough, double giveUp, std::size_t budget);
 
 } // namespace tpc

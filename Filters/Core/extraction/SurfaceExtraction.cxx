@@ -5,6 +5,7 @@
 #include "CrackPatching.h"
 #include "CrossingVertices.h"
 #include "ExactCellCriterion.h"
+#include "ScratchPool.h"
 
 #include <algorithm>
 #include <cmath>
@@ -167,11 +168,11 @@ double FirstCertificateAim(const AdaptiveOctree& tree)
                                           : std::min(std::max(1.1 * attained, 0.25 * tolerance), tolerance);
 }
 
-/// S in leaf `n`, which is one mesh's (MeshCellError.h).
-std::vector<ConvexPolygon> MeshInCell(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& prims)
+/// S in leaf `n`, which is one mesh's (MeshCellError.h), in `surface`.
+void MeshInCell(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& prims, PolygonSet& surface)
 {
   const OctreeNode& node = tree.Nodes[n];
-  return SurfaceInCell(*LoneMeshLeaf(*tree.Expressions[n]), prims, tree.Grid.CellBox(node.Level, node.Ijk));
+  SurfaceInCell(*LoneMeshLeaf(*tree.Expressions[n]), prims, tree.Grid.CellBox(node.Level, node.Ijk), surface);
 }
 
 /// A mesh cell larger than the tolerance (its prediction `prediction`)
@@ -186,7 +187,7 @@ std::vector<ConvexPolygon> MeshInCell(const AdaptiveOctree& tree, std::uint32_t 
 /// third crease the diagonals would cut by more is kept sharp by the apex.
 /// False when the loop allows no such fan or it is not kept.
 bool MeshCellFromLoopPoint(const AdaptiveOctree& tree, std::uint32_t n, const BoundaryLoopSet& loops,
-  const CrossingVertices& vertices, const TriangleMesh& mesh, const std::vector<ConvexPolygon>& surface,
+  const CrossingVertices& vertices, const TriangleMesh& mesh, const PolygonSet& surface,
   double slack, double aim, const AdaptiveOctree::MeshCellPrediction& prediction, CellPatches& patches,
   CellCertificate& certificate)
 {
@@ -215,10 +216,10 @@ bool MeshCellFromLoopPoint(const AdaptiveOctree& tree, std::uint32_t n, const Bo
 /// Surface leaf `n`'s patches (CellPatches.h) and what they are certified to.
 /// A mesh cell's error is first bounded with a small budget of pieces
 /// (FirstCertificateBudget); RefineMeshCertificates refines the ones that
-/// matter.
+/// matter. `surface`: where S_C is built (ScratchPool.h).
 CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t n, const BoundaryLoopSet& loops,
   const PrimitiveSet& prims, const CrossingVertices& vertices, const TriangleMesh& mesh, bool predictionsHold,
-  double aim, CellPatches& patches)
+  double aim, CellPatches& patches, PolygonSet& surface)
 {
   const OctreeNode& node = tree.Nodes[n];
   const CsgExpression& expression = *tree.Expressions[n];
@@ -227,7 +228,7 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
   CellCertificate certificate;
   if (bounded && LoneMeshLeaf(expression))
   {
-    const std::vector<ConvexPolygon> surface = MeshInCell(tree, n, prims);
+    MeshInCell(tree, n, prims, surface);
     const auto prediction = tree.MeshCellPredictions.find(n);
     const double slack = RoundingSlack(*LoneMeshLeaf(expression), prims, box);
     certificate.Mesh = true;
@@ -300,8 +301,8 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
 /// threshold, so the result does not depend on the threads.
 bool RefineMeshCertificates(const AdaptiveOctree& tree, const std::vector<std::uint32_t>& cells,
   const std::vector<std::uint8_t>& own, const std::vector<CellPatches>& patches, const TriangleMesh& mesh,
-  const PrimitiveSet& prims, std::vector<CellCertificate>& certificates, const ParallelFor& parallelFor,
-  const ProgressCallback& progress)
+  const PrimitiveSet& prims, std::vector<CellCertificate>& certificates, ScratchPool<PolygonSet>& surfaces,
+  const ParallelFor& parallelFor, const ProgressCallback& progress)
 {
   double attained = 0.0;
   std::vector<std::size_t> pending;
@@ -334,6 +335,7 @@ bool RefineMeshCertificates(const AdaptiveOctree& tree, const std::vector<std::u
         })
       : ProgressCallback();
     if (!ChunkedFor(last - first, Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
+          ScratchPool<PolygonSet>::Lease surface(surfaces);
           for (std::size_t k = first + begin; k < first + end; ++k)
           {
             CellCertificate& c = certificates[pending[k]];
@@ -343,7 +345,8 @@ bool RefineMeshCertificates(const AdaptiveOctree& tree, const std::vector<std::u
               const OctreeNode& node = tree.Nodes[n];
               const double slack = RoundingSlack(
                 *LoneMeshLeaf(*tree.Expressions[n]), prims, tree.Grid.CellBox(node.Level, node.Ijk));
-              const HausdorffEstimate e = CertifiedMeshCellError(MeshInCell(tree, n, prims), patches[pending[k]],
+              MeshInCell(tree, n, prims, *surface);
+              const HausdorffEstimate e = CertifiedMeshCellError(*surface, patches[pending[k]],
                 mesh, slack, enough, std::min(c.Bound, tree.HausdorffTolerance), 4096);
               c.Error = std::min(c.Error, e.Upper);
               c.Lower = std::max(c.Lower, e.Lower);
@@ -421,7 +424,9 @@ ExtractionResult ExtractSurface(const AdaptiveOctree& tree, const ImplicitScene&
   const bool predictionsHold = std::none_of(cells.begin(), cells.end(),
     [&](std::uint32_t n) { return tree.Nodes[n].State == CellState::Unresolved; });
   const double aim = FirstCertificateAim(tree);
+  ScratchPool<PolygonSet> surfaces; // (S_C of the mesh cells, MeshCellError.h)
   if (!ChunkedFor(cells.size(), Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
+        ScratchPool<PolygonSet>::Lease surface(surfaces);
         for (std::size_t i = begin; i < end; ++i)
         {
           if (own[i] && tree.Nodes[cells[i]].State == CellState::Exact)
@@ -432,12 +437,12 @@ ExtractionResult ExtractSurface(const AdaptiveOctree& tree, const ImplicitScene&
           {
             certificates[i] =
               TriangulateSurfaceCell(tree, cells[i], loops[i], prims, vertices, mesh, predictionsHold, aim,
-                patches[i]);
+                patches[i], *surface);
           }
         }
       }, ProgressRange(progress, 0.7, 0.9)) ||
-    !RefineMeshCertificates(
-      tree, cells, own, patches, mesh, prims, certificates, parallelFor, ProgressRange(progress, 0.9, 0.95)))
+    !RefineMeshCertificates(tree, cells, own, patches, mesh, prims, certificates, surfaces, parallelFor,
+      ProgressRange(progress, 0.9, 0.95)))
   {
     result.Aborted = true;
     return result;

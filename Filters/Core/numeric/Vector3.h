@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 
 namespace tpc
 {
@@ -144,6 +145,21 @@ struct Box3
     return { (c & 1) ? hi[0] : lo[0], (c & 2) ? hi[1] : lo[1], (c & 4) ? hi[2] : lo[2] };
   }
 };
+
+/// The box of `count` >= 1 points (their exact minima and maxima).
+inline Box3 BoundsOf(const Vec3* points, std::size_t count)
+{
+  Box3 box{ points[0], points[0] };
+  for (std::size_t i = 1; i < count; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      box.lo[k] = std::min(box.lo[k], points[i][k]);
+      box.hi[k] = std::max(box.hi[k], points[i][k]);
+    }
+  }
+  return box;
+}
 
 /// Splits a box at its midpoint along its non-degenerate axes (8 pieces for a
 /// voxel, 4 for a face, 2 for an edge); returns how many pieces were written.

@@ -16,7 +16,7 @@ CellState StateOf(RegionSign s)
 } // namespace
 
 CellTests TestCell(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& primitives,
-  const SubdivisionParameters& parameters, const LevelLimits& limits)
+  const SubdivisionParameters& parameters, const LevelLimits& limits, PolygonSet* surfaceScratch)
 {
   CellTests tests;
   const CsgExpression& expression = *tree.Expressions[n];
@@ -29,7 +29,7 @@ CellTests TestCell(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveS
   tests.Verdict = TestMcCompatibility(tree, n, primitives, parameters.HausdorffTolerance,
     keepsOnFailure ? std::min(levels, ExactCellFaceRefinementLevels) : levels,
     // (A cell stopped by a limit reports the test it fails: all of them run.)
-    parameters.ProvenFailuresFirst && !limits.AtDepthLimit && !limits.AtCellLimit);
+    parameters.ProvenFailuresFirst && !limits.AtDepthLimit && !limits.AtCellLimit, surfaceScratch);
   if (limits.ToleranceSize && tests.Verdict.Kind == McVerdict::Split)
   {
     tests.Facing = HasFacingSurfaces(expression, primitives, tree.Grid.CellBox(limits.Level, tree.Nodes[n].Ijk),

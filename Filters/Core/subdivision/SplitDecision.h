@@ -54,9 +54,10 @@ struct CellTests
   bool Touching = false;
 };
 
-/// Runs the tests of cell `n` (thread-safe: reads the tree only).
+/// Runs the tests of cell `n` (thread-safe: reads the tree only);
+/// `surfaceScratch` as TestMcCompatibility's.
 CellTests TestCell(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& primitives,
-  const SubdivisionParameters& parameters, const LevelLimits& limits);
+  const SubdivisionParameters& parameters, const LevelLimits& limits, PolygonSet* surfaceScratch = nullptr);
 
 /// Sets the state of cell `n` from its tests and counts it in `result` (its
 /// own trees' cells only, in a piece of a split run); true when the cell is

@@ -3,6 +3,7 @@
 #include "DistinctRecords.h"
 #include "ExactCellCriterion.h"
 #include "QuadricCellError.h"
+#include "ScratchPool.h"
 #include "SplitDecision.h"
 
 #include <algorithm>
@@ -115,6 +116,8 @@ private:
   int ExpectedLevels = 1;
   /// The cells of the current level that meet the surface, in node order.
   std::vector<std::uint32_t> Active;
+  /// Where the tests build S_C, reused from cell to cell and level to level.
+  ScratchPool<PolygonSet> SurfaceScratch;
 };
 
 /// The roots: one per tree, each with the scene's expression pruned to it;
@@ -294,9 +297,10 @@ bool LevelByLevel::TestCells(std::vector<CellTests>& tests)
   tests.resize(this->Active.size());
   const ProgressCallback progress = this->Within(0.2, 0.7);
   return ForEachChunk(this->Active.size(), Chunk, this->For, [&](std::size_t begin, std::size_t end) {
+    ScratchPool<PolygonSet>::Lease surface(this->SurfaceScratch);
     for (std::size_t i = begin; i < end; ++i)
     {
-      tests[i] = TestCell(tree, this->Active[i], this->Scene.Primitives, this->Parameters, this->Limits);
+      tests[i] = TestCell(tree, this->Active[i], this->Scene.Primitives, this->Parameters, this->Limits, &*surface);
     }
   }, [&](std::size_t first, std::size_t last) {
     for (std::size_t i = first; i < last; ++i)

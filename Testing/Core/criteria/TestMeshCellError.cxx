@@ -98,12 +98,12 @@ void BumpsUnderAFan(int n, std::vector<SourceTriangle>& bumps, std::vector<Sourc
   }
 }
 
-std::vector<ConvexPolygon> AsPolygons(const std::vector<SourceTriangle>& triangles)
+tpc::PolygonSet AsPolygons(const std::vector<SourceTriangle>& triangles)
 {
-  std::vector<ConvexPolygon> polygons;
+  tpc::PolygonSet polygons;
   for (const SourceTriangle& t : triangles)
   {
-    polygons.push_back(tpc::MakeConvexPolygon({ t[0], t[1], t[2] }));
+    polygons.Add({ t[0], t[1], t[2] });
   }
   return polygons;
 }
@@ -312,7 +312,12 @@ TEST(PolygonHausdorff, DistanceToAPolygonMatchesTheClosestPoint)
     const double angle = 2 * M_PI * k / 5;
     pentagon.push_back(Vec3(0.1, -0.2, 0.3) + u * std::cos(angle) * 0.7 + v * std::sin(angle) * 0.5);
   }
-  const ConvexPolygon polygon = tpc::MakeConvexPolygon(pentagon);
+  tpc::PolygonSet polygons;
+  polygons.Add(pentagon.data(), pentagon.size());
+  // Degenerate polygons: a segment and a point.
+  polygons.Add({ Vec3(0, 0, 0), Vec3(1, 0, 0) });
+  polygons.Add({ Vec3(0, 0, 0) });
+  const ConvexPolygon polygon = polygons[0];
   const tpc::MeshSolid fan(pentagon, { { 0, 1, 2 }, { 0, 2, 3 }, { 0, 3, 4 } });
   std::mt19937_64 rng(1);
   std::uniform_real_distribution<double> x(-1.5, 1.5);
@@ -321,10 +326,8 @@ TEST(PolygonHausdorff, DistanceToAPolygonMatchesTheClosestPoint)
     const Vec3 p(x(rng), x(rng), x(rng));
     EXPECT_NEAR(tpc::PolygonDistance(p, polygon), std::fabs(fan.ApproximateSignedDistance(p, { 0, 1, 2 })), 1e-12);
   }
-  // Degenerate polygons: a segment and a point.
-  const ConvexPolygon segment = tpc::MakeConvexPolygon({ Vec3(0, 0, 0), Vec3(1, 0, 0) });
-  EXPECT_NEAR(tpc::PolygonDistance(Vec3(0.5, 2, 0), segment), 2.0, 1e-15);
-  EXPECT_NEAR(tpc::PolygonDistance(Vec3(3, 0, 4), tpc::MakeConvexPolygon({ Vec3(0, 0, 0) })), 5.0, 1e-15);
+  EXPECT_NEAR(tpc::PolygonDistance(Vec3(0.5, 2, 0), polygons[1]), 2.0, 1e-15);
+  EXPECT_NEAR(tpc::PolygonDistance(Vec3(3, 0, 4), polygons[2]), 5.0, 1e-15);
 }
 
 TEST(PolygonHausdorff, CoveringRadiusIsTheFarthestAnyPointIsFromItsNearestVertex)
@@ -487,10 +490,10 @@ TEST(MeshCellError, ChordDeviationIsTheTraceFarthestFromTheChord)
   const std::vector<Vec3> points{ { 0, -1, -1 }, { 0.5, -1, 1 }, { 0, 2, -1 }, { 0.5, 2, 1 }, { 1, -1, -1 },
     { 1, 2, -1 } };
   const tpc::MeshSolid roof(points, { { 0, 1, 2 }, { 2, 1, 3 }, { 1, 4, 3 }, { 3, 4, 5 } });
-  std::vector<ConvexPolygon> surface;
+  tpc::PolygonSet surface;
   for (std::uint32_t t = 0; t < 4; ++t)
   {
-    surface.push_back(tpc::MakeConvexPolygon({ roof.Vertex(t, 0), roof.Vertex(t, 1), roof.Vertex(t, 2) }));
+    surface.Add({ roof.Vertex(t, 0), roof.Vertex(t, 1), roof.Vertex(t, 2) });
   }
   // On y = 0 (face tile [0,1] x [0,1] in x, z): the trace is z = 4x - 1 then
   // z = 3 - 4x, i.e. (0.25, 0) .. (0.5, 1) .. (0.75, 0).
@@ -506,7 +509,7 @@ TEST(MeshCellError, ChordDeviationIsTheTraceFarthestFromTheChord)
   const auto pruned = tpc::CsgExpression::Prune(b.Scene.Expression, tall, b.Scene.Primitives);
   const tpc::CsgLeaf* leaf = tpc::LoneMeshLeaf(*pruned.Expression);
   ASSERT_NE(leaf, nullptr);
-  const std::vector<ConvexPolygon> clipped = tpc::SurfaceInCell(*leaf, b.Scene.Primitives, tall);
+  const tpc::PolygonSet clipped = tpc::SurfaceInCell(*leaf, b.Scene.Primitives, tall);
   for (const ConvexPolygon& q : clipped)
   {
     for (const Vec3& p : q.Points)
@@ -756,4 +759,64 @@ TEST(MeshCellError, SameLoopIsTheOwnLoopExactly)
   EXPECT_FALSE(tpc::SameLoop({ a, b, c, d }, { a, c, b, d }));
   EXPECT_FALSE(tpc::SameLoop({ a, b, c, d }, { a, b, c, Vec3(std::nextafter(0.0, 1.0), 0.5, 0.5) }));
   EXPECT_FALSE(tpc::SameLoop({}, {}));
+}
+
+TEST(ConvexPolygons, ASurfaceBuiltInAReusedSetIsTheOneBuiltAfresh)
+{
+  // The tests and the extraction build S_C cell after cell in one set
+  // (ScratchPool.h): what a cell finds there must not depend on what an
+  // earlier, larger cell left in it.
+  const std::vector<Vec3> points{ { 0, -1, -1 }, { 0.5, -1, 1 }, { 0, 2, -1 }, { 0.5, 2, 1 }, { 1, -1, -1 },
+    { 1, 2, -1 } };
+  const tpc::MeshSolid roof(points, { { 0, 1, 2 }, { 2, 1, 3 }, { 1, 4, 3 }, { 3, 4, 5 } });
+  SceneBuilder b;
+  b.Finish(b.Mesh(roof));
+  const Box3 large{ { -0.5, -0.5, -0.5 }, { 1.5, 1.5, 1.5 } }, small{ { 0.3, 0.1, -0.2 }, { 0.6, 0.4, 0.9 } };
+  const auto pruned = tpc::CsgExpression::Prune(b.Scene.Expression, large, b.Scene.Primitives);
+  const tpc::CsgLeaf* leaf = tpc::LoneMeshLeaf(*pruned.Expression);
+  ASSERT_NE(leaf, nullptr);
+  tpc::PolygonSet reused;
+  tpc::SurfaceInCell(*leaf, b.Scene.Primitives, large, reused);
+  const std::size_t before = reused.size();
+  tpc::SurfaceInCell(*leaf, b.Scene.Primitives, small, reused);
+  const tpc::PolygonSet fresh = tpc::SurfaceInCell(*leaf, b.Scene.Primitives, small);
+  ASSERT_EQ(before, 4u);
+  ASSERT_EQ(reused.size(), fresh.size());
+  ASSERT_GT(fresh.size(), 0u);
+  std::size_t clippedCorners = 0;
+  for (std::size_t i = 0; i < fresh.size(); ++i)
+  {
+    const ConvexPolygon r = reused[i], f = fresh[i];
+    ASSERT_EQ(r.Points.size(), f.Points.size());
+    ASSERT_EQ(r.Inward.size(), f.Inward.size());
+    clippedCorners += f.Points.size();
+    for (std::size_t k = 0; k < f.Points.size(); ++k)
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        EXPECT_EQ(r.Points[k][a], f.Points[k][a]);
+        EXPECT_EQ(r.Inward[k][a], f.Inward[k][a]);
+        EXPECT_TRUE(small.Contains(f.Points[k]));
+      }
+    }
+    for (int a = 0; a < 3; ++a)
+    {
+      EXPECT_EQ(r.Normal[a], f.Normal[a]);
+      EXPECT_EQ(r.Bounds.lo[a], f.Bounds.lo[a]);
+      EXPECT_EQ(r.Bounds.hi[a], f.Bounds.hi[a]);
+    }
+    EXPECT_EQ(r.TwiceArea, f.TwiceArea);
+  }
+  EXPECT_GT(clippedCorners, 3 * fresh.size()); // (the small cell clips them)
+  // The distance without a view is the distance to the view.
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> x(-1.0, 2.0);
+  for (int s = 0; s < 200; ++s)
+  {
+    const Vec3 p(x(rng), x(rng), x(rng));
+    for (std::size_t i = 0; i < fresh.size(); ++i)
+    {
+      EXPECT_EQ(fresh.Distance(p, i), tpc::PolygonDistance(p, fresh[i]));
+    }
+  }
 }

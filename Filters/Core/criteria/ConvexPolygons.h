@@ -1,0 +1,148 @@
+// Convex planar polygons, stored flat, and the distance to one (the surface
+// in a cell where one mesh is the surface, S_C of MeshCellError.h, and the
+// targets of PolygonHausdorff.h's branch and bound).
+//
+// Why flat: S_C is built for every cell a prediction or a certificate
+// examines, from up to thousands of clipped triangles. A polygon holding its
+// corners and edge normals in two vectors of its own cost two heap blocks
+// each (a third of SurfaceInCell's instructions on armadillo at 1/64); one
+// holding them inline (room for 12 corners) cost no allocation but twice the
+// memory, and this virtual machine's page faults (about 15 us a page) made
+// that slower. A PolygonSet keeps every polygon's corners in
+// one array and its edge normals in another, with a header per polygon: three
+// allocations per set, and about 230 bytes per triangle.
+#pragma once
+
+#include "BoundedVector.h"
+#include "Vector3.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <initializer_list>
+#include <vector>
+
+namespace tpc
+{
+
+/// The corners of a triangle being clipped by a box, on the stack: at most
+/// 9 (each side adds at most one corner to a convex polygon). Rounding can
+/// add one more only where an interpolated corner lands an ulp beyond its
+/// edge's ends along another axis and a later side passes exactly there;
+/// 32 is far beyond what that can reach. (The polygons are then copied into
+/// a PolygonSet, which has no such bound.)
+using ClippedCorners = BoundedVector<Vec3, 32>;
+
+/// A run of points in a PolygonSet (a polygon's corners, or its edges'
+/// inward normals).
+struct PointSpan
+{
+  const Vec3* First = nullptr;
+  std::size_t Count = 0;
+
+  std::size_t size() const { return this->Count; }
+  bool empty() const { return this->Count == 0; }
+  const Vec3& operator[](std::size_t i) const { return this->First[i]; }
+  const Vec3* begin() const { return this->First; }
+  const Vec3* end() const { return this->First + this->Count; }
+  const Vec3& front() const { return this->First[0]; }
+  const Vec3& back() const { return this->First[this->Count - 1]; }
+};
+
+/// A convex polygon in a plane (vertices in order; a segment or a point when
+/// degenerate): a view of a PolygonSet's polygon, valid while the set is
+/// unchanged.
+struct ConvexPolygon
+{
+  PointSpan Points;
+  Vec3 Normal; ///< unit, from the vertex order (Newell); zero when degenerate
+  double TwiceArea = 0.0; ///< the Newell vector's length
+  Box3 Bounds;
+  /// Normal x (edge from Points[i] to Points[i + 1]): points into the polygon
+  /// within its plane (empty when degenerate).
+  PointSpan Inward;
+};
+
+/// Convex planar polygons, stored flat (header).
+class PolygonSet
+{
+public:
+  /// Room for `polygons` polygons with `corners` corners in all.
+  void reserve(std::size_t polygons, std::size_t corners);
+  /// No polygons; the memory stays for the next ones.
+  void clear()
+  {
+    this->Headers.clear();
+    this->Corners.clear();
+    this->Inward.clear();
+  }
+  /// Adds the polygon with corners `corners` (convex, planar, in order):
+  /// its normal, area, box and edges' inward normals.
+  void Add(const Vec3* corners, std::size_t count);
+  void Add(std::initializer_list<Vec3> corners) { this->Add(corners.begin(), corners.size()); }
+
+  std::size_t size() const { return this->Headers.size(); }
+  bool empty() const { return this->Headers.empty(); }
+  ConvexPolygon operator[](std::size_t i) const;
+  /// PolygonDistance(p, (*this)[i]), without making the view (the branch
+  /// and bound measures millions).
+  double Distance(const Vec3& p, std::size_t i) const;
+
+  /// Iteration yields the polygons by value (views).
+  class Iterator
+  {
+  public:
+    Iterator(const PolygonSet* set, std::size_t i)
+      : Set(set)
+      , Index(i)
+    {
+    }
+    ConvexPolygon operator*() const { return (*this->Set)[this->Index]; }
+    Iterator& operator++()
+    {
+      ++this->Index;
+      return *this;
+    }
+    bool operator!=(const Iterator& o) const { return this->Index != o.Index; }
+
+  private:
+    const PolygonSet* Set;
+    std::size_t Index;
+  };
+  Iterator begin() const { return { this, 0 }; }
+  Iterator end() const { return { this, this->size() }; }
+
+private:
+  struct Header
+  {
+    std::uint32_t First = 0; ///< in Corners and Inward
+    std::uint32_t Count = 0;
+    bool HasInward = false;
+    Vec3 Normal;
+    double TwiceArea = 0.0;
+    Box3 Bounds;
+  };
+  std::vector<Header> Headers;
+  std::vector<Vec3> Corners;
+  std::vector<Vec3> Inward; ///< parallel to Corners (zeros for a degenerate polygon)
+};
+
+inline ConvexPolygon PolygonSet::operator[](std::size_t i) const
+{
+  // (Inline: the branch and bound makes a view per distance it measures.)
+  const Header& h = this->Headers[i];
+  ConvexPolygon q;
+  q.Points = { this->Corners.data() + h.First, h.Count };
+  q.Normal = h.Normal;
+  q.TwiceArea = h.TwiceArea;
+  q.Bounds = h.Bounds;
+  q.Inward = h.HasInward ? PointSpan{ this->Inward.data() + h.First, h.Count } : PointSpan{};
+  return q;
+}
+
+/// Distance from `p` to the segment [a, b].
+double SegmentDistance(const Vec3& p, const Vec3& a, const Vec3& b);
+
+/// Distance from `p` to the polygon (its interior included).
+double PolygonDistance(const Vec3& p, const ConvexPolygon& polygon);
+
+} // namespace tpc
