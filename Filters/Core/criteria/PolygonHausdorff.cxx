@@ -94,7 +94,13 @@ struct Targets
   std::vector<std::pair<double, std::uint32_t>>& InReach;
   std::vector<std::uint32_t>& Arena;
   const std::vector<double>* Offsets; ///< per target; null for zeros
-  double OffsetOf(std::uint32_t t) const { return this->Offsets ? (*this->Offsets)[t] : 0.0; }
+  /// Target t's offset; the branch and bound without target offsets (the
+  /// fan-to-surface direction, most of its work) is compiled with zeros.
+  template <bool WithOffsets>
+  double OffsetOf(std::uint32_t t) const
+  {
+    return WithOffsets ? (*this->Offsets)[t] : 0.0;
+  }
 };
 
 /// Whether sqrt(distance2) + offset < limit, i.e. distance2 < (limit -
@@ -121,7 +127,9 @@ bool WithinOf(double distance2, double offset, double limit)
 /// first, then the others in any order, and a distance is computed only where
 /// it may lower a vertex's nearest distance or the single-target bound (box
 /// distances are lower bounds of distances), so both stay exact whatever the
-/// order.
+/// order. (`WithOffsets`: the targets have offsets; without, every offset
+/// is the constant 0.0, the same comparisons and sums bit for bit.)
+template <bool WithOffsets>
 void Evaluate(
   Piece& piece, std::size_t first, std::size_t count, double parentUpperOfG, Targets& targets, double& lower)
 {
@@ -135,7 +143,7 @@ void Evaluate(
   {
     const std::uint32_t t = arena[k];
     const double d2 = BoxDistance2(box, targets.Boxes[t]);
-    if (WithinOf(d2, targets.OffsetOf(t), reach))
+    if (WithinOf(d2, targets.template OffsetOf<WithOffsets>(t), reach))
     {
       inReach.emplace_back(d2, t);
     }
@@ -149,7 +157,7 @@ void Evaluate(
   // that far rules the target out of the single-target bound, which for a
   // piece much larger than the targets is most of them.)
   const auto visit = [&](std::uint32_t t) {
-    const double offset = targets.OffsetOf(t);
+    const double offset = targets.template OffsetOf<WithOffsets>(t);
     double boxDistance2Of[3];
     double farthestBox2 = 0.0;
     for (int i = 0; i < 3; ++i)
@@ -210,7 +218,7 @@ void Evaluate(
     visit(inReach.front().second);
     for (auto e = inReach.begin() + 1; e != inReach.end(); ++e)
     {
-      if (CloserThan(e->first, targets.OffsetOf(e->second), largest()))
+      if (CloserThan(e->first, targets.template OffsetOf<WithOffsets>(e->second), largest()))
       {
         visit(e->second);
       }
@@ -229,7 +237,7 @@ void Evaluate(
   piece.First = arena.size();
   for (const auto& [boxDistance2, t] : inReach)
   {
-    if (WithinOf(boxDistance2, targets.OffsetOf(t), upper))
+    if (WithinOf(boxDistance2, targets.template OffsetOf<WithOffsets>(t), upper))
     {
       arena.push_back(t);
     }
@@ -260,11 +268,12 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
     boxes[t] = targets[t].Bounds;
   }
   Targets context{ targets, boxes, inReach, arena, offsets.Targets };
+  const auto evaluate = offsets.Targets ? &Evaluate<true> : &Evaluate<false>;
   std::priority_queue<Piece> pieces;
   for (std::size_t k = 0; k < sources.size(); ++k)
   {
     Piece piece{ sources[k], 0, 0, HUGE_VAL, HUGE_VAL, offsets.Sources ? (*offsets.Sources)[k] : 0.0 };
-    Evaluate(piece, 0, targets.size(), HUGE_VAL, context, estimate.Lower);
+    evaluate(piece, 0, targets.size(), HUGE_VAL, context, estimate.Lower);
     pieces.push(piece);
   }
   std::size_t evaluated = sources.size();
@@ -286,7 +295,7 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
         SourceTriangle{ m01, m12, m20 } })
     {
       Piece piece{ child, 0, 0, HUGE_VAL, HUGE_VAL, parent.Offset };
-      Evaluate(piece, parent.First, parent.Count, parent.UpperOfG, context, estimate.Lower);
+      evaluate(piece, parent.First, parent.Count, parent.UpperOfG, context, estimate.Lower);
       // (The child lies in its parent.)
       piece.UpperOfG = std::min(piece.UpperOfG, parent.UpperOfG);
       piece.Upper = std::min(piece.Upper, parent.Upper);
