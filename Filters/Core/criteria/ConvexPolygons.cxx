@@ -13,6 +13,19 @@ void PolygonSet::reserve(std::size_t polygons, std::size_t corners)
   this->Inward.reserve(corners);
 }
 
+void PolygonSet::Recycle(std::size_t polygons)
+{
+  // (Sixteen times: cells a level apart hold about a quarter of each other's
+  // surface, so a buffer is kept for two levels - freed at every level, it
+  // came back as fresh pages each time; the floor keeps small sets from
+  // being freed over and over.)
+  if (this->Headers.capacity() > 16 * polygons + 1024)
+  {
+    *this = PolygonSet();
+  }
+  this->clear();
+}
+
 void PolygonSet::Add(const Vec3* corners, std::size_t m)
 {
   Header h;

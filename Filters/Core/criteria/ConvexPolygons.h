@@ -75,6 +75,11 @@ public:
     this->Corners.clear();
     this->Inward.clear();
   }
+  /// No polygons, and room for `polygons` more: the memory stays unless it
+  /// is far more than that (a set reused from cell to cell, ScratchPool.h,
+  /// keeps what the first levels' large cells needed only while cells that
+  /// large come).
+  void Recycle(std::size_t polygons);
   /// Adds the polygon with corners `corners` (convex, planar, in order):
   /// its normal, area, box and edges' inward normals.
   void Add(const Vec3* corners, std::size_t count);
@@ -82,6 +87,8 @@ public:
 
   std::size_t size() const { return this->Headers.size(); }
   bool empty() const { return this->Headers.empty(); }
+  /// Polygons it has room for without allocating.
+  std::size_t capacity() const { return this->Headers.capacity(); }
   ConvexPolygon operator[](std::size_t i) const;
   /// PolygonDistance(p, (*this)[i]), without making the view (the branch
   /// and bound measures millions).

@@ -199,7 +199,7 @@ PolygonSet SurfaceInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives,
 void SurfaceInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell, PolygonSet& surface)
 {
   const MeshSolid& mesh = primitives.Meshes[leaf.Primitive];
-  surface.clear();
+  surface.Recycle(leaf.Triangles->size());
   // (Most triangles of a cell lie in it whole: three corners each.)
   surface.reserve(leaf.Triangles->size(), 3 * leaf.Triangles->size());
   for (const std::uint32_t t : *leaf.Triangles)

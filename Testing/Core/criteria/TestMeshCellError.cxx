@@ -820,3 +820,22 @@ TEST(ConvexPolygons, ASurfaceBuiltInAReusedSetIsTheOneBuiltAfresh)
     }
   }
 }
+
+TEST(ConvexPolygons, ARecycledSetKeepsItsMemoryOnlyForCellsOfASimilarSize)
+{
+  tpc::PolygonSet set;
+  for (int i = 0; i < 5000; ++i)
+  {
+    set.Add({ Vec3(i, 0, 0), Vec3(i + 1, 0, 0), Vec3(i, 1, 0) });
+  }
+  const std::size_t grown = set.capacity();
+  set.Recycle(1000); // (a cell a level smaller: the memory stays)
+  EXPECT_TRUE(set.empty());
+  EXPECT_EQ(set.capacity(), grown);
+  set.Add({ Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0) });
+  EXPECT_EQ(set.size(), 1u);
+  EXPECT_EQ(set[0].Points[1][0], 1.0);
+  set.Recycle(10); // (a small cell: the memory goes)
+  EXPECT_TRUE(set.empty());
+  EXPECT_LT(set.capacity(), grown);
+}
