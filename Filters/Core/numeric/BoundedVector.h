@@ -1,11 +1,9 @@
-// A vector whose capacity is held inline, for the small polygons of clipping
-// (PolygonHausdorff.h: a triangle clipped by a box has at most 9 corners).
-// Where one mesh is the surface, a cell's S_C is built from hundreds of
-// clipped triangles (MeshCellError.h: 370 000 polygons on armadillo at 1/64),
-// and two heap blocks for each - corners and edge normals - were a third of
-// the time SurfaceInCell took. (Boost's static_vector does this; the core
-// depends on nothing beyond the standard library, and the few members below
-// are all the polygons use.)
+// A vector whose capacity is held inline, for the corners of a triangle
+// being clipped (ClippedCorners, ConvexPolygons.h): on the stack, so that
+// clipping the hundreds of triangles of a cell's S_C (MeshCellError.h:
+// 370 000 of them on armadillo at 1/64) takes no heap block per triangle.
+// (Boost's static_vector does this; the core depends on nothing beyond the
+// standard library, and the few members below are all the clipping uses.)
 #pragma once
 
 #include <cstddef>
@@ -21,8 +19,8 @@ namespace tpc
 template <typename T, std::size_t Capacity>
 class BoundedVector
 {
-  // (Raw storage, copied only as far as it is used: the polygons are made and
-  // copied by the hundred thousand, mostly with 3 or 4 corners of 12.)
+  // (Raw storage, copied only as far as it is used: a clipped triangle
+  // mostly has 3 or 4 corners of the 32 it has room for.)
   static_assert(std::is_trivially_copyable_v<T> && std::is_trivially_destructible_v<T>);
 
 public:

@@ -7,8 +7,8 @@
 // S_C (MeshCellError.h), up to a few megabytes for the large cells of the
 // first levels. Allocated and freed per cell, such buffers go back to the
 // system and come back as fresh pages, and a page fault costs about 15 us on
-// the virtual machines this runs on (armadillo at 1/64: 2 000 more faults than
-// with the buffers reused). Thread-local buffers would outlive the run in the
+// the virtual machines this runs on (armadillo at 1/64: about 3 500 more
+// faults in the first two levels than with the buffers reused). Thread-local buffers would outlive the run in the
 // threads of VTK's pool (ParaView keeps them); the pool's objects are freed
 // with it.
 #pragma once
