@@ -94,6 +94,9 @@ public:
   /// PolygonDistance(p, (*this)[i]), without making the view (the branch
   /// and bound measures millions).
   double Distance(const Vec3& p, std::size_t i) const;
+  /// (*this)[i].Bounds, without making the view (loops that test the box
+  /// first, and mostly stop there).
+  const Box3& Bounds(std::size_t i) const { return this->Headers[i].Bounds; }
 
   /// Iteration yields the polygons by value (views).
   class Iterator

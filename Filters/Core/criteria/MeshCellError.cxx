@@ -153,9 +153,9 @@ Box3 TileBox(const RootGrid& grid, const CellBoundary& boundary, int f, const Fa
 /// first: a lower bound of the distance).
 bool WithinReach(const PolygonSet& surface, const Vec3& p, double reach)
 {
-  for (const ConvexPolygon& q : surface)
+  for (std::size_t i = 0; i < surface.size(); ++i)
   {
-    if (q.Bounds.Distance2(p) <= reach * reach && PolygonDistance(p, q) <= reach)
+    if (surface.Bounds(i).Distance2(p) <= reach * reach && surface.Distance(p, i) <= reach)
     {
       return true;
     }
@@ -252,14 +252,14 @@ Vec3 MeshCellApex(const PolygonSet& surface, const Box3& cell)
 double ChordDeviation(const PolygonSet& surface, const Box3& tile, const Vec3& a, const Vec3& b)
 {
   double deviation = 0.0;
-  for (const ConvexPolygon& q : surface)
+  for (std::size_t i = 0; i < surface.size(); ++i)
   {
-    if (q.Bounds.Overlaps(tile))
+    if (surface.Bounds(i).Overlaps(tile))
     {
       // (S_C's polygons have at most ClippedCorners' corners; one more per
       // side of the tile, and some.)
       BoundedVector<Vec3, 2 * ClippedCorners::capacity()> clipped;
-      for (const Vec3& p : q.Points)
+      for (const Vec3& p : surface[i].Points)
       {
         clipped.push_back(p);
       }

@@ -265,7 +265,7 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
   for (std::uint32_t t = 0; t < targets.size(); ++t)
   {
     arena[t] = t;
-    boxes[t] = targets[t].Bounds;
+    boxes[t] = targets.Bounds(t);
   }
   Targets context{ targets, boxes, inReach, arena, offsets.Targets };
   const auto evaluate = offsets.Targets ? &Evaluate<true> : &Evaluate<false>;

@@ -804,6 +804,8 @@ TEST(ConvexPolygons, ASurfaceBuiltInAReusedSetIsTheOneBuiltAfresh)
       EXPECT_EQ(r.Normal[a], f.Normal[a]);
       EXPECT_EQ(r.Bounds.lo[a], f.Bounds.lo[a]);
       EXPECT_EQ(r.Bounds.hi[a], f.Bounds.hi[a]);
+      EXPECT_EQ(fresh.Bounds(i).lo[a], f.Bounds.lo[a]);
+      EXPECT_EQ(fresh.Bounds(i).hi[a], f.Bounds.hi[a]);
     }
     EXPECT_EQ(r.TwiceArea, f.TwiceArea);
   }
