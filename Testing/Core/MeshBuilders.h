@@ -137,4 +137,17 @@ inline MeshSolid PrismMesh(const std::vector<std::array<double, 2>>& section, do
   }
   return MeshSolid(p, t);
 }
+/// `mesh` turned about z by 0.4 and then about x by 0.3: a box's edges cross
+/// every lattice plane obliquely.
+inline MeshSolid TiltedMesh(const MeshSolid& mesh)
+{
+  const double c1 = std::cos(0.4), s1 = std::sin(0.4), c2 = std::cos(0.3), s2 = std::sin(0.3);
+  std::vector<Vec3> points;
+  for (const Vec3& p : mesh.Points())
+  {
+    const Vec3 q(c1 * p[0] - s1 * p[1], s1 * p[0] + c1 * p[1], p[2]);
+    points.push_back({ q[0], c2 * q[1] - s2 * q[2], s2 * q[1] + c2 * q[2] });
+  }
+  return MeshSolid(points, mesh.Triangles());
+}
 } // namespace tpctest

@@ -3,6 +3,7 @@
 #include "BoundaryLoops.h"
 #include "ComplexCellCriterion.h"
 #include "CreaseCrossing.h"
+#include "CreaseFollowing.h"
 #include "CsgCreaseCrossing.h"
 #include "EdgeCrossings.h"
 #include "ExactCellCriterion.h"
@@ -226,6 +227,23 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
       v.Reason = SplitReason::HausdorffSize;
       v.SplitByProbe = v.MeshPrediction.ProbeStrayed;
       return v;
+    }
+    // Its fan must draw the mesh's creases too (CreaseFollowing.h), where
+    // crease tiles put them in the loops: in a scene of one mesh.
+    if (IsOneMesh(*tree.SceneExpression))
+    {
+      std::vector<std::array<Vec3, 3>> fan;
+      const std::vector<Vec3>& loop = v.MeshPrediction.Loop;
+      for (std::size_t k = 0; k < loop.size(); ++k)
+      {
+        fan.push_back({ loop[k], loop[(k + 1) % loop.size()], v.MeshPrediction.Apex });
+      }
+      if (!CreasesFollowed(CreasesInCell(*LoneMeshLeaf(*expression), prims, box), fan, CreaseReach * tolerance))
+      {
+        v.ErrorBounded = v.MeshSurface = false;
+        v.Reason = SplitReason::CreaseNotFollowed;
+        return v;
+      }
     }
   }
   else if (v.ErrorBounded && quadric->Crease)

@@ -5,9 +5,6 @@
 
 namespace tpc
 {
-namespace
-{
-/// The cell's triangles with their vertices' positions.
 std::vector<SourceTriangle> PatchTriangles(const CellPatches& patches, const TriangleMesh& mesh)
 {
   const auto position = [&](std::uint32_t v) -> const Vec3& {
@@ -20,7 +17,6 @@ std::vector<SourceTriangle> PatchTriangles(const CellPatches& patches, const Tri
   }
   return triangles;
 }
-} // namespace
 
 double CertifiedPatchError(const QuadricCellError& bound, const CellPatches& patches, const TriangleMesh& mesh)
 {

@@ -13,6 +13,9 @@
 namespace tpc
 {
 
+/// The cell's triangles with their vertices' positions.
+std::vector<SourceTriangle> PatchTriangles(const CellPatches& patches, const TriangleMesh& mesh);
+
 /// E_C of the cell's `patches` (crossing vertices in `mesh`, apexes local):
 /// the largest triangle term over its triangles and the largest chord term
 /// over the triangle edges lying in one face of the cell (the loop's chords:

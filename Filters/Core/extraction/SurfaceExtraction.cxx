@@ -3,6 +3,7 @@
 #include "CellPatches.h"
 #include "CertifiedError.h"
 #include "CrackPatching.h"
+#include "CreaseFollowing.h"
 #include "CrossingVertices.h"
 #include "ExactCellCriterion.h"
 #include "ScratchPool.h"
@@ -187,13 +188,22 @@ void MeshInCell(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet&
 /// third crease the diagonals would cut by more is kept sharp by the apex.
 /// False when the loop allows no such fan or it is not kept.
 bool MeshCellFromLoopPoint(const AdaptiveOctree& tree, std::uint32_t n, const BoundaryLoopSet& loops,
-  const CrossingVertices& vertices, const TriangleMesh& mesh, const PolygonSet& surface,
+  const PrimitiveSet& prims, const CrossingVertices& vertices, const TriangleMesh& mesh, const PolygonSet& surface,
   double slack, double aim, const AdaptiveOctree::MeshCellPrediction& prediction, CellPatches& patches,
   CellCertificate& certificate)
 {
   CellPatches fan;
   bool fromMeshEdge = false;
   if (!TriangulateCellFromLoopPoint(loops, tree.Nodes[n], tree.Grid, vertices, mesh, fan, fromMeshEdge))
+  {
+    return false;
+  }
+  // (The apex fan was accepted drawing the mesh's creases: this one must
+  // too, CreaseFollowing.h.)
+  if (IsOneMesh(*tree.SceneExpression) &&
+    !CreasesFollowed(CreasesInCell(*LoneMeshLeaf(*tree.Expressions[n]), prims,
+                       tree.Grid.CellBox(tree.Nodes[n].Level, tree.Nodes[n].Ijk)),
+      PatchTriangles(fan, mesh), CreaseReach * tree.HausdorffTolerance))
   {
     return false;
   }
@@ -235,7 +245,7 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
     if (prediction != tree.MeshCellPredictions.end())
     {
       // Larger than the tolerance. First, two triangles fewer.
-      if (MeshCellFromLoopPoint(tree, n, loops, vertices, mesh, surface, slack, aim, prediction->second, patches,
+      if (MeshCellFromLoopPoint(tree, n, loops, prims, vertices, mesh, surface, slack, aim, prediction->second, patches,
             certificate))
       {
         return certificate;

@@ -33,6 +33,8 @@ const char* SplitReasonName(SplitReason r)
       return "surfaces too close";
     case SplitReason::PatchNotEmbedded:
       return "patch not embedded";
+    case SplitReason::CreaseNotFollowed:
+      return "crease not followed";
   }
   return "unknown";
 }

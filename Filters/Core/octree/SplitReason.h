@@ -26,8 +26,11 @@ enum class SplitReason : std::uint8_t
                           ///< while a criterion still failed
   SurfacesTooClose = 10,  ///< leaf kept while a criterion failed: two surfaces face
                           ///< each other closer than the finest cell throughout it
-  PatchNotEmbedded = 11   ///< leaf whose patch meets another patch improperly (found by
+  PatchNotEmbedded = 11,  ///< leaf whose patch meets another patch improperly (found by
                           ///< the exact embedding check of the output, SurfaceEmbedding.h)
+  CreaseNotFollowed = 12  ///< cell of one mesh larger than the tolerance whose fan, within
+                          ///< the tolerance of the mesh, would not draw one of its creases
+                          ///< (CreaseFollowing.h)
 };
 
 const char* SplitReasonName(SplitReason r);
@@ -45,7 +48,7 @@ enum class CellState : std::uint8_t
 const char* CellStateName(CellState s);
 
 /// One past the largest value of each enum (to list their names).
-constexpr int SplitReasonCount = 12;
+constexpr int SplitReasonCount = 13;
 constexpr int CellStateCount = 6;
 
 } // namespace tpc

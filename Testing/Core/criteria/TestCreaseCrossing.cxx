@@ -33,18 +33,11 @@ struct Edge
   Vec3 A, B;
 };
 
-/// The points of a box mesh (tpctest::CubeMesh) turned about z by 0.4 and
-/// about x by 0.3: its edges cross every lattice plane obliquely.
+/// The points of a box mesh (tpctest::CubeMesh), tilted (tpctest::TiltedMesh):
+/// its edges cross every lattice plane obliquely.
 std::vector<Vec3> Tilted(const tpc::MeshSolid& box)
 {
-  const double c1 = std::cos(0.4), s1 = std::sin(0.4), c2 = std::cos(0.3), s2 = std::sin(0.3);
-  std::vector<Vec3> points;
-  for (const Vec3& p : box.Points())
-  {
-    const Vec3 q(c1 * p[0] - s1 * p[1], s1 * p[0] + c1 * p[1], p[2]);
-    points.push_back({ q[0], c2 * q[1] - s2 * q[2], s2 * q[1] + c2 * q[2] });
-  }
-  return points;
+  return tpctest::TiltedMesh(box).Points();
 }
 
 /// The 12 edges of a box mesh's corners `points` (CubeMesh's order: bit k of

@@ -1,0 +1,174 @@
+#include "CreaseFollowing.h"
+
+#include "CreaseCrossing.h"
+#include "MeshSolid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <tuple>
+
+namespace tpc
+{
+namespace
+{
+/// One use of a mesh edge by a listed triangle.
+struct EdgeOfTriangle
+{
+  std::uint32_t Low = 0, High = 0, Triangle = 0;
+  bool operator<(const EdgeOfTriangle& o) const
+  {
+    return std::tie(this->Low, this->High, this->Triangle) < std::tie(o.Low, o.High, o.Triangle);
+  }
+};
+
+/// [a, b] clipped to `box` (Liang-Barsky); false when they do not meet.
+bool ClipToBox(const Vec3& a, const Vec3& b, const Box3& box, CreaseSegment& clipped)
+{
+  double t0 = 0.0, t1 = 1.0;
+  const Vec3 d = b - a;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    if (d[axis] == 0.0)
+    {
+      if (a[axis] < box.lo[axis] || a[axis] > box.hi[axis])
+      {
+        return false;
+      }
+      continue;
+    }
+    double u0 = (box.lo[axis] - a[axis]) / d[axis], u1 = (box.hi[axis] - a[axis]) / d[axis];
+    if (u0 > u1)
+    {
+      std::swap(u0, u1);
+    }
+    t0 = std::max(t0, u0);
+    t1 = std::min(t1, u1);
+    if (t0 > t1)
+    {
+      return false;
+    }
+  }
+  clipped = { a + d * t0, a + d * t1 };
+  return true;
+}
+
+double SegmentDistance(const Vec3& p, const CreaseSegment& s)
+{
+  const Vec3 ab = s.B - s.A;
+  const double length2 = Dot(ab, ab);
+  const double t = length2 > 0.0 ? std::clamp(Dot(p - s.A, ab) / length2, 0.0, 1.0) : 0.0;
+  return Norm(p - (s.A + ab * t));
+}
+
+bool SamePoint(const Vec3& a, const Vec3& b)
+{
+  return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+}
+
+Vec3 UnitNormal(const std::array<Vec3, 3>& t)
+{
+  return Normalized(Cross(t[1] - t[0], t[2] - t[0]));
+}
+
+/// The patch's edges where two of its triangles meet at CreaseAngleDegrees
+/// or more.
+std::vector<CreaseSegment> PatchCreases(const std::vector<std::array<Vec3, 3>>& patch)
+{
+  const double cosine = std::cos(CreaseAngleDegrees * M_PI / 180.0);
+  std::vector<CreaseSegment> creases;
+  for (std::size_t i = 0; i < patch.size(); ++i)
+  {
+    for (std::size_t j = i + 1; j < patch.size(); ++j)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const Vec3 &a = patch[i][k], &b = patch[i][(k + 1) % 3];
+        for (int l = 0; l < 3; ++l)
+        {
+          // (A consistently oriented patch walks a shared edge both ways.)
+          if (SamePoint(patch[j][l], b) && SamePoint(patch[j][(l + 1) % 3], a) &&
+            !(Dot(UnitNormal(patch[i]), UnitNormal(patch[j])) > cosine))
+          {
+            creases.push_back({ a, b });
+          }
+        }
+      }
+    }
+  }
+  return creases;
+}
+} // namespace
+
+std::vector<CreaseSegment> CreasesInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell)
+{
+  const MeshSolid& mesh = primitives.Meshes[leaf.Primitive];
+  std::vector<EdgeOfTriangle> uses;
+  const auto gather = [&](std::uint32_t t) {
+    const auto& ids = mesh.Triangles()[t];
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::uint32_t a = ids[k], b = ids[(k + 1) % 3];
+      uses.push_back({ std::min(a, b), std::max(a, b), t });
+    }
+  };
+  if (leaf.Triangles)
+  {
+    std::for_each(leaf.Triangles->begin(), leaf.Triangles->end(), gather);
+  }
+  else
+  {
+    for (std::uint32_t t = 0; t < mesh.TriangleCount(); ++t)
+    {
+      gather(t);
+    }
+  }
+  std::sort(uses.begin(), uses.end());
+  const double cosine = std::cos(FollowedCreaseDegrees * M_PI / 180.0);
+  std::vector<CreaseSegment> creases;
+  for (std::size_t i = 0; i + 1 < uses.size(); ++i)
+  {
+    const EdgeOfTriangle &p = uses[i], &q = uses[i + 1];
+    const auto same = [&](std::size_t j) { return uses[j].Low == p.Low && uses[j].High == p.High; };
+    const bool pair = same(i + 1) && (i == 0 || !same(i - 1)) && (i + 2 >= uses.size() || !same(i + 2));
+    CreaseSegment clipped;
+    if (pair && !(Dot(mesh.Normal(p.Triangle), mesh.Normal(q.Triangle)) > cosine) &&
+      ClipToBox(mesh.Points()[p.Low], mesh.Points()[p.High], cell, clipped))
+    {
+      creases.push_back(clipped);
+    }
+  }
+  return creases;
+}
+
+bool CreasesFollowed(
+  const std::vector<CreaseSegment>& creases, const std::vector<std::array<Vec3, 3>>& patch, double reach)
+{
+  if (creases.empty())
+  {
+    return true;
+  }
+  const std::vector<CreaseSegment> drawn = PatchCreases(patch);
+  const double spacing = reach / 8.0;
+  for (const CreaseSegment& crease : creases)
+  {
+    const double length = Norm(crease.B - crease.A);
+    const std::size_t steps = static_cast<std::size_t>(std::ceil(length / spacing));
+    for (std::size_t i = 0; i <= steps; ++i)
+    {
+      const Vec3 p = steps ? crease.A + (crease.B - crease.A) * (static_cast<double>(i) / steps) : crease.A;
+      double nearest = HUGE_VAL;
+      for (const CreaseSegment& d : drawn)
+      {
+        nearest = std::min(nearest, SegmentDistance(p, d));
+      }
+      if (!(nearest <= reach - 0.5 * spacing))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+} // namespace tpc
