@@ -7,9 +7,9 @@
 // two edges, the two 45-degree creases of a 90-degree corner cut off) only
 // the sharper one's crossing is drawn, ties alternate from tile to tile, and
 // a large cell's fan cut across the other - on a chamfered bar at 1/64 and
-// 1/128, on couplingdown at 1/128 and 1/256, on the turbine at 1/64, input
-// creases lay up to 1.1-3.5 eps from any output crease while the surface
-// was within eps. So in a scene of one mesh (where crease tiles put the
+// 1/128, on couplingdown at 1/128 and 1/256, on the turbine at 1/64 and
+// 1/128, input creases lay up to 1.1-3.5 eps from any output crease while
+// the surface was within eps. So in a scene of one mesh (where crease tiles put the
 // creases' crossings in the loops), a cell larger than the tolerance is
 // accepted only when its predicted fan follows its creases
 // (McCompatibility.cxx), and the extraction draws a fan from a loop point
@@ -25,9 +25,10 @@
 // neighbour's, are not counted). Every point of a crease must lie within
 // `reach` of the patch's creases. The distance to a union of segments is
 // 1-Lipschitz along a crease segment, so it is sampled at spacing h <=
-// reach / 8 and each sample must be within reach - h / 2: then every point of
-// the segment is within reach (a point is within h / 2 of a sample). The
-// rounding of the samples and distances is far below h / 2 - reach / 16.
+// reach / 8 and each sample must be within 15/16 of the reach: every point
+// of the segment is within h / 2 <= reach / 16 of a sample, hence within the
+// reach (the samples' and distances' rounding, a few ulps of the
+// coordinates, is negligible next to the tolerance).
 //
 // Why 40 degrees: a crease barely past 30 may be drawn with two bends of
 // less than 30 each (a fan's triangles on both sides of a slightly off
@@ -37,9 +38,9 @@
 // loop; the final loop adds points between the loop's (crack patching), which
 // moves no spoke's ends but may change the bends at them - not proven to keep
 // the reach, measured to: with reach eps, no crease of 40 degrees or more
-// farther than 0.91 eps from an output crease on couplingdown, fandisk (1/64,
+// farther than 0.94 eps from an output crease on couplingdown, fandisk (1/64,
 // 1/128, 1/256), the turbine (1/64, 1/128) and chamfered bars (1/64, 1/128);
-// at 0.8 eps, 4-30 % more triangles for the same. Cells no larger than the
+// a reach of 0.8 eps cost 5-31 % more triangles for the same. Cells no larger than the
 // tolerance are not checked (their patches' creases may lie farther: 2-3 of
 // armadillo's sharp edges at 1/64 and 1/128, up to 1.9 eps).
 // It is a quality criterion, not part of the topology guarantee or of the

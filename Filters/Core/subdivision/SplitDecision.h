@@ -2,7 +2,8 @@
 //
 // Each cell of a level that meets the surface runs the paper's tests
 // (McCompatibility.h: complex cell 5.3.1, star-shaped 5.3.2, Hausdorff size
-// 5.3.4, with faces refined where a face test fails); a cell that fails at
+// 5.3.4 - or a certified error, with the mesh's creases followed,
+// CreaseFollowing.h -, with faces refined where a face test fails); a cell that fails at
 // the tolerance's size also checks for two surfaces facing each other closer
 // than the finest cell (FacingSurfaces.h). Then, in cell order, its fate:
 //
