@@ -1,5 +1,6 @@
 #include "CreaseFollowing.h"
 
+#include "ConvexPolygons.h"
 #include "CreaseCrossing.h"
 #include "MeshSolid.h"
 
@@ -51,14 +52,6 @@ bool ClipToBox(const Vec3& a, const Vec3& b, const Box3& box, CreaseSegment& cli
   }
   clipped = { a + d * t0, a + d * t1 };
   return true;
-}
-
-double SegmentDistance(const Vec3& p, const CreaseSegment& s)
-{
-  const Vec3 ab = s.B - s.A;
-  const double length2 = Dot(ab, ab);
-  const double t = length2 > 0.0 ? std::clamp(Dot(p - s.A, ab) / length2, 0.0, 1.0) : 0.0;
-  return Norm(p - (s.A + ab * t));
 }
 
 bool SamePoint(const Vec3& a, const Vec3& b)
@@ -160,7 +153,7 @@ bool CreasesFollowed(
       double nearest = HUGE_VAL;
       for (const CreaseSegment& d : drawn)
       {
-        nearest = std::min(nearest, SegmentDistance(p, d));
+        nearest = std::min(nearest, SegmentDistance(p, d.A, d.B));
       }
       if (!(nearest <= reach - 0.5 * spacing))
       {

@@ -230,20 +230,13 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     }
     // Its fan must draw the mesh's creases too (CreaseFollowing.h), where
     // crease tiles put them in the loops: in a scene of one mesh.
-    if (IsOneMesh(*tree.SceneExpression))
+    if (IsOneMesh(*tree.SceneExpression) &&
+      !CreasesFollowed(CreasesInCell(*LoneMeshLeaf(*expression), prims, box),
+        ApexFan(v.MeshPrediction.Loop, v.MeshPrediction.Apex), CreaseReach * tolerance))
     {
-      std::vector<std::array<Vec3, 3>> fan;
-      const std::vector<Vec3>& loop = v.MeshPrediction.Loop;
-      for (std::size_t k = 0; k < loop.size(); ++k)
-      {
-        fan.push_back({ loop[k], loop[(k + 1) % loop.size()], v.MeshPrediction.Apex });
-      }
-      if (!CreasesFollowed(CreasesInCell(*LoneMeshLeaf(*expression), prims, box), fan, CreaseReach * tolerance))
-      {
-        v.ErrorBounded = v.MeshSurface = false;
-        v.Reason = SplitReason::CreaseNotFollowed;
-        return v;
-      }
+      v.ErrorBounded = v.MeshSurface = false;
+      v.Reason = SplitReason::CreaseNotFollowed;
+      return v;
     }
   }
   else if (v.ErrorBounded && quadric->Crease)

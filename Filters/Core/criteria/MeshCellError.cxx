@@ -321,6 +321,16 @@ HausdorffEstimate CertifiedMeshPatchError(const PolygonSet& surface,
   return error;
 }
 
+std::vector<SourceTriangle> ApexFan(const std::vector<Vec3>& loop, const Vec3& apex)
+{
+  std::vector<SourceTriangle> fan;
+  for (std::size_t k = 0; k < loop.size(); ++k)
+  {
+    fan.push_back({ loop[k], loop[(k + 1) % loop.size()], apex });
+  }
+  return fan;
+}
+
 double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSet& primitives,
   const RootGrid& grid, const Box3& cell, const CellBoundary& boundary, const BoundaryLoopSet& loops,
   double tolerance, AdaptiveOctree::MeshCellPrediction& prediction, const PolygonSet* given,
@@ -411,11 +421,7 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
     d += slack;
   }
   const Vec3 apex = MeshCellApex(surface, cell);
-  std::vector<SourceTriangle> fan;
-  for (std::size_t k = 0; k < m; ++k)
-  {
-    fan.push_back({ points[k], points[(k + 1) % m], apex });
-  }
+  const std::vector<SourceTriangle> fan = ApexFan(points, apex);
   if (probesFirst && FanPointStrays(surface, fan, chordDelta, slack, tolerance))
   {
     prediction.ProbeStrayed = true;

@@ -181,6 +181,9 @@ HausdorffEstimate CertifiedMeshPatchError(const PolygonSet& surface,
 /// The slack for rounding in a cell of the mesh of `leaf` (header: Rounding).
 double RoundingSlack(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell);
 
+/// The fan around `apex` over `loop`: triangles (p_k, p_k+1, apex).
+std::vector<SourceTriangle> ApexFan(const std::vector<Vec3>& loop, const Vec3& apex);
+
 /// The subdivision's prediction, E(P) + delta or else the per-chord bound
 /// (header), for a cell whose tests passed
 /// with the single loop `loops` (sub-edge crossings, and crease crossings in
