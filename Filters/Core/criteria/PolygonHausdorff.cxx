@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <queue>
 #include <utility>
 
 namespace tpc
@@ -128,10 +127,11 @@ bool WithinOf(double distance2, double offset, double limit)
 /// it may lower a vertex's nearest distance or the single-target bound (box
 /// distances are lower bounds of distances), so both stay exact whatever the
 /// order. (`WithOffsets`: the targets have offsets; without, every offset
-/// is the constant 0.0, the same comparisons and sums bit for bit.)
+/// is the constant 0.0, the same comparisons and sums bit for bit.) A piece
+/// whose bound is at most `settle` keeps no candidates: it is never split.
 template <bool WithOffsets>
-void Evaluate(
-  Piece& piece, std::size_t first, std::size_t count, double parentUpperOfG, Targets& targets, double& lower)
+void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentUpperOfG, double settle,
+  Targets& targets, double& lower)
 {
   std::vector<std::pair<double, std::uint32_t>>& inReach = targets.InReach;
   std::vector<std::uint32_t>& arena = targets.Arena;
@@ -235,6 +235,11 @@ void Evaluate(
   lower = std::max(lower, vertexMax == HUGE_VAL ? 0.0 : vertexMax + piece.Offset);
   // (Appended after the parent's entries were read: the arena may move.)
   piece.First = arena.size();
+  if (piece.Upper <= settle)
+  {
+    piece.Count = 0; // (settled: never split)
+    return;
+  }
   for (const auto& [boxDistance2, t] : inReach)
   {
     if (WithinOf(boxDistance2, targets.template OffsetOf<WithOffsets>(t), upper))
@@ -269,25 +274,42 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
   }
   Targets context{ targets, boxes, inReach, arena, offsets.Targets };
   const auto evaluate = offsets.Targets ? &Evaluate<true> : &Evaluate<false>;
-  std::priority_queue<Piece> pieces;
+  // Pieces at most `settle` are never split (the loop below stops before
+  // the largest piece is one of them): they are kept out of the queue, their
+  // largest bound in `settledUpper`, and their candidates are not kept
+  // (Evaluate). Most pieces of S_C against a patch settle at once.
+  const double settle = std::min(enough, giveUp);
+  double settledUpper = 0.0;
+  thread_local std::vector<Piece> queue; // (a heap: std::push_heap, std::pop_heap)
+  queue.clear();
+  const auto keep = [&](const Piece& piece) {
+    if (piece.Upper <= settle)
+    {
+      settledUpper = std::max(settledUpper, piece.Upper);
+      return;
+    }
+    queue.push_back(piece);
+    std::push_heap(queue.begin(), queue.end());
+  };
   for (std::size_t k = 0; k < sources.size(); ++k)
   {
     Piece piece{ sources[k], 0, 0, HUGE_VAL, HUGE_VAL, offsets.Sources ? (*offsets.Sources)[k] : 0.0 };
-    evaluate(piece, 0, targets.size(), HUGE_VAL, context, estimate.Lower);
-    pieces.push(piece);
+    evaluate(piece, 0, targets.size(), HUGE_VAL, settle, context, estimate.Lower);
+    keep(piece);
   }
   std::size_t evaluated = sources.size();
-  while (evaluated < budget && estimate.Lower <= giveUp)
+  while (!queue.empty() && evaluated < budget && estimate.Lower <= giveUp)
   {
-    const double top = pieces.top().Upper;
+    const double top = queue.front().Upper; // (> settle)
     // (Within 10 % of the lower bound is close enough only below giveUp: the
     // caller needs a proof under it.)
-    if (top <= std::min(enough, giveUp) || (top <= 1.1 * estimate.Lower && top <= giveUp) || top == HUGE_VAL)
+    if ((top <= 1.1 * estimate.Lower && top <= giveUp) || top == HUGE_VAL)
     {
       break;
     }
-    const Piece parent = pieces.top();
-    pieces.pop();
+    std::pop_heap(queue.begin(), queue.end());
+    const Piece parent = queue.back();
+    queue.pop_back();
     const SourceTriangle& v = parent.Vertices;
     const Vec3 m01 = (v[0] + v[1]) * 0.5, m12 = (v[1] + v[2]) * 0.5, m20 = (v[2] + v[0]) * 0.5;
     for (const SourceTriangle& child :
@@ -295,15 +317,15 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
         SourceTriangle{ m01, m12, m20 } })
     {
       Piece piece{ child, 0, 0, HUGE_VAL, HUGE_VAL, parent.Offset };
-      evaluate(piece, parent.First, parent.Count, parent.UpperOfG, context, estimate.Lower);
+      evaluate(piece, parent.First, parent.Count, parent.UpperOfG, settle, context, estimate.Lower);
       // (The child lies in its parent.)
       piece.UpperOfG = std::min(piece.UpperOfG, parent.UpperOfG);
       piece.Upper = std::min(piece.Upper, parent.Upper);
-      pieces.push(piece);
+      keep(piece);
     }
     evaluated += 4;
   }
-  estimate.Upper = pieces.top().Upper;
+  estimate.Upper = queue.empty() ? settledUpper : std::max(queue.front().Upper, settledUpper);
   return estimate;
 }
 
