@@ -11,9 +11,10 @@
 // 1/128, input creases lay up to 1.1-3.5 eps from any output crease while
 // the surface was within eps. So in a scene of one mesh (where crease tiles put the
 // creases' crossings in the loops), a cell larger than the tolerance is
-// accepted only when its predicted fan follows its creases
-// (McCompatibility.cxx), and the extraction draws a fan from a loop point
-// instead only when that fan does too (SurfaceExtraction.cxx).
+// accepted only when its predicted fan follows its creases - around the
+// apex S_C's planes give, or else around a point of a crease (MeshCellError.h:
+// Crease apexes; McCompatibility.cxx) - and the extraction draws a fan from a
+// loop point instead only when that fan does too (SurfaceExtraction.cxx).
 //
 // What is checked. The creases in a cell are the edges of the mesh whose two
 // triangles' normals differ by FollowedCreaseDegrees or more, clipped to the

@@ -229,14 +229,25 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
       return v;
     }
     // Its fan must draw the mesh's creases too (CreaseFollowing.h), where
-    // crease tiles put them in the loops: in a scene of one mesh.
-    if (IsOneMesh(*tree.SceneExpression) &&
-      !CreasesFollowed(CreasesInCell(*LoneMeshLeaf(*expression), prims, box),
-        ApexFan(v.MeshPrediction.Loop, v.MeshPrediction.Apex), CreaseReach * tolerance))
+    // crease tiles put them in the loops: in a scene of one mesh. Where the
+    // fan around the apex S_C's planes give misses one, a fan around a point
+    // of a crease may follow them all (MeshCellError.h: Crease apexes).
+    if (IsOneMesh(*tree.SceneExpression))
     {
-      v.ErrorBounded = v.MeshSurface = false;
-      v.Reason = SplitReason::CreaseNotFollowed;
-      return v;
+      const CsgLeaf& leaf = *LoneMeshLeaf(*expression);
+      const std::vector<CreaseSegment> inCell = CreasesInCell(leaf, prims, box);
+      const double reach = CreaseReach * tolerance;
+      if (!CreasesFollowed(inCell, ApexFan(v.MeshPrediction.Loop, v.MeshPrediction.Apex), reach))
+      {
+        if (!PredictCreaseApex(meshSurface, box, inCell, reach, RoundingSlack(leaf, prims, box), tolerance,
+              v.MeshPrediction))
+        {
+          v.ErrorBounded = v.MeshSurface = false;
+          v.Reason = SplitReason::CreaseNotFollowed;
+          return v;
+        }
+        v.PredictedError = v.MeshPrediction.Bound;
+      }
     }
   }
   else if (v.ErrorBounded && quadric->Crease)

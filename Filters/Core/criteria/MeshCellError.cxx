@@ -1,6 +1,7 @@
 #include "MeshCellError.h"
 
 #include "CreaseCrossing.h"
+#include "CreaseFollowing.h"
 #include "EdgeCrossings.h"
 #include "ExactCellCriterion.h"
 #include "MeshArrangement.h"
@@ -321,6 +322,55 @@ HausdorffEstimate CertifiedMeshPatchError(const PolygonSet& surface,
   return error;
 }
 
+bool PredictCreaseApex(const PolygonSet& surface, const Box3& cell, const std::vector<CreaseSegment>& creases,
+  double reach, double slack, double tolerance, AdaptiveOctree::MeshCellPrediction& prediction)
+{
+  const double delta = prediction.Delta;
+  if (prediction.Loop.size() < 3 || !(delta < tolerance))
+  {
+    return false;
+  }
+  // Each crease's point nearest the apex S_C's planes give, kept 1/32 of
+  // the cell's width inside it as that apex is (strictly inside: the fan is
+  // embedded, LoopTriangulation.h), nearest first.
+  const Box3 inner = cell.Shrunk(1.0 / 32.0);
+  std::vector<std::pair<double, Vec3>> candidates;
+  for (const CreaseSegment& c : creases)
+  {
+    const Vec3 ab = c.B - c.A;
+    const double length2 = Dot(ab, ab);
+    const double t = length2 > 0.0 ? std::clamp(Dot(prediction.Apex - c.A, ab) / length2, 0.0, 1.0) : 0.0;
+    const Vec3 onCrease = inner.Clamp(c.A + ab * t);
+    candidates.emplace_back(Norm(onCrease - prediction.Apex), onCrease);
+  }
+  std::sort(candidates.begin(), candidates.end(),
+    [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (std::size_t k = 0; k < candidates.size(); ++k)
+  {
+    const Vec3& apex = candidates[k].second;
+    if (k > 0 && Norm(apex - candidates[k - 1].second) == 0.0)
+    {
+      continue;
+    }
+    const std::vector<SourceTriangle> fan = ApexFan(prediction.Loop, apex);
+    if (!CreasesFollowed(creases, fan, reach))
+    {
+      continue;
+    }
+    const HausdorffEstimate error =
+      CertifiedMeshPatchError(surface, fan, slack, tolerance - delta, tolerance - delta, PredictionBudget);
+    if (error.Upper + delta <= tolerance)
+    {
+      prediction.Apex = apex;
+      prediction.Bound = error.Upper + delta;
+      prediction.OwnFanError = error.Upper;
+      prediction.Attained = error.Lower;
+      return true;
+    }
+  }
+  return false;
+}
+
 std::vector<SourceTriangle> ApexFan(const std::vector<Vec3>& loop, const Vec3& apex)
 {
   std::vector<SourceTriangle> fan;
@@ -420,6 +470,7 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
   {
     d += slack;
   }
+  prediction.Delta = delta;
   const Vec3 apex = MeshCellApex(surface, cell);
   const std::vector<SourceTriangle> fan = ApexFan(points, apex);
   if (probesFirst && FanPointStrays(surface, fan, chordDelta, slack, tolerance))

@@ -143,6 +143,9 @@ public:
     /// Set where the prediction failed at a probe, before its branch and
     /// bound (MeshCellError.h: Probes; such cells split).
     bool ProbeStrayed = false;
+    /// The chords' largest deviation from the trace, delta, with the
+    /// rounding slack (+inf until computed).
+    double Delta = HUGE_VAL;
   };
   std::unordered_map<std::uint32_t, MeshCellPrediction> MeshCellPredictions;
 

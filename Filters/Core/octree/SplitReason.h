@@ -29,8 +29,8 @@ enum class SplitReason : std::uint8_t
   PatchNotEmbedded = 11,  ///< leaf whose patch meets another patch improperly (found by
                           ///< the exact embedding check of the output, SurfaceEmbedding.h)
   CreaseNotFollowed = 12  ///< cell of one mesh larger than the tolerance whose fan, within
-                          ///< the tolerance of the mesh, would not draw one of its creases
-                          ///< (CreaseFollowing.h)
+                          ///< the tolerance of the mesh, would not draw one of its creases,
+                          ///< around its apex or a point of a crease (CreaseFollowing.h)
 };
 
 const char* SplitReasonName(SplitReason r);
