@@ -14,7 +14,8 @@
 // accepted only when its predicted fan follows its creases - around the
 // apex S_C's planes give, or else around a point of a crease (MeshCellError.h:
 // Crease apexes; McCompatibility.cxx) - and the extraction draws a fan from a
-// loop point instead only when that fan does too (SurfaceExtraction.cxx).
+// loop point instead only when that fan does too, and checks the final fan
+// (below; SurfaceExtraction.cxx).
 //
 // What is checked. The creases in a cell are the edges of the mesh whose two
 // triangles' normals differ by FollowedCreaseDegrees or more, clipped to the
@@ -38,12 +39,19 @@
 // of an output crease. The prediction checks the fan over the cell's own
 // loop; the final loop adds points between the loop's (crack patching), which
 // moves no spoke's ends but may change the bends at them - not proven to keep
-// the reach, measured to: with reach eps, no crease of 40 degrees or more
-// farther than 0.94 eps from an output crease on couplingdown, fandisk (1/64,
-// 1/128, 1/256), the turbine (1/64, 1/128) and chamfered bars (1/64, 1/128);
-// a reach of 0.8 eps cost 5-31 % more triangles for the same. Cells no larger than the
-// tolerance are not checked (their patches' creases may lie farther: 2-3 of
-// armadillo's sharp edges at 1/64 and 1/128, up to 1.9 eps).
+// the reach. So the extraction checks the final fan too, and where it misses
+// a crease draws the first fan around a point of a crease that follows them
+// all and is certified within the tolerance on its own (SurfaceExtraction.cxx;
+// one cell of armadillo at 1/64 and 1/128, whose 3 sharp edges lay up to 1.5
+// and 1.9 eps away). Measured with reach eps: no crease of 40 degrees or more
+// farther than 0.96 eps from an output crease on couplingdown, fandisk (1/64,
+// 1/128, 1/256), the turbine (1/64, 1/128, 1/256), armadillo (1/64, 1/128) and
+// chamfered bars (1/64, 1/128); armadillo at 1/256 keeps one 1.02 eps away (no
+// fan around a crease point follows it within the tolerance). A reach of
+// 0.8 eps cost 5-31 % more triangles for the same. Cells no larger than the
+// tolerance are not checked by the subdivision (their patch is bounded by
+// their size; drawing them around a crease point where their usual patch
+// missed a crease changed no measured distance).
 // It is a quality criterion, not part of the topology guarantee or of the
 // certified Hausdorff bound: a cell failing it splits (CreaseNotFollowed),
 // like one failing the Hausdorff size.

@@ -322,6 +322,34 @@ HausdorffEstimate CertifiedMeshPatchError(const PolygonSet& surface,
   return error;
 }
 
+std::vector<Vec3> CreaseApexes(const Box3& cell, const std::vector<CreaseSegment>& creases, const Vec3& apex)
+{
+  const Box3 inner = cell.Shrunk(1.0 / 32.0);
+  std::vector<std::pair<double, Vec3>> candidates;
+  for (const CreaseSegment& c : creases)
+  {
+    const Vec3 ab = c.B - c.A;
+    const double length2 = Dot(ab, ab);
+    const double t = length2 > 0.0 ? std::clamp(Dot(apex - c.A, ab) / length2, 0.0, 1.0) : 0.0;
+    const Vec3 onCrease = inner.Clamp(c.A + ab * t);
+    candidates.emplace_back(Norm(onCrease - apex), onCrease);
+  }
+  // (Ties by position, so that equal points are neighbours: each is kept once.)
+  std::sort(candidates.begin(), candidates.end(), [](const auto& a, const auto& b) {
+    return a.first != b.first ? a.first < b.first
+                              : std::lexicographical_compare(a.second.x, a.second.x + 3, b.second.x, b.second.x + 3);
+  });
+  std::vector<Vec3> apexes;
+  for (const auto& [distance, point] : candidates)
+  {
+    if (apexes.empty() || Norm(point - apexes.back()) != 0.0)
+    {
+      apexes.push_back(point);
+    }
+  }
+  return apexes;
+}
+
 bool PredictCreaseApex(const PolygonSet& surface, const Box3& cell, const std::vector<CreaseSegment>& creases,
   double reach, double slack, double tolerance, AdaptiveOctree::MeshCellPrediction& prediction)
 {
@@ -330,28 +358,8 @@ bool PredictCreaseApex(const PolygonSet& surface, const Box3& cell, const std::v
   {
     return false;
   }
-  // Each crease's point nearest the apex S_C's planes give, kept 1/32 of
-  // the cell's width inside it as that apex is (strictly inside: the fan is
-  // embedded, LoopTriangulation.h), nearest first.
-  const Box3 inner = cell.Shrunk(1.0 / 32.0);
-  std::vector<std::pair<double, Vec3>> candidates;
-  for (const CreaseSegment& c : creases)
+  for (const Vec3& apex : CreaseApexes(cell, creases, prediction.Apex))
   {
-    const Vec3 ab = c.B - c.A;
-    const double length2 = Dot(ab, ab);
-    const double t = length2 > 0.0 ? std::clamp(Dot(prediction.Apex - c.A, ab) / length2, 0.0, 1.0) : 0.0;
-    const Vec3 onCrease = inner.Clamp(c.A + ab * t);
-    candidates.emplace_back(Norm(onCrease - prediction.Apex), onCrease);
-  }
-  std::sort(candidates.begin(), candidates.end(),
-    [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (std::size_t k = 0; k < candidates.size(); ++k)
-  {
-    const Vec3& apex = candidates[k].second;
-    if (k > 0 && Norm(apex - candidates[k - 1].second) == 0.0)
-    {
-      continue;
-    }
     const std::vector<SourceTriangle> fan = ApexFan(prediction.Loop, apex);
     if (!CreasesFollowed(creases, fan, reach))
     {

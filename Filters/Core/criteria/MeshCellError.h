@@ -207,12 +207,17 @@ double RoundingSlack(const CsgLeaf& leaf, const PrimitiveSet& primitives, const 
 /// The fan around `apex` over `loop`: triangles (p_k, p_k+1, apex).
 std::vector<SourceTriangle> ApexFan(const std::vector<Vec3>& loop, const Vec3& apex);
 
+/// The apexes a fan around a point of a crease may take in `cell` (header:
+/// Crease apexes): each segment of `creases`' point nearest `apex`, kept 1/32
+/// of the cell's width inside it as MeshCellApex keeps its own (strictly
+/// inside), nearest `apex` first, each once.
+std::vector<Vec3> CreaseApexes(const Box3& cell, const std::vector<CreaseSegment>& creases, const Vec3& apex);
+
 /// Where the apex fan of `prediction` (PredictedMeshCellError, within the
 /// tolerance) misses a crease of `creases` (CreasesInCell, CreaseFollowing.h):
-/// the fan over the same loop around a point of a crease instead - each
-/// crease's point nearest the apex, kept inside `cell` as MeshCellApex keeps
-/// its apex, nearest first - the first whose fan follows every crease within
-/// `reach` and has E(P) + delta within `tolerance` (header: Crease apexes;
+/// the fan over the same loop around a point of a crease instead
+/// (CreaseApexes of prediction.Apex) - the first whose fan follows every
+/// crease within `reach` and has E(P) + delta within `tolerance` (header: Crease apexes;
 /// `slack` the rounding slack). True when there is one: `prediction` then
 /// holds it as Apex, with its Bound, OwnFanError and Attained.
 bool PredictCreaseApex(const PolygonSet& surface, const Box3& cell, const std::vector<CreaseSegment>& creases,

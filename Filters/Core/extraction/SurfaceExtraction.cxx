@@ -223,6 +223,53 @@ bool MeshCellFromLoopPoint(const AdaptiveOctree& tree, std::uint32_t n, const Bo
   return true;
 }
 
+/// A mesh cell larger than the tolerance in a scene of one mesh whose fan
+/// around its prediction's apex `apex`, drawn over the final loop in
+/// `patches`, misses a crease (the prediction checked the fan over the cell's
+/// own loop; the final loop's points between its own may change the bends at
+/// the spokes: CreaseFollowing.h): the first fan around a point of a crease
+/// (CreaseApexes) that follows them all and is certified within the
+/// tolerance on its own, in `patches`, its certificate in `certificate`.
+/// False - `patches` unchanged - where the fan follows them or none does.
+bool MeshCellFromOtherApex(const AdaptiveOctree& tree, std::uint32_t n, const BoundaryLoopSet& loops,
+  const PrimitiveSet& prims, const CrossingVertices& vertices, const TriangleMesh& mesh, const PolygonSet& surface,
+  double slack, double aim, const Vec3& apex, CellPatches& patches, CellCertificate& certificate)
+{
+  if (!IsOneMesh(*tree.SceneExpression) || loops.LoopSizes.size() != 1)
+  {
+    return false;
+  }
+  const OctreeNode& node = tree.Nodes[n];
+  const CsgExpression& expression = *tree.Expressions[n];
+  const Box3 box = tree.Grid.CellBox(node.Level, node.Ijk);
+  const std::vector<CreaseSegment> creases = CreasesInCell(*LoneMeshLeaf(expression), prims, box);
+  const double tolerance = tree.HausdorffTolerance;
+  const double reach = CreaseReach * tolerance;
+  if (CreasesFollowed(creases, PatchTriangles(patches, mesh), reach))
+  {
+    return false;
+  }
+  for (const Vec3& other : CreaseApexes(box, creases, apex))
+  {
+    CellPatches fan;
+    TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, fan, nullptr, &other);
+    if (Norm(other - apex) == 0.0 || !CreasesFollowed(creases, PatchTriangles(fan, mesh), reach))
+    {
+      continue;
+    }
+    const HausdorffEstimate e =
+      CertifiedMeshCellError(surface, fan, mesh, slack, std::min(aim, tolerance), tolerance, FirstCertificateBudget);
+    if (e.Upper <= tolerance)
+    {
+      patches = std::move(fan);
+      certificate.Bound = certificate.Error = e.Upper;
+      certificate.Lower = e.Lower;
+      return true;
+    }
+  }
+  return false;
+}
+
 /// Surface leaf `n`'s patches (CellPatches.h) and what they are certified to.
 /// A mesh cell's error is first bounded with a small budget of pieces
 /// (FirstCertificateBudget); RefineMeshCertificates refines the ones that
@@ -257,6 +304,11 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
       // certified on its own anyway.
       TriangulateCell(
         loops, node, expression, prims, tree.Grid, vertices, mesh, patches, nullptr, &prediction->second.Apex);
+      if (MeshCellFromOtherApex(tree, n, loops, prims, vertices, mesh, surface, slack, aim, prediction->second.Apex,
+            patches, certificate))
+      {
+        return certificate;
+      }
       std::vector<Vec3> final;
       for (const Crossing& c : loops.Crossings)
       {
