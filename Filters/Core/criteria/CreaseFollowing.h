@@ -49,9 +49,9 @@
 // chamfered bars (1/64, 1/128); armadillo at 1/256 keeps one 1.02 eps away (no
 // fan around a crease point follows it within the tolerance). A reach of
 // 0.8 eps cost 5-31 % more triangles for the same. Cells no larger than the
-// tolerance are not checked by the subdivision (their patch is bounded by
-// their size; drawing them around a crease point where their usual patch
-// missed a crease changed no measured distance).
+// tolerance are not checked, by the subdivision or the extraction (any patch
+// inside one is within its size; drawing them around a crease point where
+// their usual patch missed a crease changed no measured distance).
 // It is a quality criterion, not part of the topology guarantee or of the
 // certified Hausdorff bound: a cell failing it splits (CreaseNotFollowed),
 // like one failing the Hausdorff size.

@@ -208,9 +208,9 @@ double RoundingSlack(const CsgLeaf& leaf, const PrimitiveSet& primitives, const 
 std::vector<SourceTriangle> ApexFan(const std::vector<Vec3>& loop, const Vec3& apex);
 
 /// The apexes a fan around a point of a crease may take in `cell` (header:
-/// Crease apexes): each segment of `creases`' point nearest `apex`, kept 1/32
-/// of the cell's width inside it as MeshCellApex keeps its own (strictly
-/// inside), nearest `apex` first, each once.
+/// Crease apexes): the point of each segment of `creases` nearest `apex`,
+/// kept 1/32 of the cell's width inside it as MeshCellApex keeps its own
+/// (strictly inside), nearest `apex` first, each once.
 std::vector<Vec3> CreaseApexes(const Box3& cell, const std::vector<CreaseSegment>& creases, const Vec3& apex);
 
 /// Where the apex fan of `prediction` (PredictedMeshCellError, within the

@@ -186,11 +186,13 @@ void MeshInCell(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet&
 /// with, over its own loop; none where it was accepted on the per-chord
 /// bound) or within MeshEdgeFanKeptWithin of the tolerance - a corner whose
 /// third crease the diagonals would cut by more is kept sharp by the apex.
-/// False when the loop allows no such fan or it is not kept.
+/// Either must follow the cell's `creases` (CreaseFollowing.h; none outside
+/// scenes of one mesh). False when the loop allows no such fan or it is not
+/// kept.
 bool MeshCellFromLoopPoint(const AdaptiveOctree& tree, std::uint32_t n, const BoundaryLoopSet& loops,
-  const PrimitiveSet& prims, const CrossingVertices& vertices, const TriangleMesh& mesh, const PolygonSet& surface,
-  double slack, double aim, const AdaptiveOctree::MeshCellPrediction& prediction, CellPatches& patches,
-  CellCertificate& certificate)
+  const CrossingVertices& vertices, const TriangleMesh& mesh, const PolygonSet& surface,
+  const std::vector<CreaseSegment>& creases, double slack, double aim,
+  const AdaptiveOctree::MeshCellPrediction& prediction, CellPatches& patches, CellCertificate& certificate)
 {
   CellPatches fan;
   bool fromMeshEdge = false;
@@ -199,11 +201,8 @@ bool MeshCellFromLoopPoint(const AdaptiveOctree& tree, std::uint32_t n, const Bo
     return false;
   }
   // (The apex fan was accepted drawing the mesh's creases: this one must
-  // too, CreaseFollowing.h.)
-  if (IsOneMesh(*tree.SceneExpression) &&
-    !CreasesFollowed(CreasesInCell(*LoneMeshLeaf(*tree.Expressions[n]), prims,
-                       tree.Grid.CellBox(tree.Nodes[n].Level, tree.Nodes[n].Ijk)),
-      PatchTriangles(fan, mesh), CreaseReach * tree.HausdorffTolerance))
+  // too.)
+  if (!CreasesFollowed(creases, PatchTriangles(fan, mesh), CreaseReach * tree.HausdorffTolerance))
   {
     return false;
   }
@@ -223,26 +222,26 @@ bool MeshCellFromLoopPoint(const AdaptiveOctree& tree, std::uint32_t n, const Bo
   return true;
 }
 
-/// A mesh cell larger than the tolerance in a scene of one mesh whose fan
-/// around its prediction's apex `apex`, drawn over the final loop in
-/// `patches`, misses a crease (the prediction checked the fan over the cell's
-/// own loop; the final loop's points between its own may change the bends at
-/// the spokes: CreaseFollowing.h): the first fan around a point of a crease
+/// A mesh cell larger than the tolerance whose fan around its prediction's
+/// apex `apex`, drawn over the final loop in `patches`, misses one of its
+/// `creases` (the prediction checked the fan over the cell's own loop; the
+/// final loop's points between its own may change the bends at the spokes:
+/// CreaseFollowing.h): the first fan around a point of a crease
 /// (CreaseApexes) that follows them all and is certified within the
 /// tolerance on its own, in `patches`, its certificate in `certificate`.
 /// False - `patches` unchanged - where the fan follows them or none does.
 bool MeshCellFromOtherApex(const AdaptiveOctree& tree, std::uint32_t n, const BoundaryLoopSet& loops,
   const PrimitiveSet& prims, const CrossingVertices& vertices, const TriangleMesh& mesh, const PolygonSet& surface,
-  double slack, double aim, const Vec3& apex, CellPatches& patches, CellCertificate& certificate)
+  const std::vector<CreaseSegment>& creases, double slack, double aim, const Vec3& apex, CellPatches& patches,
+  CellCertificate& certificate)
 {
-  if (!IsOneMesh(*tree.SceneExpression) || loops.LoopSizes.size() != 1)
+  if (loops.LoopSizes.size() != 1)
   {
     return false;
   }
   const OctreeNode& node = tree.Nodes[n];
   const CsgExpression& expression = *tree.Expressions[n];
   const Box3 box = tree.Grid.CellBox(node.Level, node.Ijk);
-  const std::vector<CreaseSegment> creases = CreasesInCell(*LoneMeshLeaf(expression), prims, box);
   const double tolerance = tree.HausdorffTolerance;
   const double reach = CreaseReach * tolerance;
   if (CreasesFollowed(creases, PatchTriangles(patches, mesh), reach))
@@ -251,9 +250,13 @@ bool MeshCellFromOtherApex(const AdaptiveOctree& tree, std::uint32_t n, const Bo
   }
   for (const Vec3& other : CreaseApexes(box, creases, apex))
   {
+    if (Norm(other - apex) == 0.0)
+    {
+      continue; // (the fan just drawn)
+    }
     CellPatches fan;
     TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, fan, nullptr, &other);
-    if (Norm(other - apex) == 0.0 || !CreasesFollowed(creases, PatchTriangles(fan, mesh), reach))
+    if (!CreasesFollowed(creases, PatchTriangles(fan, mesh), reach))
     {
       continue;
     }
@@ -291,9 +294,14 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
     certificate.Mesh = true;
     if (prediction != tree.MeshCellPredictions.end())
     {
-      // Larger than the tolerance. First, two triangles fewer.
-      if (MeshCellFromLoopPoint(tree, n, loops, prims, vertices, mesh, surface, slack, aim, prediction->second, patches,
-            certificate))
+      // Larger than the tolerance: its patch must follow the mesh's creases
+      // in a scene of one mesh (CreaseFollowing.h). First, two triangles
+      // fewer.
+      const std::vector<CreaseSegment> creases = IsOneMesh(*tree.SceneExpression)
+        ? CreasesInCell(*LoneMeshLeaf(expression), prims, box)
+        : std::vector<CreaseSegment>();
+      if (MeshCellFromLoopPoint(
+            tree, n, loops, vertices, mesh, surface, creases, slack, aim, prediction->second, patches, certificate))
       {
         return certificate;
       }
@@ -304,8 +312,8 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
       // certified on its own anyway.
       TriangulateCell(
         loops, node, expression, prims, tree.Grid, vertices, mesh, patches, nullptr, &prediction->second.Apex);
-      if (MeshCellFromOtherApex(tree, n, loops, prims, vertices, mesh, surface, slack, aim, prediction->second.Apex,
-            patches, certificate))
+      if (MeshCellFromOtherApex(tree, n, loops, prims, vertices, mesh, surface, creases, slack, aim,
+            prediction->second.Apex, patches, certificate))
       {
         return certificate;
       }
