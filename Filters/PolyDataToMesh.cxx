@@ -156,7 +156,7 @@ bool ConvertPolyData(vtkPolyData* input, MeshInput& mesh, std::string& error, bo
   mesh.Repair = RepairMesh(points, faces, true, 100, parallelFor, progress);
   mesh.Repair.FilledHoleTriangles = filled;
   mesh.Repair.FannedPolygons = fanned;
-  mesh.Solid = MeshSolid(std::move(points), std::move(faces));
+  mesh.Solid = MeshSolid(std::move(points), std::move(faces), parallelFor);
   return true;
 }
 

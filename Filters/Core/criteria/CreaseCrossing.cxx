@@ -45,41 +45,20 @@ void NearTile(const MeshSolid& mesh, const RootGrid& grid, const TriangleList& t
   }
 }
 
-/// Whether two of `triangles` meet at a crease tile's angle or more: such an
-/// edge crossing the tile has both its triangles near it, so without such a
-/// pair the tile is no crease tile - decided before any exact test, and exactly
-/// as the crease test below compares the same two normals.
+/// Whether one of `triangles` meets a neighbour at a crease tile's angle or
+/// more: an edge crossing the tile with such a bend has both its triangles
+/// near it, so without one the tile is no crease tile - decided before any
+/// exact test, comparing the same two normals as the crease test below
+/// (and decided by the mesh alone: whatever else each cell lists near the
+/// tile, both cells sharing it find its crease edges).
 bool MayHoldCrease(const MeshSolid& mesh, const TriangleList& triangles, double creaseCosine)
 {
-  thread_local std::vector<Vec3> normals; // (scratch: called for every tile)
-  normals.clear();
-  Vec3 sum;
   for (const std::uint32_t t : triangles)
   {
-    normals.push_back(mesh.Normal(t));
-    sum += normals.back();
-  }
-  // All within a cone of half-angle (A - 1) / 2, A = CreaseTileAngleDegrees:
-  // every two differ by less than A - 1 (a degree short of a crease tile's
-  // bend: far beyond rounding). The cone must follow A: were it wider, a
-  // tile with a bend between the two would be decided by which other
-  // triangles near it each cell lists, and the two cells sharing it could
-  // draw it differently.
-  const Vec3 axis = Normalized(sum);
-  double nearest = 1.0;
-  for (const Vec3& n : normals)
-  {
-    nearest = std::min(nearest, Dot(n, axis));
-  }
-  if (nearest > std::cos((CreaseTileAngleDegrees - 1.0) * 0.5 * M_PI / 180.0))
-  {
-    return false;
-  }
-  for (std::size_t i = 0; i < normals.size(); ++i)
-  {
-    for (std::size_t j = i + 1; j < normals.size(); ++j)
+    for (int k = 0; k < 3; ++k)
     {
-      if (Dot(normals[i], normals[j]) <= creaseCosine)
+      const std::uint32_t other = mesh.Across(t, k);
+      if (other != MeshSolid::NoTriangle && Dot(mesh.Normal(t), mesh.Normal(other)) <= creaseCosine)
       {
         return true;
       }

@@ -96,13 +96,21 @@ std::vector<CreaseSegment> PatchCreases(const std::vector<std::array<Vec3, 3>>& 
 std::vector<CreaseSegment> CreasesInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell)
 {
   const MeshSolid& mesh = primitives.Meshes[leaf.Primitive];
+  const double cosine = std::cos(FollowedCreaseDegrees * M_PI / 180.0);
+  // The listed triangles' edges that bend that much (each use; the mesh
+  // knows each edge's other triangle), then those used by two listed
+  // triangles: both meet the cell where the edge does.
   std::vector<EdgeOfTriangle> uses;
   const auto gather = [&](std::uint32_t t) {
     const auto& ids = mesh.Triangles()[t];
     for (int k = 0; k < 3; ++k)
     {
-      const std::uint32_t a = ids[k], b = ids[(k + 1) % 3];
-      uses.push_back({ std::min(a, b), std::max(a, b), t });
+      const std::uint32_t other = mesh.Across(t, k);
+      if (other != MeshSolid::NoTriangle && !(Dot(mesh.Normal(t), mesh.Normal(other)) > cosine))
+      {
+        const std::uint32_t a = ids[k], b = ids[(k + 1) % 3];
+        uses.push_back({ std::min(a, b), std::max(a, b), t });
+      }
     }
   };
   if (leaf.Triangles)
@@ -117,16 +125,12 @@ std::vector<CreaseSegment> CreasesInCell(const CsgLeaf& leaf, const PrimitiveSet
     }
   }
   std::sort(uses.begin(), uses.end());
-  const double cosine = std::cos(FollowedCreaseDegrees * M_PI / 180.0);
   std::vector<CreaseSegment> creases;
   for (std::size_t i = 0; i + 1 < uses.size(); ++i)
   {
     const EdgeOfTriangle &p = uses[i], &q = uses[i + 1];
-    const auto same = [&](std::size_t j) { return uses[j].Low == p.Low && uses[j].High == p.High; };
-    const bool pair = same(i + 1) && (i == 0 || !same(i - 1)) && (i + 2 >= uses.size() || !same(i + 2));
     CreaseSegment clipped;
-    if (pair && !(Dot(mesh.Normal(p.Triangle), mesh.Normal(q.Triangle)) > cosine) &&
-      ClipToBox(mesh.Points()[p.Low], mesh.Points()[p.High], cell, clipped))
+    if (p.Low == q.Low && p.High == q.High && ClipToBox(mesh.Points()[p.Low], mesh.Points()[p.High], cell, clipped))
     {
       creases.push_back(clipped);
     }

@@ -1,6 +1,7 @@
 #include "MeshSolid.h"
 
 #include "ExactPredicates.h"
+#include "MeshEdges.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,10 +9,31 @@
 namespace tpc
 {
 
-MeshSolid::MeshSolid(std::vector<Vec3> points, std::vector<std::array<std::uint32_t, 3>> triangles)
+MeshSolid::MeshSolid(
+  std::vector<Vec3> points, std::vector<std::array<std::uint32_t, 3>> triangles, const ParallelFor& parallelFor)
   : Vertices(std::move(points))
   , Faces(std::move(triangles))
 {
+  this->Normals.resize(this->Faces.size());
+  parallelFor(this->Faces.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t)
+    {
+      const Vec3& a = this->Vertex(static_cast<std::uint32_t>(t), 0);
+      this->Normals[t] = Normalized(
+        Cross(this->Vertex(static_cast<std::uint32_t>(t), 1) - a, this->Vertex(static_cast<std::uint32_t>(t), 2) - a));
+    }
+  });
+  this->Neighbours.assign(this->Faces.size(), { NoTriangle, NoTriangle, NoTriangle });
+  std::vector<EdgeUse> uses;
+  BuildEdgeTable(this->Faces.data(), this->Faces.size(), uses, parallelFor);
+  ForEachEdge(uses, [&](std::size_t first, std::size_t count) {
+    if (count == 2)
+    {
+      const EdgeUse &p = uses[first], &q = uses[first + 1];
+      this->Neighbours[p.Triangle][p.Corner] = q.Triangle;
+      this->Neighbours[q.Triangle][q.Corner] = p.Triangle;
+    }
+  });
   this->Box = { { HUGE_VAL, HUGE_VAL, HUGE_VAL }, { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL } };
   this->FaceBoxes.resize(this->Faces.size());
   for (std::size_t t = 0; t < this->Faces.size(); ++t)
@@ -321,11 +343,6 @@ TriangleList MeshSolid::Overlapping(const Box3& box) const
   }
   this->Overlapping(box, all, out);
   return out;
-}
-
-Vec3 MeshSolid::Normal(std::uint32_t t) const
-{
-  return Normalized(Cross(this->Vertex(t, 1) - this->Vertex(t, 0), this->Vertex(t, 2) - this->Vertex(t, 0)));
 }
 
 namespace

@@ -279,6 +279,58 @@ TEST(MeshSolid, TriangleBoxOverlapNeverMissesAContact)
   EXPECT_GT(negatives, 100000); // and it does reject
 }
 
+TEST(MeshSolid, KnowsEachEdgesOtherTriangleAndEachUnitNormal)
+{
+  // Brute force: the other triangle holding both ends of each edge, and the
+  // normalized cross product of the edges; on a closed sphere every edge has
+  // one, symmetric; cut open (half its triangles), the cut's edges have none.
+  const tpc::MeshSolid sphere = tpctest::SphereMesh({ 0.1, -0.2, 0.3 }, 0.7, 2);
+  const auto holds = [](const std::array<std::uint32_t, 3>& ids, std::uint32_t v) {
+    return ids[0] == v || ids[1] == v || ids[2] == v;
+  };
+  const auto otherOf = [&](const tpc::MeshSolid& mesh, std::uint32_t t, int k) {
+    const std::uint32_t a = mesh.Triangles()[t][k], b = mesh.Triangles()[t][(k + 1) % 3];
+    std::uint32_t found = tpc::MeshSolid::NoTriangle;
+    int count = 0;
+    for (std::uint32_t u = 0; u < mesh.TriangleCount(); ++u)
+    {
+      if (u != t && holds(mesh.Triangles()[u], a) && holds(mesh.Triangles()[u], b))
+      {
+        found = u;
+        ++count;
+      }
+    }
+    return count == 1 ? found : tpc::MeshSolid::NoTriangle;
+  };
+  for (std::uint32_t t = 0; t < sphere.TriangleCount(); ++t)
+  {
+    const Vec3 n = tpc::Cross(sphere.Vertex(t, 1) - sphere.Vertex(t, 0), sphere.Vertex(t, 2) - sphere.Vertex(t, 0));
+    EXPECT_NEAR(tpc::Dot(sphere.Normal(t), n * (1.0 / tpc::Norm(n))), 1.0, 1e-12) << "triangle " << t;
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::uint32_t other = sphere.Across(t, k);
+      ASSERT_NE(other, tpc::MeshSolid::NoTriangle) << "triangle " << t << " edge " << k;
+      EXPECT_EQ(other, otherOf(sphere, t, k));
+      const auto& back = sphere.Triangles()[other];
+      EXPECT_TRUE(sphere.Across(other, 0) == t || sphere.Across(other, 1) == t || sphere.Across(other, 2) == t);
+      EXPECT_TRUE(holds(back, sphere.Triangles()[t][k]) && holds(back, sphere.Triangles()[t][(k + 1) % 3]));
+    }
+  }
+  std::vector<std::array<std::uint32_t, 3>> half(
+    sphere.Triangles().begin(), sphere.Triangles().begin() + sphere.TriangleCount() / 2);
+  const tpc::MeshSolid open(sphere.Points(), half);
+  int cut = 0;
+  for (std::uint32_t t = 0; t < open.TriangleCount(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      EXPECT_EQ(open.Across(t, k), otherOf(open, t, k)) << "triangle " << t << " edge " << k;
+      cut += open.Across(t, k) == tpc::MeshSolid::NoTriangle ? 1 : 0;
+    }
+  }
+  EXPECT_GT(cut, 4); // the cut was exercised
+}
+
 namespace
 {
 /// Largest distance from a point of `points` to the mesh (brute force).
