@@ -277,7 +277,9 @@ TEST(BadInputs, ToleranceLargerThanTheDomainGivesACoarseClosedSurface)
   // (The input is a coarse polyhedron, 16 x 12: at 0.05 its cells are as
   // large as their certified error allows, MeshCellError.h.)
   const Outcome fine = Contour(Sphere(), 0.05);
-  EXPECT_GT(fine.Result.Surface->GetNumberOfPolys(), 30 * coarse.Result.Surface->GetNumberOfPolys());
+  // (198 triangles against 8, measured; more than 240 before chords were
+  // refined, MeshCellError.h.)
+  EXPECT_GT(fine.Result.Surface->GetNumberOfPolys(), 20 * coarse.Result.Surface->GetNumberOfPolys());
 }
 
 TEST(BadInputs, AbsurdMaximumDepthIsClamped)

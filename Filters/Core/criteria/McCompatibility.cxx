@@ -66,6 +66,44 @@ bool TileFaces(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& 
   return true;
 }
 
+/// The prediction of mesh cell `n` made again where it failed, over its loop
+/// with the tiles of its wide chords split (RefineChordTiles); where it then
+/// passes, the cell keeps that tiling (`boundary`, and the faces it records)
+/// and that prediction (in `v`). Else `boundary` and `v` stay.
+bool PredictOverFinerChords(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& prims, double tolerance,
+  int faceRefinementLevels, bool creaseTiles, bool probesFirst, const PolygonSet& surface, CellSignCache& signs,
+  CellBoundary& boundary, McCompatibility& v)
+{
+  const RootGrid& grid = tree.Grid;
+  const OctreeNode& node = tree.Nodes[n];
+  const CsgExpressionPtr& expression = tree.Expressions[n];
+  CellBoundary finer = boundary;
+  if (RefineChordTiles(expression, prims, grid, surface, creaseTiles, ChordRefinementShare * tolerance,
+        std::min(faceRefinementLevels, grid.MaxDepth - node.Level), signs, finer) == 0)
+  {
+    return false;
+  }
+  AdaptiveOctree::MeshCellPrediction prediction;
+  const double bound = PredictedMeshCellError(*expression, prims, grid, grid.CellBox(node.Level, node.Ijk), finer,
+    TraceBoundaryLoops(finer), tolerance, prediction, &surface, probesFirst);
+  if (!(bound <= tolerance))
+  {
+    return false;
+  }
+  boundary = std::move(finer);
+  v.MeshPrediction = std::move(prediction);
+  v.PredictedError = bound;
+  v.Refinements.clear();
+  for (int f = 0; f < 6; ++f)
+  {
+    if (boundary.Tiles[f].size() > 1)
+    {
+      v.Refinements.emplace_back(FaceOf(grid, node, f), boundary.Tiles[f]);
+    }
+  }
+  return true;
+}
+
 /// Whether a crease cell's patch will be made of sectors, each on one leaf
 /// (QuadricCellError.h: In a crease cell), as the prediction assumes: its
 /// loop, drawn as the extraction draws it (CSG crease tiles through the
@@ -109,7 +147,8 @@ bool CreaseFanWithinTolerance(const QuadricCellError& bound, const Vec3& apex, c
 } // namespace
 
 McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& prims,
-  double tolerance, int faceRefinementLevels, bool provenFailuresFirst, PolygonSet* surfaceScratch)
+  double tolerance, int faceRefinementLevels, bool provenFailuresFirst, PolygonSet* surfaceScratch,
+  bool refineChords)
 {
   McCompatibility v;
   v.Kind = McVerdict::Split;
@@ -216,12 +255,23 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     // so the loop the prediction starts from may too: the final loop follows
     // the same halves of the trace there.
     // (Without a crease tile the loops are those traced above.)
-    const bool creases = IsOneMesh(*tree.SceneExpression) &&
+    const bool oneMesh = IsOneMesh(*tree.SceneExpression);
+    const bool creases = oneMesh &&
       MarkCreaseTiles(boundary, *LoneMeshLeaf(*expression), prims, grid, [](int, std::size_t) { return true; });
     v.PredictedError = PredictedMeshCellError(*expression, prims, grid, box, boundary,
       creases ? TraceBoundaryLoops(boundary) : loops, tolerance, v.MeshPrediction, &meshSurface,
       provenFailuresFirst);
     v.ErrorBounded = v.MeshSurface = v.PredictedError <= tolerance;
+    // Failed with chords far from the trace: again over a loop whose wide
+    // chords' tiles are split (MeshCellError.h: Chords refined) - not in a
+    // cell that must draw creases.
+    if (!v.ErrorBounded && refineChords && !(v.MeshPrediction.Delta <= ChordRefinementShare * tolerance) &&
+      (!oneMesh || CreasesInCell(*LoneMeshLeaf(*expression), prims, box).empty()) &&
+      PredictOverFinerChords(tree, n, prims, tolerance, faceRefinementLevels, oneMesh, provenFailuresFirst,
+        meshSurface, signs, boundary, v))
+    {
+      v.ErrorBounded = v.MeshSurface = v.ChordsRefined = true;
+    }
     if (!v.ErrorBounded)
     {
       v.Reason = SplitReason::HausdorffSize;

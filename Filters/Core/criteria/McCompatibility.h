@@ -59,6 +59,9 @@ struct McCompatibility
   /// Split for its size because its prediction's fan has a point too far
   /// from the mesh (MeshCellError.h: Probes).
   bool SplitByProbe = false;
+  /// Passed on a prediction made over finer chords (MeshCellError.h: Chords
+  /// refined).
+  bool ChordsRefined = false;
   /// Faces this cell refined (only kept if it passes).
   std::vector<std::pair<FaceKey, std::vector<FaceTile>>> Refinements;
   /// Signs evaluated during the tests, for the global table.
@@ -92,9 +95,11 @@ constexpr int FaceRefinementLevels = 10;
 /// prediction probes its fan before the branch and bound (MeshCellError.h:
 /// Spokes, Probes; SubdivisionParameters::ProvenFailuresFirst).
 /// `surfaceScratch`: where S_C is built (a buffer reused across cells,
-/// ScratchPool.h); null for one of its own.
+/// ScratchPool.h); null for one of its own. With `refineChords`, a mesh
+/// cell's failed prediction is made again over finer chords where they
+/// strayed (MeshCellError.h: Chords refined).
 McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   const PrimitiveSet& primitives, double tolerance, int faceRefinementLevels = FaceRefinementLevels,
-  bool provenFailuresFirst = true, PolygonSet* surfaceScratch = nullptr);
+  bool provenFailuresFirst = true, PolygonSet* surfaceScratch = nullptr, bool refineChords = true);
 
 } // namespace tpc

@@ -4,6 +4,7 @@
 #include "CreaseFollowing.h"
 #include "EdgeCrossings.h"
 #include "ExactCellCriterion.h"
+#include "FaceRefinement.h"
 #include "MeshArrangement.h"
 #include "MeshSolid.h"
 #include "SymmetricEigen.h"
@@ -389,6 +390,184 @@ std::vector<SourceTriangle> ApexFan(const std::vector<Vec3>& loop, const Vec3& a
   return fan;
 }
 
+bool PlaceLoopPoints(const CsgExpression& expression, const PrimitiveSet& primitives, const RootGrid& grid,
+  const std::vector<Crossing>& loop, std::vector<Vec3>& points)
+{
+  const CsgLeaf* leaf = LoneMeshLeaf(expression);
+  points.assign(loop.size(), Vec3());
+  if (!leaf)
+  {
+    return false;
+  }
+  const MeshArrangement arrangement(primitives.Meshes[leaf->Primitive], grid);
+  for (std::size_t k = 0; k < loop.size(); ++k)
+  {
+    const Crossing& c = loop[k];
+    if (c.Kind == CrossingKind::MeshEdge)
+    {
+      points[k] = arrangement.Position(ArrangementPoint::EdgeOnPlane(static_cast<std::uint32_t>(c.Partner >> 32),
+        static_cast<std::uint32_t>(c.Partner & 0xFFFFFFFFu), PlaneAxis(c.Key), PlaneCoordinate(c.Key)));
+    }
+    else if (c.Kind == CrossingKind::SubEdge)
+    {
+      points[k] = PlaceSubEdgeCrossing(c, grid, expression, primitives);
+    }
+    else
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool MeasureChords(const PolygonSet& surface, const RootGrid& grid, const CellBoundary& boundary,
+  const std::vector<Crossing>& loop, const std::vector<Vec3>& points, double stopAbove,
+  std::vector<ChordTile>& chords)
+{
+  const std::size_t m = loop.size();
+  chords.clear();
+  double delta = 0.0;
+  for (std::size_t k = 0; k < m && delta <= stopAbove; ++k)
+  {
+    const int f = CommonFace(loop[k], loop[(k + 1) % m], boundary);
+    if (f < 0)
+    {
+      return false;
+    }
+    const Crossing &p = loop[k], &q = loop[(k + 1) % m];
+    const Vec3 &a = points[k], &b = points[(k + 1) % m];
+    const int axis = f / 2;
+    ChordTile chord;
+    chord.Face = f;
+    for (std::size_t t = 0; t < boundary.Tiles[f].size(); ++t)
+    {
+      const FaceTile& tile = boundary.Tiles[f][t];
+      if (p.Kind == CrossingKind::MeshEdge || q.Kind == CrossingKind::MeshEdge)
+      {
+        // The crease tile whose crease crossing this is (marked in
+        // boundary.Creases with its halves).
+        const bool fromCrease = p.Kind == CrossingKind::MeshEdge;
+        const Crossing& x = fromCrease ? p : q;
+        const std::optional<CreaseTile>* crease =
+          t < boundary.Creases[f].size() ? &boundary.Creases[f][t] : nullptr;
+        if (crease && *crease && (*crease)->X.SameVertex(x))
+        {
+          chord.Tile = t;
+          chord.Deviation = CreaseChordDeviation(**crease, fromCrease ? b : a);
+          break;
+        }
+      }
+      else if (HoldsSubEdge(tile, axis, p) && HoldsSubEdge(tile, axis, q))
+      {
+        chord.Tile = t;
+        chord.Deviation = ChordDeviation(surface, TileBox(grid, boundary, f, tile), a, b);
+        break;
+      }
+    }
+    if (!(chord.Deviation >= 0.0))
+    {
+      return false; // (a NaN from degenerate input would fall out of max and the offsets' order)
+    }
+    chords.push_back(chord);
+    delta = std::max(delta, chord.Deviation);
+  }
+  return true;
+}
+
+int RefineChordTiles(const CsgExpressionPtr& expression, const PrimitiveSet& primitives, const RootGrid& grid,
+  const PolygonSet& surface, bool creaseTiles, double threshold, int levels, CellSignCache& signs,
+  CellBoundary& boundary)
+{
+  const CsgLeaf* leaf = LoneMeshLeaf(*expression);
+  if (!leaf)
+  {
+    return 0;
+  }
+  int splits = 0;
+  for (int round = 0; round < ChordRefinementRounds; ++round)
+  {
+    if (creaseTiles)
+    {
+      MarkCreaseTiles(boundary, *leaf, primitives, grid, [](int, std::size_t) { return true; });
+    }
+    const BoundaryLoopSet loops = TraceBoundaryLoops(boundary);
+    std::vector<Vec3> points;
+    std::vector<ChordTile> chords;
+    if (loops.LoopSizes.size() != 1 || !loops.Consistent ||
+      !PlaceLoopPoints(*expression, primitives, grid, loops.Crossings, points) ||
+      !MeasureChords(surface, grid, boundary, loops.Crossings, points, HUGE_VAL, chords))
+    {
+      return splits;
+    }
+    // The tiles to split, each once, highest index first so that erasing
+    // one leaves the others' indices.
+    std::vector<std::pair<int, std::size_t>> wide;
+    for (const ChordTile& c : chords)
+    {
+      if (c.Tile == ChordTile::NoTile)
+      {
+        continue;
+      }
+      const FaceTile& t = boundary.Tiles[c.Face][c.Tile];
+      // (Crease tiles stay whole: header, Chords refined.)
+      const bool creaseTile = c.Tile < boundary.Creases[c.Face].size() && boundary.Creases[c.Face][c.Tile];
+      if (c.Deviation > threshold && !creaseTile && t.U1 - t.U0 >= 2 && t.V1 - t.V0 >= 2)
+      {
+        wide.emplace_back(c.Face, c.Tile);
+      }
+    }
+    std::sort(wide.begin(), wide.end());
+    wide.erase(std::unique(wide.begin(), wide.end()), wide.end());
+    int splitNow = 0;
+    for (auto w = wide.rbegin(); w != wide.rend(); ++w)
+    {
+      const int f = w->first, axis = f / 2;
+      const LatticeIndex plane = boundary.Base[axis] + (f % 2 ? boundary.Size : 0);
+      const FaceTile t = boundary.Tiles[f][w->second];
+      const LatticeIndex um = t.U0 + (t.U1 - t.U0) / 2, vm = t.V0 + (t.V1 - t.V0) / 2;
+      std::vector<FaceTile> quadrants;
+      bool passed = true;
+      for (const FaceTile& q : { FaceTile{ t.U0, t.V0, um, vm }, FaceTile{ um, t.V0, t.U1, vm },
+             FaceTile{ t.U0, vm, um, t.V1 }, FaceTile{ um, vm, t.U1, t.V1 } })
+      {
+        const FaceRefinementResult r = RefineFace(expression, primitives, grid, axis, plane, q, levels, signs);
+        passed = passed && !r.Tiles.empty();
+        quadrants.insert(quadrants.end(), r.Tiles.begin(), r.Tiles.end());
+      }
+      if (!passed)
+      {
+        continue;
+      }
+      std::vector<FaceTile>& tiles = boundary.Tiles[f];
+      tiles.erase(tiles.begin() + static_cast<std::ptrdiff_t>(w->second));
+      tiles.insert(tiles.end(), quadrants.begin(), quadrants.end());
+      if (w->second < boundary.Creases[f].size())
+      {
+        boundary.Creases[f].clear(); // (marked again on the finer tiles)
+      }
+      for (const FaceTile& q : quadrants)
+      {
+        for (int c = 0; c < 4; ++c)
+        {
+          const PointKey key = TileCorner(axis, plane, q, c);
+          boundary.Points.emplace_back(key, signs.Inside(key));
+        }
+      }
+      ++splitNow;
+    }
+    splits += splitNow;
+    if (splitNow == 0)
+    {
+      break;
+    }
+  }
+  if (creaseTiles)
+  {
+    MarkCreaseTiles(boundary, *leaf, primitives, grid, [](int, std::size_t) { return true; });
+  }
+  return splits;
+}
+
 double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSet& primitives,
   const RootGrid& grid, const Box3& cell, const CellBoundary& boundary, const BoundaryLoopSet& loops,
   double tolerance, AdaptiveOctree::MeshCellPrediction& prediction, const PolygonSet* given,
@@ -404,69 +583,24 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
   const PolygonSet& surface = given ? *given : computed;
   const std::vector<Crossing>& loop = loops.Crossings;
   const std::size_t m = loop.size();
-  std::vector<Vec3> points(m);
-  const MeshArrangement arrangement(primitives.Meshes[leaf->Primitive], grid);
-  for (std::size_t k = 0; k < m; ++k)
+  std::vector<Vec3> points;
+  if (!PlaceLoopPoints(expression, primitives, grid, loop, points))
   {
-    const Crossing& c = loop[k];
-    if (c.Kind == CrossingKind::MeshEdge)
-    {
-      points[k] = arrangement.Position(ArrangementPoint::EdgeOnPlane(static_cast<std::uint32_t>(c.Partner >> 32),
-        static_cast<std::uint32_t>(c.Partner & 0xFFFFFFFFu), PlaneAxis(c.Key), PlaneCoordinate(c.Key)));
-    }
-    else if (c.Kind == CrossingKind::SubEdge)
-    {
-      points[k] = PlaceSubEdgeCrossing(c, grid, expression, primitives);
-    }
-    else
-    {
-      return HUGE_VAL;
-    }
+    return HUGE_VAL;
   }
   // delta_k: each chord against the trace on its tile (on a crease tile,
   // against its half of the trace).
+  std::vector<ChordTile> chords;
+  if (!MeasureChords(surface, grid, boundary, loop, points, tolerance, chords))
+  {
+    return HUGE_VAL;
+  }
   std::vector<double> chordDelta(m, HUGE_VAL);
   double delta = 0.0;
-  for (std::size_t k = 0; k < m && delta <= tolerance; ++k)
+  for (std::size_t k = 0; k < chords.size(); ++k)
   {
-    const int f = CommonFace(loop[k], loop[(k + 1) % m], boundary);
-    if (f < 0)
-    {
-      return HUGE_VAL;
-    }
-    const Crossing &p = loop[k], &q = loop[(k + 1) % m];
-    const Vec3 &a = points[k], &b = points[(k + 1) % m];
-    const int axis = f / 2;
-    double chord = HUGE_VAL;
-    for (std::size_t k = 0; k < boundary.Tiles[f].size(); ++k)
-    {
-      const FaceTile& t = boundary.Tiles[f][k];
-      if (p.Kind == CrossingKind::MeshEdge || q.Kind == CrossingKind::MeshEdge)
-      {
-        // The crease tile whose crease crossing this is (marked in
-        // boundary.Creases with its halves).
-        const bool fromCrease = p.Kind == CrossingKind::MeshEdge;
-        const Crossing& x = fromCrease ? p : q;
-        const std::optional<CreaseTile>* crease =
-          k < boundary.Creases[f].size() ? &boundary.Creases[f][k] : nullptr;
-        if (crease && *crease && (*crease)->X.SameVertex(x))
-        {
-          chord = CreaseChordDeviation(**crease, fromCrease ? b : a);
-          break;
-        }
-      }
-      else if (HoldsSubEdge(t, axis, p) && HoldsSubEdge(t, axis, q))
-      {
-        chord = ChordDeviation(surface, TileBox(grid, boundary, f, t), a, b);
-        break;
-      }
-    }
-    if (!(chord >= 0.0))
-    {
-      return HUGE_VAL; // (a NaN from degenerate input would fall out of max and the offsets' order)
-    }
-    chordDelta[k] = chord;
-    delta = std::max(delta, chord);
+    chordDelta[k] = chords[k].Deviation;
+    delta = std::max(delta, chords[k].Deviation);
   }
   const double slack = RoundingSlack(*leaf, primitives, cell);
   delta += slack; // (the final points lie on S up to rounding)

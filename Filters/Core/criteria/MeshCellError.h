@@ -103,6 +103,52 @@
 // armadillo - a scan, whose sharp edges are followed too - 21 736 ->
 // 20 124.)
 //
+// Chords refined. Face refinement tiles a face as the topology tests need
+// (FaceRefinement.h), not for the error: a chord across a tile whose trace
+// bends - over a fillet, a hole's rim, a scan's curve - strays from it by
+// delta, and the fan has only tol - delta left (at 1/128 delta was above half
+// the tolerance in 394 of couplingdown's cells that split for their size,
+// 546 of armadillo's). Where the prediction fails with a chord straying more
+// than ChordRefinementShare of the tolerance, the tiles of such chords are
+// split, each into its four quadrants at its midpoint, each quadrant refined
+// by face refinement as any face (RefineFace: its tiles pass the same face
+// tests), and the prediction is made again over the finer loop; the cell
+// keeps the finer tiling only if it then passes (RefineChordTiles,
+// McCompatibility.cxx). Why the rest stands:
+// - The tests. A tiling whose tiles all pass the face tests is one the tests
+//   could have made: the loops traced on it are the cell's loops with more
+//   points on the same traces (each tile corner keeps its exact sign), so
+//   the complex-cell and star-shaped conclusions, drawn from the signs and
+//   the surface, are unchanged.
+// - The neighbour. The cell records its tiling (FaceRefinements); the cell
+//   across a face of the same size records its own. Both refine the face
+//   refinement of the same square by splits of single tiles, each split made
+//   one way (the midpoint, then RefineFace with the same levels), so their
+//   tiles nest or lie apart, and the tiling kept is the finest of both
+//   (MergeFaceTilings, FaceTile.h): each cell's final loop holds its own
+//   loop's points, and E(P') <= E(P) + delta holds for both, as with any
+//   finer neighbour. Where they would not nest the first stays, and the
+//   other's final loop fails FinalLoopRefines: its patch is certified on
+//   its own, as always.
+// - Only where the prediction failed, so cells that pass keep the loop they
+//   have (every chord beyond a quarter of the tolerance split, in every
+//   cell: the turbine 10 960 -> 15 742 triangles at 1/128).
+// - Not in a cell that must draw creases (a scene of one mesh, a crease in
+//   the cell: CreaseFollowing.h). A large cell accepted over finer chords
+//   meets finer neighbours, and its final loop, with their points, may
+//   change the bends at its fan's spokes: on armadillo at 1/64 a depth-4
+//   cell left a sharp edge 1.4 tolerances from any output crease, which no
+//   fan around another crease point fixed. Nor are crease tiles split
+//   (their chords run through the crease, a -> x -> b): with both, far
+//   fewer triangles on CAD parts (couplingdown 12 190 -> 7 884 at 1/128)
+//   but the creases drawn off the input's (at 1/64 the output creases on
+//   input creases fell from 0.47 to 0.15 of them, their length rose from
+//   1.55 to 1.72 times the input's) and that sharp edge - left for the team
+//   to weigh against a crease test of the final patch.
+// Measured at 1/128 (shares of a quarter, 0.2, 0.3, 0.45 of the tolerance
+// tried; 0.45 kept): triangles couplingdown 12 190 -> 11 792, armadillo
+// 20 124 -> 18 360, the turbine 10 960 -> 9 702, fandisk 2 110 -> 1 882.
+//
 // Spokes: a necessary condition, checked before the topology tests (whose
 // face refinement is most of the time spent on large cells that then fail
 // the prediction: on armadillo at 1/64, the cells of levels 1-3 took 40 % of
@@ -164,10 +210,13 @@
 
 #include "AdaptiveOctree.h"
 #include "BoundaryLoops.h"
+#include "CellSignCache.h"
 #include "CreaseFollowing.h"
 #include "CsgExpression.h"
 #include "PolygonHausdorff.h"
 
+#include <cmath>
+#include <cstddef>
 #include <vector>
 
 namespace tpc
@@ -190,6 +239,46 @@ Vec3 MeshCellApex(const PolygonSet& surface, const Box3& cell);
 /// max over S ∩ tile of the distance to the chord [a, b] (`tile` is a face
 /// tile, degenerate along the face's axis).
 double ChordDeviation(const PolygonSet& surface, const Box3& tile, const Vec3& a, const Vec3& b);
+
+/// The points of the loop `loop` as the extraction places them (a crease
+/// crossing on its mesh edge, a sub-edge crossing on its sub-edge), in
+/// `points`; false when a crossing is of another kind.
+bool PlaceLoopPoints(const CsgExpression& expression, const PrimitiveSet& primitives, const RootGrid& grid,
+  const std::vector<Crossing>& loop, std::vector<Vec3>& points);
+
+/// A chord of a loop: the tile it crosses (face, index in boundary.Tiles;
+/// NoTile, and Deviation +inf, where none holds it) and how far the trace
+/// on it strays from it (delta_k; on a crease tile, its half of the trace).
+struct ChordTile
+{
+  static constexpr std::size_t NoTile = static_cast<std::size_t>(-1);
+  int Face = -1;
+  std::size_t Tile = NoTile;
+  double Deviation = HUGE_VAL;
+};
+
+/// Each chord of `loop` (points `points`) on `boundary`, in order, until
+/// one strays more than `stopAbove`; false where a chord has no tile or no
+/// deviation (then the prediction fails).
+bool MeasureChords(const PolygonSet& surface, const RootGrid& grid, const CellBoundary& boundary,
+  const std::vector<Crossing>& loop, const std::vector<Vec3>& points, double stopAbove,
+  std::vector<ChordTile>& chords);
+
+/// The share of the tolerance beyond which a chord's tile is split (header:
+/// Chords refined), and the rounds of splitting (a chord split twice is a
+/// quarter of its tile).
+constexpr double ChordRefinementShare = 0.45;
+constexpr int ChordRefinementRounds = 3;
+
+/// Splits the tiles of `boundary` (a cell of the lone mesh leaf of
+/// `expression`; its crease tiles marked again each round where
+/// `creaseTiles`) whose chord strays more than `threshold` from the trace
+/// on them, each into its quadrants refined by RefineFace (`levels`; a tile
+/// whose quadrants do not all pass stays whole), for ChordRefinementRounds
+/// rounds (header: Chords refined); the number of tiles split.
+int RefineChordTiles(const CsgExpressionPtr& expression, const PrimitiveSet& primitives, const RootGrid& grid,
+  const PolygonSet& surface, bool creaseTiles, double threshold, int levels, CellSignCache& signs,
+  CellBoundary& boundary);
 
 /// E(P) for the patch triangles `patch`: Upper (`slack` added) proven when <=
 /// `giveUp` (+inf beyond it, or when there is nothing to compare), Lower

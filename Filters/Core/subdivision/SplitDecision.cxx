@@ -29,7 +29,8 @@ CellTests TestCell(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveS
   tests.Verdict = TestMcCompatibility(tree, n, primitives, parameters.HausdorffTolerance,
     keepsOnFailure ? std::min(levels, ExactCellFaceRefinementLevels) : levels,
     // (A cell stopped by a limit reports the test it fails: all of them run.)
-    parameters.ProvenFailuresFirst && !limits.AtDepthLimit && !limits.AtCellLimit, surfaceScratch);
+    parameters.ProvenFailuresFirst && !limits.AtDepthLimit && !limits.AtCellLimit, surfaceScratch,
+    parameters.RefineChords);
   if (limits.ToleranceSize && tests.Verdict.Kind == McVerdict::Split)
   {
     tests.Facing = HasFacingSurfaces(expression, primitives, tree.Grid.CellBox(limits.Level, tree.Nodes[n].Ijk),
@@ -58,6 +59,7 @@ bool DecideCell(AdaptiveOctree& tree, std::uint32_t n, const CellTests& tests, c
       tree.MeshCellPredictions[n] = v.MeshPrediction;
     }
     result.SurfaceCells += mine;
+    result.ChordRefinedCells += v.ChordsRefined ? mine : 0;
     result.PlanarSurfaceCells += v.Planar ? mine : 0;
     result.ErrorBoundedCells += v.ErrorBounded ? mine : 0;
     result.OversizedErrorBoundedCells += v.ErrorBounded && v.Oversized ? mine : 0;

@@ -314,7 +314,13 @@ bool LevelByLevel::TestCells(std::vector<CellTests>& tests)
         }
         for (auto& r : v.Refinements)
         {
-          tree.FaceRefinements.emplace(r.first, std::move(r.second)); // the first one stays
+          // (The two cells sharing a face may have refined it differently:
+          // the tiling kept refines both, FaceTile.h.)
+          const auto [entry, added] = tree.FaceRefinements.emplace(r.first, r.second);
+          if (!added)
+          {
+            MergeFaceTilings(entry->second, r.second);
+          }
         }
         this->Result.RefinedFaces +=
           tree.RoleOf(tree.Nodes[this->Active[i]]) == TreeRole::Own ? v.Refinements.size() : 0;

@@ -50,6 +50,11 @@ struct SubdivisionParameters
   /// fails before its branch and bound (Probes). Off only to check that this
   /// changes no cell's fate.
   bool ProvenFailuresFirst = true;
+  /// Chords refined: a cell of one mesh larger than the tolerance whose
+  /// prediction failed with chords far from the trace is predicted again
+  /// with those chords' tiles split (MeshCellError.h: Chords refined). Off to
+  /// measure without it, or to test what it would hide.
+  bool RefineChords = true;
   /// A piece of a split run (ForestPartition.h): the role of each tree of
   /// the root grid; skipped trees stay empty roots. Empty: every tree.
   std::vector<TreeRole> TreeRoles;
@@ -85,6 +90,8 @@ struct SubdivisionResult
   /// ProvenFailuresFirst.
   std::size_t SpokeSplitCells = 0;
   std::size_t ProbeSplitCells = 0;
+  /// Surface cells accepted on a prediction over finer chords (RefineChords).
+  std::size_t ChordRefinedCells = 0;
   /// The proven two-sided Hausdorff bound between the exact surface and the
   /// extracted one over the leaves other than error-bounded cells (those are
   /// certified on their patches: ExtractionResult::CertifiedBound): the
