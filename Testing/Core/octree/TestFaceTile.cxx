@@ -15,9 +15,9 @@ using tpc::FaceTile;
 /// (brute force over the unit squares).
 bool TilesTheSquare(const std::vector<FaceTile>& tiles)
 {
-  for (int u = 0; u < 8; ++u)
+  for (tpc::LatticeIndex u = 0; u < 8; ++u)
   {
-    for (int v = 0; v < 8; ++v)
+    for (tpc::LatticeIndex v = 0; v < 8; ++v)
     {
       const FaceTile unit{ u, v, u + 1, v + 1 };
       const auto holding = std::count_if(
