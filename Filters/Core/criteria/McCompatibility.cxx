@@ -69,7 +69,8 @@ bool TileFaces(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& 
 /// The prediction of mesh cell `n` made again where it failed, over its loop
 /// with the tiles of its wide chords split (RefineChordTiles); where it then
 /// passes, the cell keeps that tiling (`boundary`, and the faces it records)
-/// and that prediction (in `v`). Else `boundary` and `v` stay.
+/// and that prediction (in `v`). Else `boundary` and `v` stay. Where
+/// `creaseTiles`, `boundary`'s crease tiles are marked.
 bool PredictOverFinerChords(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& prims, double tolerance,
   int faceRefinementLevels, bool creaseTiles, bool probesFirst, const PolygonSet& surface, CellSignCache& signs,
   CellBoundary& boundary, McCompatibility& v)
@@ -282,7 +283,7 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     // crease tiles put them in the loops: in a scene of one mesh. Where the
     // fan around the apex S_C's planes give misses one, a fan around a point
     // of a crease may follow them all (MeshCellError.h: Crease apexes).
-    if (IsOneMesh(*tree.SceneExpression))
+    if (oneMesh)
     {
       const CsgLeaf& leaf = *LoneMeshLeaf(*expression);
       const std::vector<CreaseSegment> inCell = CreasesInCell(leaf, prims, box);

@@ -483,13 +483,11 @@ int RefineChordTiles(const CsgExpressionPtr& expression, const PrimitiveSet& pri
   {
     return 0;
   }
+  // (The crease tiles are marked on entry; again after each round that
+  // split tiles.)
   int splits = 0;
   for (int round = 0; round < ChordRefinementRounds; ++round)
   {
-    if (creaseTiles)
-    {
-      MarkCreaseTiles(boundary, *leaf, primitives, grid, [](int, std::size_t) { return true; });
-    }
     const BoundaryLoopSet loops = TraceBoundaryLoops(boundary);
     std::vector<Vec3> points;
     std::vector<ChordTile> chords;
@@ -560,10 +558,10 @@ int RefineChordTiles(const CsgExpressionPtr& expression, const PrimitiveSet& pri
     {
       break;
     }
-  }
-  if (creaseTiles)
-  {
-    MarkCreaseTiles(boundary, *leaf, primitives, grid, [](int, std::size_t) { return true; });
+    if (creaseTiles)
+    {
+      MarkCreaseTiles(boundary, *leaf, primitives, grid, [](int, std::size_t) { return true; });
+    }
   }
   return splits;
 }

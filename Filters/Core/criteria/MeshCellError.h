@@ -272,8 +272,8 @@ constexpr double ChordRefinementShare = 0.45;
 constexpr int ChordRefinementRounds = 3;
 
 /// Splits the tiles of `boundary` (a cell of the lone mesh leaf of
-/// `expression`; its crease tiles marked again each round where
-/// `creaseTiles`) whose chord strays more than `threshold` from the trace
+/// `expression`; where `creaseTiles`, its crease tiles marked on entry, and
+/// marked again after each round that split tiles) whose chord strays more than `threshold` from the trace
 /// on them, each into its quadrants refined by RefineFace (`levels`; a tile
 /// whose quadrants do not all pass stays whole), for ChordRefinementRounds
 /// rounds (header: Chords refined); the number of tiles split.
