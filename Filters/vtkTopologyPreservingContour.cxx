@@ -455,6 +455,7 @@ int vtkTopologyPreservingContour::RequestData(
   parameters.ToleranceIsRelative = this->ToleranceIsRelative;
   parameters.MaximumDepth = this->MaximumDepth;
   parameters.MaximumNumberOfCells = static_cast<std::size_t>(std::max<vtkIdType>(this->MaximumNumberOfCells, 0));
+  parameters.Decimate = this->Decimate;
   tpc::ContourResult result =
     tpc::Contour(std::move(scene), parameters, parallelFor, coreStage, piece, exchange);
   for (const tpc::ContourMessage& m : result.Messages)
@@ -502,6 +503,7 @@ void vtkTopologyPreservingContour::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ToleranceIsRelative: " << this->ToleranceIsRelative << "\n";
   os << indent << "MaximumDepth: " << this->MaximumDepth << "\n";
   os << indent << "MaximumNumberOfCells: " << this->MaximumNumberOfCells << "\n";
+  os << indent << "Decimate: " << this->Decimate << "\n";
   os << indent << "SplitCreases: " << this->SplitCreases << "\n";
   os << indent << "CreaseAngle: " << this->CreaseAngle << "\n";
 }

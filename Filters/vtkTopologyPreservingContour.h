@@ -231,6 +231,28 @@ public:
 
   ///@{
   /**
+   * Decimate the surface after the extraction: vertices are removed by edge
+   * collapses, each one kept only when it is certified - the two-sided
+   * Hausdorff bound to the exact surface stays within Tolerance (each
+   * triangle carries a proven bound, started from its cell's and carried
+   * through every collapse by a branch and bound), no triangle meets another
+   * other than in what they share (exact predicates), the link condition
+   * holds (the topology is kept), and features stay: vertices on creases of
+   * 30 degrees or more, or where two inputs' surfaces meet, move only along
+   * them, corners never, and no collapse makes a new crease. The report
+   * (HausdorffBound, Embedded, TopologyGuaranteed) describes the decimated
+   * surface; its GridCell names the cell of the patch each triangle
+   * descends from, which a decimated triangle may leave. Not applied in a
+   * piece of a distributed run, nor when the extraction was not embedded.
+   * Default: off.
+   */
+  vtkSetMacro(Decimate, bool);
+  vtkGetMacro(Decimate, bool);
+  vtkBooleanMacro(Decimate, bool);
+  ///@}
+
+  ///@{
+  /**
    * Shade creases crisply: give each point of the surface where two or more
    * creases meet (edges whose triangles' normals differ by CreaseAngle
    * degrees or more) one point per wedge of triangles between them, each
@@ -278,6 +300,7 @@ protected:
   bool ToleranceIsRelative = true;
   int MaximumDepth = 40;
   vtkIdType MaximumNumberOfCells = 10000000;
+  bool Decimate = false;
   bool SplitCreases = false;
   double CreaseAngle = 30.0;
 

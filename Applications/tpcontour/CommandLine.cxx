@@ -47,6 +47,8 @@ Options:
       --fill-holes       close the holes of open inputs (the filter's FillHoles,
                          vtkFillHolesFilter; reported as a repair) instead of
                          refusing them
+      --decimate         decimate the surface, every collapse certified: the
+                         Hausdorff bound, embedding, topology and creases kept
       --split-creases    split the surface's points along its creases (edges
                          of 30 degrees or more) for crisp shading: each copy
                          has its side's normal, SurfacePointId maps it back
@@ -187,11 +189,12 @@ std::string ParseOption(const std::string& a, const std::vector<std::string>& ar
     }
     o.MaxCells = static_cast<long long>(x);
   }
-  else if (a == "--batch" || a == "--grids" || a == "--fill-holes" || a == "--split-creases" || a == "--json" || a == "-q" || a == "--quiet")
+  else if (a == "--batch" || a == "--grids" || a == "--fill-holes" || a == "--decimate" || a == "--split-creases" || a == "--json" || a == "-q" || a == "--quiet")
   {
     bool& flag = a == "--batch" ? o.Batch
       : a == "--grids"          ? o.Grids
       : a == "--fill-holes"     ? o.FillHoles
+      : a == "--decimate"       ? o.Decimate
       : a == "--split-creases"  ? o.SplitCreases
       : a == "--json"           ? o.Json
                                 : o.Quiet;

@@ -27,6 +27,7 @@ struct Options
   int MaxDepth = 40;
   long long MaxCells = 10000000;
   bool FillHoles = false;
+  bool Decimate = false;     ///< the filter's Decimate (certified decimation)
   bool SplitCreases = false; ///< the filter's SplitCreases (crisp shading)
   /// Threads to run on; 0: VTK's default, every processor.
   int Threads = 0;

@@ -49,6 +49,7 @@ void Configure(vtkTopologyPreservingContour* filter, const Options& o)
   filter->SetMaximumDepth(o.MaxDepth);
   filter->SetMaximumNumberOfCells(o.MaxCells);
   filter->SetFillHoles(o.FillHoles);
+  filter->SetDecimate(o.Decimate);
   filter->SetSplitCreases(o.SplitCreases);
 }
 

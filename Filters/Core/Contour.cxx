@@ -3,6 +3,7 @@
 #include "ExactCell.h"
 #include "PieceTopology.h"
 #include "SelfIntersection.h"
+#include "TriangleErrorBounds.h"
 
 #include <algorithm>
 #include <cmath>
@@ -395,6 +396,48 @@ bool SubdivideAndExtract(const ImplicitScene& scene, const Box3& rootDomain, int
   return true;
 }
 
+/// The certified decimation (CertifiedDecimation.h), where what it rests on
+/// holds: an embedded surface (the exact check) in which every cell closed
+/// its loops and has its patch, so that each triangle's cell bound holds
+/// (TriangleErrorBounds.h); and a run in one piece, since a split run's
+/// seams are shared with other processes.
+void DecimateSurface(ContourResult& r, double tolerance, const ExactMesh& surface, const ParallelFor& parallelFor,
+  Run& run)
+{
+  const ExtractionResult& e = r.Extraction;
+  if (run.Piece.Pieces != 1)
+  {
+    r.Messages.push_back({ ContourMessage::Level::Warning,
+      "Decimate is not applied in a piece of a distributed run (the pieces' seams are shared with other "
+      "processes): the surface is as extracted. Run in one process to decimate." });
+    return;
+  }
+  if (!r.Embedding.Embedded() || e.InconsistentCells != 0 || e.CellsWithoutPatch != 0)
+  {
+    r.Messages.push_back({ ContourMessage::Level::Warning,
+      "Decimate is not applied: the extracted surface is not embedded or has cells without a patch, and the "
+      "decimation's certificates start from an embedded surface with every cell's bound (see the guarantee's "
+      "reasons); the surface is as extracted." });
+    return;
+  }
+  std::vector<double> bounds = TriangleErrorBounds(r.Placed.Result.Octree, e);
+  DecimationParameters parameters;
+  parameters.Tolerance = tolerance;
+  parameters.Progress = run.Stage(EmbeddingEnd, EmbeddingEnd);
+  r.Decimation = DecimateCertified(r.Extraction.Mesh, bounds, r.TriangleSolid, parameters, surface);
+  if (r.Decimation.Collapses == 0)
+  {
+    return;
+  }
+  // Each collapse was checked exactly against every triangle it could meet;
+  // the whole surface is checked once more, exactly, so that Embedded
+  // describes the surface delivered whatever the bookkeeping did.
+  const TriangleMesh& mesh = r.Extraction.Mesh;
+  const std::size_t improper = CountSelfIntersections(std::vector<Vec3>(mesh.Points.begin(), mesh.Points.end()),
+    std::vector<std::array<std::uint32_t, 3>>(mesh.Triangles.begin(), mesh.Triangles.end()), 1, parallelFor);
+  r.Embedding.ImproperPairs += improper;
+}
+
 /// Pairs of this piece's seam triangles meeting improperly those of the
 /// pieces after it (pieces' triangles can only meet across the seams:
 /// SurfaceEmbedding.h).
@@ -536,7 +579,10 @@ void DecideGuarantee(ContourResult& r, const ContourParameters& p, double tolera
   const ExtractionResult& e = r.Extraction;
   const double certified = run.Collective() ? run.Exchange.Max(e.CertifiedBound) : e.CertifiedBound;
   const std::size_t uncertified = run.Sum(e.UncertifiedCells);
-  report.HausdorffBound = withoutPatch == 0 ? std::max(all.HausdorffBound, certified) : std::nan("");
+  // (A decimated surface's bound is its triangles' largest e_t, at least
+  // their cells' bounds: CertifiedDecimation.h.)
+  report.HausdorffBound =
+    withoutPatch == 0 ? std::max({ all.HausdorffBound, certified, r.Decimation.Bound }) : std::nan("");
   // (NaN compares false: a missing bound withdraws the guarantee too.)
   const bool withinTolerance = report.HausdorffBound <= tolerance * (1.0 + 1e-9);
   report.Embedded = embedding.NotEmbeddedPieces == 0;
@@ -638,6 +684,21 @@ ContourResult Contour(ContourScene scene, const ContourParameters& parameters, c
   }
   result.TriangleSolid = TriangleSolids(
     result.Placed.Result.Octree, result.Extraction.Mesh, implicitScene.Primitives, owners, parallelFor);
+  if (parameters.Decimate)
+  {
+    // (Where the exact surface is one input mesh, the collapses are measured
+    // against it: CertifiedDecimation.h, Against the mesh.)
+    ExactMesh surface;
+    if (scene.Inputs.size() == 1 && scene.Inputs[0].Mesh >= 0 && !parameters.Bounds)
+    {
+      surface.Mesh = &implicitScene.Primitives.Meshes[static_cast<std::size_t>(scene.Inputs[0].Mesh)];
+    }
+    DecimateSurface(result, tolerance, surface, parallelFor, run);
+    if (run.Aborted())
+    {
+      return result;
+    }
+  }
   result.Topology =
     ComputeTopologyReport(result.Extraction.Mesh, parallelFor, run.Stage(EmbeddingEnd, 1.0));
   if (run.Aborted())

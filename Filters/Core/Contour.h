@@ -23,6 +23,7 @@
 #include "SurfaceEmbedding.h"
 #include "SurfaceExtraction.h"
 #include "BestLatticePlacement.h"
+#include "CertifiedDecimation.h"
 #include "TopologyReport.h"
 
 #include <functional>
@@ -87,6 +88,11 @@ struct ContourParameters
   /// At most this many lattice placements (LatticePlacement.h); fewer when
   /// the inputs violate the assumptions or the pieces cannot agree.
   int LatticePlacements = tpc::LatticePlacements;
+  /// Decimate the extracted surface, every collapse certified to keep the
+  /// tolerance, the embedding, the topology and the features
+  /// (CertifiedDecimation.h). Not in a piece of a split run, nor where the
+  /// extraction did not end embedded with a patch in every surface cell.
+  bool Decimate = false;
 };
 
 /// The report every output carries (the filter's field data).
@@ -146,7 +152,8 @@ struct ContourResult
   SubdivisionParameters Parameters; ///< as used (depth cap included)
   PlacedSubdivision Placed;         ///< grid, octree (cells failing the embedding check marked)
   ExtractionResult Extraction;
-  EmbeddingReport Embedding;        ///< of this piece
+  EmbeddingReport Embedding;        ///< of this piece (as extracted, before any decimation)
+  DecimationResult Decimation;      ///< what the decimation did (nothing unless Decimate)
   TopologyReport Topology;          ///< of the whole surface (all pieces)
   ContourReport Report;
   /// Per triangle of the surface: the Id of the input solid whose surface it

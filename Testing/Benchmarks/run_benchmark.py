@@ -55,7 +55,7 @@ ABORT_POINTS = [("inputs", 0.01), ("subdivision", 0.3), ("subdivision", 0.8), ("
 
 
 def run(program, meshes, method, scene, epsilon, threads, cell_size, timeout, max_cells=None, abort_at=None,
-        fingerprint=False, adaptivity=None, measure=False):
+        fingerprint=False, adaptivity=None, measure=False, decimate=False):
     cmd = [program, "--method", method, "--scene", scene, "--epsilon", repr(epsilon),
            "--threads", str(threads), "--meshes", meshes]
     if fingerprint:
@@ -64,6 +64,8 @@ def run(program, meshes, method, scene, epsilon, threads, cell_size, timeout, ma
         cmd += ["--adaptivity", repr(adaptivity)]
     if measure:
         cmd += ["--measure", "1"]
+    if decimate:
+        cmd += ["--decimate", "1"]
     if cell_size:
         cmd += ["--cell-size", repr(cell_size)]
     if max_cells:
@@ -200,15 +202,16 @@ def ranks(a):
 # Issue 17's table: the certified per-cell error against the cells sized by
 # epsilon and OpenVDB, uniform and adaptive.
 ERROR_SCENES = ["sphere", "armadillo", "turbine", "couplingdown", "fandisk", "plate-ellipsoids", "demo-csg"]
-ERROR_METHODS = [("filter now", "tpc", None), ("filter before", "before", None), ("OpenVDB uniform", "vdb", None),
+ERROR_METHODS = [("filter now", "tpc", None), ("filter, Decimate", "decimate", None),
+                 ("filter before", "before", None), ("OpenVDB uniform", "vdb", None),
                  ("OpenVDB adaptivity 0.05", "vdb", 0.05)]
 
 
 def errors(a):
     """Triangles, seconds, the certified bound and the measured two-sided
     Hausdorff distance (sampled on the sphere, CGAL's certified estimate on
-    the scenes of one mesh) relative to epsilon, for this build's filter, an
-    earlier build's (--before PROGRAM), and OpenVDB uniform and with
+    the scenes of one mesh) relative to epsilon, for this build's filter
+    (also with Decimate), an earlier build's (--before PROGRAM), and OpenVDB uniform and with
     adaptivity 0.05 at the filter's finest cell size; ratios to OpenVDB
     uniform."""
     print("Machine:", machine())
@@ -224,9 +227,9 @@ def errors(a):
                     continue
                 program = a.before if method == "before" else a.program
                 cell = results["filter now"].get("cell_size") if method == "vdb" else None
-                results[label] = run(program, a.meshes, "tpc" if method == "before" else method, scene, 1.0 / d, 2,
-                                     cell, 4 * 3600 if method != "vdb" else a.time_limit, adaptivity=adaptivity,
-                                     measure=True)
+                results[label] = run(program, a.meshes, "tpc" if method in ("before", "decimate") else method, scene,
+                                     1.0 / d, 2, cell, 4 * 3600 if method != "vdb" else a.time_limit,
+                                     adaptivity=adaptivity, measure=True, decimate=method == "decimate")
                 print(f"  ran {scene:16} 1/{d:<4} {label:24} {results[label].get('seconds', float('nan')):8.2f} s",
                       file=sys.stderr, flush=True)
             uniform = results["OpenVDB uniform"].get("triangles")

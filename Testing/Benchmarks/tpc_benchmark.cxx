@@ -4,7 +4,7 @@
 //
 //   tpc_benchmark --method tpc|vtk|vdb --scene NAME --epsilon E --threads N
 //                 --meshes DIR [--cell-size H] [--max-depth D] [--max-cells N] [--abort-at P]
-//                 [--fingerprint 1|geometry] [--adaptivity A]
+//                 [--fingerprint 1|geometry] [--adaptivity A] [--decimate 1]
 //
 // tpc: vtkTopologyPreservingContour, epsilon relative to the diagonal of
 //      the scene's domain (Bounds set to it);
@@ -24,6 +24,7 @@
 // keeps it.
 // With --measure 1 on a scene of one mesh, the output's two-sided Hausdorff
 // distance to it, by CGAL (a test oracle; the sphere's is always measured).
+// With --decimate 1 the filter decimates its surface (Decimate).
 #include "BenchmarkScenes.h"
 #include "CgalHausdorff.h"
 
@@ -332,9 +333,10 @@ double Diagonal(const std::array<double, 6>& b)
 }
 
 RunResult RunFilter(const tpcbench::Scene& scene, double epsilon, int maximumDepth, long long maximumCells,
-  double abortAt, const std::string& fingerprint)
+  double abortAt, const std::string& fingerprint, bool decimate)
 {
   vtkNew<vtkTopologyPreservingContour> filter;
+  filter->SetDecimate(decimate);
   ProgressWatch watch;
   watch.Filter = filter;
   watch.AbortAt = abortAt > 0.0 ? abortAt : 2.0;
@@ -552,7 +554,7 @@ int main(int argc, char* argv[])
     {
       std::cerr << "usage: tpc_benchmark --method tpc|vtk|vdb --scene NAME --epsilon E --threads N "
                    "--meshes DIR [--cell-size H] [--max-depth D] [--max-cells N] [--abort-at P] "
-                   "[--fingerprint 1|geometry] [--adaptivity A] [--measure 1]\n";
+                   "[--fingerprint 1|geometry] [--adaptivity A] [--measure 1] [--decimate 1]\n";
       return 1;
     }
   }
@@ -580,7 +582,8 @@ int main(int argc, char* argv[])
       r = RunFilter(scene, epsilon, args.count("--max-depth") ? std::stoi(args["--max-depth"]) : 0,
         args.count("--max-cells") ? std::stoll(args["--max-cells"]) : 0,
         args.count("--abort-at") ? std::stod(args["--abort-at"]) : 0.0,
-        args.count("--fingerprint") ? args["--fingerprint"] : std::string());
+        args.count("--fingerprint") ? args["--fingerprint"] : std::string(),
+        args.count("--decimate") && args["--decimate"] == "1");
     }
     else if (method == "vtk")
     {

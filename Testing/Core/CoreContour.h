@@ -78,12 +78,14 @@ inline tpc::ContourScene ContourSceneOf(const Scene& scene)
 /// over `bounds` (Region: grown by the usual margin, not clipped), the
 /// tolerance relative to its diagonal, trying up to `placements` lattice
 /// placements, refining at most to `maxDepth` (the product's default, the
-/// lattice's end). The test scenes' meshes meet the paper's assumptions.
+/// lattice's end), decimated if asked (through the cells' bounds: the scene
+/// is one term). The test scenes' meshes meet the paper's assumptions.
 inline ContourRun Contour(const Scene& scene, const tpc::Box3& bounds, double relativeTolerance,
   int maxDepth = tpc::DeepestMaximumDepth, int placements = tpc::LatticePlacements, std::size_t maxCells = 10000000,
-  const tpc::ProgressCallback& progress = nullptr)
+  const tpc::ProgressCallback& progress = nullptr, bool decimate = false)
 {
   tpc::ContourParameters p;
+  p.Decimate = decimate;
   p.Region = bounds;
   p.Tolerance = relativeTolerance;
   p.MaximumDepth = maxDepth;

@@ -10,6 +10,8 @@
 //      perturbed, with triangles dropped, duplicated or flipped and vertices
 //      moved or merged - or plain random triangles;
 //   3. a valid mesh combined with primitives.
+// Half the inputs are decimated (Decimate: CertifiedDecimation.h), with the
+// same properties required of the decimated surface.
 // Properties, on every input: no crash and no sanitizer report; bounded time
 // (small depth and cell limits); a closed, manifold, oriented output with a
 // consistent extraction even where limits stopped refinement; the core's exact
@@ -44,16 +46,16 @@ struct Tally
 {
   long Scenes[4] = { 0, 0, 0, 0 };
   long Contoured = 0, NonEmpty = 0, Guaranteed = 0, TopologyChecked = 0, MeshesRefused = 0, TightLimits = 0;
-  long NotEmbedded = 0, WithExactCells = 0, OverTime = 0;
+  long NotEmbedded = 0, WithExactCells = 0, OverTime = 0, Decimated = 0;
   ~Tally()
   {
     std::fprintf(stderr,
       "FuzzCore: %ld random CSG, %ld known topology, %ld meshes, %ld meshes with primitives; "
       "%ld contoured (%ld non-empty, %ld guaranteed, %ld not embedded where a limit stopped cells, %ld with "
       "exact cells), %ld topologies checked against the reference, %ld broken meshes refused; %ld inputs with "
-      "tight limits; %ld stopped after %d s\n",
+      "tight limits; %ld stopped after %d s; %ld decimated\n",
       Scenes[0], Scenes[1], Scenes[2], Scenes[3], Contoured, NonEmpty, Guaranteed, NotEmbedded, WithExactCells,
-      TopologyChecked, MeshesRefused, TightLimits, OverTime, SceneSeconds);
+      TopologyChecked, MeshesRefused, TightLimits, OverTime, SceneSeconds, Decimated);
   }
 } tally;
 
@@ -150,6 +152,7 @@ tpctest::ContourRun RunAndCheck(FuzzedDataProvider& in, const tpctest::Scene& sc
   const double tolerance = 0.3 - Number(in, 0.0, 0.26);
   const int depth = tightLimits ? 2 + in.ConsumeIntegralInRange<int>(0, 3) : 9 - in.ConsumeIntegralInRange<int>(0, 5);
   const std::size_t cells = tightLimits ? 3000 : 300000;
+  const bool decimate = in.ConsumeBool();
   if (std::getenv("TPC_FUZZ_VERBOSE"))
   {
     Describe(scene, tolerance * bounds.Diagonal(), depth, cells, tpctest::GrownDomain(bounds));
@@ -160,8 +163,9 @@ tpctest::ContourRun RunAndCheck(FuzzedDataProvider& in, const tpctest::Scene& sc
   // angle fail the face tests in every tile at every level; see the note on
   // issue 17. The count is printed at exit.)
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(SceneSeconds);
-  r = tpctest::Contour(scene, bounds, tolerance, depth, 1, cells,
-    [deadline](double) { return std::chrono::steady_clock::now() > deadline; });
+  r = tpctest::Contour(
+    scene, bounds, tolerance, depth, 1, cells,
+    [deadline](double) { return std::chrono::steady_clock::now() > deadline; }, decimate);
   if (r.Aborted)
   {
     ++tally.OverTime;
@@ -180,6 +184,7 @@ tpctest::ContourRun RunAndCheck(FuzzedDataProvider& in, const tpctest::Scene& sc
   }
   Require(r.Contoured, "every scene with a solid is contoured");
   ++tally.Contoured;
+  tally.Decimated += decimate ? 1 : 0;
   tally.NonEmpty += r.Extraction.Mesh.Triangles.empty() ? 0 : 1;
   tally.Guaranteed += tpctest::Guaranteed(r) ? 1 : 0;
   tally.NotEmbedded += r.Embedding.Embedded() ? 0 : 1;
@@ -200,6 +205,8 @@ tpctest::ContourRun RunAndCheck(FuzzedDataProvider& in, const tpctest::Scene& sc
   Require(r.Subdivision.HausdorffBound <= r.Tolerance * (1 + 1e-9) || r.Subdivision.UnresolvedCells > 0 ||
       r.Extraction.Mesh.Triangles.empty(),
     "Hausdorff bound within the tolerance when every cell passed");
+  Require(!r.Guaranteed || r.HausdorffBound <= r.Tolerance * (1 + 1e-9),
+    "the reported bound (of the decimated surface too) within the tolerance where guaranteed");
   return r;
 }
 

@@ -278,6 +278,18 @@ check(ids is not None and plain.GetOutput().GetPointData().GetArray("SurfacePoin
       and split.GetOutput().GetNumberOfPoints() > plain.GetOutput().GetNumberOfPoints()
       and max(ids.GetValue(i) for i in range(ids.GetNumberOfTuples())) + 1 == plain.GetOutput().GetNumberOfPoints(),
       f"--split-creases: the cube's points split along its edges ({code}, {err.strip()[:200]})")
+# --decimate (the filter's Decimate, CertifiedDecimation.h): knot1 at 1/64,
+# the same topology, still guaranteed and within the tolerance, on at least
+# 4 times fewer triangles (measured 2 232 -> 274).
+code, out, err = run(os.path.join(meshes, "knot1.off"), "-t", "1/64", "--json", "-o", "knot1-plain.vtp")
+plain_report = json.loads(out) if code == 0 else {}
+code, out, err = run(os.path.join(meshes, "knot1.off"), "-t", "1/64", "--decimate", "--json", "-o", "knot1-decimated.vtp")
+decimated = json.loads(out) if code == 0 else {}
+check(code == 0 and decimated.get("guaranteed") and decimated.get("genus") == 1 and decimated.get("components") == 1
+      and decimated.get("hausdorff_bound", 1e9) <= decimated.get("absolute_tolerance", 0) * (1 + 1e-9)
+      and 4 * decimated.get("triangles", 1e9) < plain_report.get("triangles", 0),
+      f"--decimate: knot1 guaranteed, genus 1, within the tolerance, {plain_report.get('triangles')} -> "
+      f"{decimated.get('triangles')} triangles ({code}, {err.strip()[:200]})")
 with open("bad-reference.obj", "w") as f:
     f.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\nf 1/1 3/1 9/1\nf 2 3 4\n")
 code, _, err = run("bad-reference.obj")

@@ -17,6 +17,7 @@
 #include "BoundedVector.h"
 #include "Vector3.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <initializer_list>
@@ -32,6 +33,70 @@ namespace tpc
 /// 32 is far beyond what that can reach. (The polygons are then copied into
 /// a PolygonSet, which has no such bound.)
 using ClippedCorners = BoundedVector<Vec3, 32>;
+
+/// The part of the polygon `points` with x[axis] <= value (`below`) or >=
+/// value (Sutherland-Hodgman) in `out`; new points get exactly x[axis] =
+/// value.
+template <std::size_t Capacity>
+void ClipToHalfSpace(const BoundedVector<Vec3, Capacity>& points, BoundedVector<Vec3, Capacity>& out, int axis,
+  double value, bool below)
+{
+  out.clear();
+  const std::size_t m = points.size();
+  const auto kept = [&](const Vec3& p) { return below ? p[axis] <= value : p[axis] >= value; };
+  for (std::size_t i = 0; i < m; ++i)
+  {
+    const Vec3& a = points[i];
+    const Vec3& b = points[(i + 1) % m];
+    if (kept(a))
+    {
+      out.push_back(a);
+    }
+    if (kept(a) != kept(b) && m > 1)
+    {
+      const double t = (value - a[axis]) / (b[axis] - a[axis]);
+      Vec3 p = a + (b - a) * t;
+      p[axis] = value;
+      out.push_back(p);
+    }
+  }
+}
+
+/// The polygon `points` clipped to the closed box (possibly degenerate), in
+/// place: a convex polygon gains at most one corner per side (and rounding
+/// rarely one more: ClippedCorners), so Capacity must exceed its count by 6
+/// and some. A side the polygon lies within is skipped, one it lies beyond
+/// empties it: what clipping would give, without building it (most triangles
+/// of a cell cross no side or one).
+template <std::size_t Capacity>
+void ClipToBox(BoundedVector<Vec3, Capacity>& points, const Box3& box)
+{
+  BoundedVector<Vec3, Capacity> clipped;
+  for (int axis = 0; axis < 3 && !points.empty(); ++axis)
+  {
+    double lo = points[0][axis], hi = lo;
+    for (const Vec3& p : points)
+    {
+      lo = std::min(lo, p[axis]);
+      hi = std::max(hi, p[axis]);
+    }
+    if (lo > box.hi[axis] || hi < box.lo[axis])
+    {
+      points.clear();
+      return;
+    }
+    if (hi > box.hi[axis])
+    {
+      ClipToHalfSpace(points, clipped, axis, box.hi[axis], true);
+      points = clipped;
+    }
+    if (lo < box.lo[axis] && !points.empty())
+    {
+      ClipToHalfSpace(points, clipped, axis, box.lo[axis], false);
+      points = clipped;
+    }
+  }
+}
 
 /// A run of points in a PolygonSet (a polygon's corners, or its edges'
 /// inward normals).

@@ -1,0 +1,918 @@
+#include "CertifiedDecimation.h"
+
+#include "ConvexPolygons.h"
+#include "PolygonHausdorff.h"
+#include "SelfIntersection.h"
+#include "SharpCreases.h"
+#include "TriangleGrid.h"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <functional>
+#include <queue>
+
+namespace tpc
+{
+namespace
+{
+
+bool Holds(const Triangle& t, std::uint32_t v)
+{
+  return t[0] == v || t[1] == v || t[2] == v;
+}
+
+Triangle Replaced(Triangle t, std::uint32_t v, std::uint32_t u)
+{
+  for (std::uint32_t& x : t)
+  {
+    x = x == v ? u : x;
+  }
+  return t;
+}
+
+/// The vertex of `t` that is neither a nor b.
+std::uint32_t Opposite(const Triangle& t, std::uint32_t a, std::uint32_t b)
+{
+  for (const std::uint32_t x : t)
+  {
+    if (x != a && x != b)
+    {
+      return x;
+    }
+  }
+  return t[0];
+}
+
+/// Moving From onto To; cheaper first (CertifiedDecimation.h: Order).
+struct Candidate
+{
+  double Cost = 0.0;
+  double Length = 0.0;
+  std::uint32_t From = 0;
+  std::uint32_t To = 0;
+  std::uint32_t Stamp = 0;
+
+  bool operator>(const Candidate& o) const
+  {
+    return this->Cost != o.Cost ? this->Cost > o.Cost : this->Length > o.Length;
+  }
+};
+
+/// What one collapse of From onto To would do: the star's triangles that
+/// vanish (holding both), those that take To for From, and what they become.
+struct Collapse
+{
+  std::uint32_t From = 0;
+  std::uint32_t To = 0;
+  std::vector<std::uint32_t> Vanishing;
+  std::vector<std::uint32_t> Kept;
+  std::vector<Triangle> Made; ///< Kept's triangles after the move, in Kept's order
+};
+
+class Decimator
+{
+public:
+  Decimator(TriangleMesh& mesh, std::vector<double>& bounds, ReleasableArray<std::int32_t>& labels,
+    const DecimationParameters& parameters, const ExactMesh& surface);
+
+  void Run();
+  void Compact();
+
+  DecimationResult Result;
+
+private:
+  Vec3 Normal(const Triangle& t) const { return Normalized(Cross(this->P[t[1]] - this->P[t[0]], this->P[t[2]] - this->P[t[0]])); }
+  std::vector<std::uint32_t> Neighbours(std::uint32_t v) const;
+  /// The live triangles holding both a and b (two in a closed manifold).
+  std::vector<std::uint32_t> EdgeTriangles(std::uint32_t a, std::uint32_t b) const;
+  bool IsFeature(std::uint32_t a, std::uint32_t b) const;
+  std::int32_t LabelOf(std::uint32_t t) const { return this->Labels.size() == this->Triangles.size() ? this->Labels[t] : 0; }
+  bool Bent(const Vec3& n1, std::int32_t label1, const Vec3& n2, std::int32_t label2) const
+  {
+    return Dot(n1, n2) < this->CosFeatureAngle || label1 != label2;
+  }
+  void Queue(std::uint32_t v);
+  bool Try(std::uint32_t from, std::uint32_t to);
+  bool Describe(Collapse& c) const;
+  bool MovesAlongFeatures(const Collapse& c) const;
+  bool LinkConditionHolds(const Collapse& c) const;
+  bool KeepsShape(const Collapse& c) const;
+  bool MakesNoFeature(const Collapse& c) const;
+  bool KeepsFeatures(const Collapse& c) const;
+  bool KeepsCreasesFollowed(const Collapse& c);
+  /// Is x y a feature edge once `c` is made (x, y named after it)?
+  bool IsFeatureAfter(const Collapse& c, std::uint32_t x, std::uint32_t y) const;
+  double Certify(const Collapse& c);
+  double CertifyThroughBounds(const Collapse& c) const;
+  double CertifyAgainstMesh(const Collapse& c);
+  /// Calls visit(o) once for each live triangle but the star's whose box
+  /// overlaps `box`.
+  template <typename Visit>
+  void ForEachOther(const Collapse& c, const Box3& box, Visit&& visit);
+  /// S's triangles whose boxes overlap `box`, as polygons (clipped to `clip`
+  /// when given) in `polygons`, or fanned into `pieces`.
+  void NearSurface(const Box3& box, PolygonSet* polygons, std::vector<SourceTriangle>* pieces);
+  bool MeetsAnother(const Collapse& c);
+  void Apply(const Collapse& c, double bound);
+
+  TriangleMesh& Mesh;
+  std::vector<double>& Bounds;
+  ReleasableArray<std::int32_t>& Labels;
+  DecimationParameters Parameters;
+  double CosFeatureAngle = 0.0;
+  double Slack = 0.0;
+  const Vec3* P = nullptr;
+  std::vector<Triangle> Triangles;
+  std::vector<char> Alive;
+  /// The live triangles around each vertex.
+  std::vector<std::vector<std::uint32_t>> Around;
+  /// Bumped when a vertex's star changes: older candidates are stale.
+  std::vector<std::uint32_t> Stamp;
+  std::vector<std::uint32_t> Seen;
+  std::uint32_t SeenMark = 0;
+  TriangleGrid Grid;
+  ExactMesh Surface;
+  /// S's triangles, when collapses are certified against S.
+  TriangleGrid SurfaceGrid;
+  std::vector<std::uint32_t> SurfaceSeen;
+  std::uint32_t SurfaceMark = 0;
+  /// S's sharp creases (SharpCreases.h), when S is known.
+  std::vector<EdgeSegment> Sharp;
+  TriangleGrid SharpGrid;
+  std::vector<std::uint32_t> SharpSeen;
+  std::uint32_t SharpMark = 0;
+  std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> Heap;
+};
+
+Box3 PointsBox(const ReleasableArray<Vec3>& points)
+{
+  return points.empty() ? Box3{} : BoundsOf(points.data(), points.size());
+}
+
+/// Bucket width: a few tolerances, but no more than 2^20 buckets across the
+/// surface's box on any axis (TriangleGrid keys hold 21 bits per axis).
+double BucketWidth(const Box3& box, double tolerance)
+{
+  double widest = 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    widest = std::max(widest, box.Width(a));
+  }
+  return std::max({ 4.0 * tolerance, widest / 1048576.0, DBL_MIN });
+}
+
+Box3 GrownBy(Box3 box, double margin)
+{
+  for (int a = 0; a < 3; ++a)
+  {
+    box.lo[a] -= margin;
+    box.hi[a] += margin;
+  }
+  return box;
+}
+
+Box3 BoxOf(const Vec3* points, const std::vector<Triangle>& triangles)
+{
+  Box3 box = TriangleBox(points, triangles.front());
+  for (const Triangle& t : triangles)
+  {
+    const Box3 b = TriangleBox(points, t);
+    for (int a = 0; a < 3; ++a)
+    {
+      box.lo[a] = std::min(box.lo[a], b.lo[a]);
+      box.hi[a] = std::max(box.hi[a], b.hi[a]);
+    }
+  }
+  return box;
+}
+
+Decimator::Decimator(TriangleMesh& mesh, std::vector<double>& bounds, ReleasableArray<std::int32_t>& labels,
+  const DecimationParameters& parameters, const ExactMesh& surface)
+  : Mesh(mesh)
+  , Bounds(bounds)
+  , Labels(labels)
+  , Parameters(parameters)
+  , CosFeatureAngle(std::cos(parameters.FeatureAngle * M_PI / 180.0))
+  , P(mesh.Points.data())
+  , Triangles(mesh.Triangles.begin(), mesh.Triangles.end())
+  , Alive(mesh.Triangles.size(), 1)
+  , Around(mesh.Points.size())
+  , Stamp(mesh.Points.size(), 0)
+  , Seen(mesh.Triangles.size(), 0)
+  , Grid(PointsBox(mesh.Points).lo, BucketWidth(PointsBox(mesh.Points), parameters.Tolerance))
+  , Surface(surface)
+  , SurfaceGrid(PointsBox(mesh.Points).lo, BucketWidth(PointsBox(mesh.Points), parameters.Tolerance))
+  , SharpGrid(PointsBox(mesh.Points).lo, BucketWidth(PointsBox(mesh.Points), parameters.Tolerance))
+{
+  // Distances are computed in floating point (PolygonHausdorff.h): the same
+  // slack as the cells' certificates (MeshCellError.cxx, RoundingSlack).
+  const Box3 box = PointsBox(mesh.Points);
+  this->Slack = 4096.0 * DBL_EPSILON * box.Magnitude() + 1e-12 * box.Diagonal();
+  for (std::uint32_t t = 0; t < this->Triangles.size(); ++t)
+  {
+    for (const std::uint32_t v : this->Triangles[t])
+    {
+      this->Around[v].push_back(t);
+    }
+    this->Grid.Insert(t, TriangleBox(this->P, this->Triangles[t]));
+  }
+  this->Result.TrianglesBefore = this->Triangles.size();
+  for (const double e : bounds)
+  {
+    this->Result.Bound = std::max(this->Result.Bound, e);
+  }
+  if (surface.Mesh)
+  {
+    const std::vector<Triangle>& triangles = surface.Mesh->Triangles();
+    for (std::uint32_t t = 0; t < triangles.size(); ++t)
+    {
+      this->SurfaceGrid.Insert(t, TriangleBox(surface.Mesh->Points().data(), triangles[t]));
+    }
+    this->SurfaceSeen.assign(triangles.size(), 0);
+    this->Sharp = SharpEdges(*surface.Mesh, SharpCreaseAngle);
+    for (std::uint32_t k = 0; k < this->Sharp.size(); ++k)
+    {
+      const Vec3 ends[2] = { this->Sharp[k].A, this->Sharp[k].B };
+      this->SharpGrid.Insert(k, BoundsOf(ends, 2));
+    }
+    this->SharpSeen.assign(this->Sharp.size(), 0);
+  }
+}
+
+std::vector<std::uint32_t> Decimator::Neighbours(std::uint32_t v) const
+{
+  std::vector<std::uint32_t> n;
+  for (const std::uint32_t t : this->Around[v])
+  {
+    for (const std::uint32_t x : this->Triangles[t])
+    {
+      if (x != v)
+      {
+        n.push_back(x);
+      }
+    }
+  }
+  std::sort(n.begin(), n.end());
+  n.erase(std::unique(n.begin(), n.end()), n.end());
+  return n;
+}
+
+std::vector<std::uint32_t> Decimator::EdgeTriangles(std::uint32_t a, std::uint32_t b) const
+{
+  std::vector<std::uint32_t> both;
+  for (const std::uint32_t t : this->Around[a])
+  {
+    if (Holds(this->Triangles[t], b))
+    {
+      both.push_back(t);
+    }
+  }
+  return both;
+}
+
+bool Decimator::IsFeature(std::uint32_t a, std::uint32_t b) const
+{
+  const std::vector<std::uint32_t> both = this->EdgeTriangles(a, b);
+  if (both.size() != 2)
+  {
+    return true; // (not an edge of a closed manifold: never moved)
+  }
+  return this->Bent(this->Normal(this->Triangles[both[0]]), this->LabelOf(both[0]),
+    this->Normal(this->Triangles[both[1]]), this->LabelOf(both[1]));
+}
+
+void Decimator::Queue(std::uint32_t v)
+{
+  for (const std::uint32_t u : this->Neighbours(v))
+  {
+    Candidate c;
+    c.From = v;
+    c.To = u;
+    c.Stamp = this->Stamp[v];
+    const Vec3 move = this->P[u] - this->P[v];
+    c.Length = Norm(move);
+    for (const std::uint32_t t : this->Around[v])
+    {
+      if (!Holds(this->Triangles[t], u))
+      {
+        c.Cost = std::max(c.Cost, std::fabs(Dot(this->Normal(this->Triangles[t]), move)));
+      }
+    }
+    this->Heap.push(c);
+  }
+}
+
+bool Decimator::Describe(Collapse& c) const
+{
+  for (const std::uint32_t t : this->Around[c.From])
+  {
+    if (Holds(this->Triangles[t], c.To))
+    {
+      c.Vanishing.push_back(t);
+    }
+    else
+    {
+      c.Kept.push_back(t);
+      c.Made.push_back(Replaced(this->Triangles[t], c.From, c.To));
+    }
+  }
+  return c.Vanishing.size() == 2 && !c.Kept.empty();
+}
+
+bool Decimator::MovesAlongFeatures(const Collapse& c) const
+{
+  std::size_t features = 0;
+  bool towardsTo = false;
+  for (const std::uint32_t w : this->Neighbours(c.From))
+  {
+    if (this->IsFeature(c.From, w))
+    {
+      ++features;
+      towardsTo |= w == c.To;
+    }
+  }
+  return features == 0 || (features == 2 && towardsTo);
+}
+
+bool Decimator::LinkConditionHolds(const Collapse& c) const
+{
+  const std::uint32_t w1 = Opposite(this->Triangles[c.Vanishing[0]], c.From, c.To);
+  const std::uint32_t w2 = Opposite(this->Triangles[c.Vanishing[1]], c.From, c.To);
+  if (w1 == w2)
+  {
+    return false;
+  }
+  const std::vector<std::uint32_t> a = this->Neighbours(c.From), b = this->Neighbours(c.To);
+  std::vector<std::uint32_t> common;
+  std::set_intersection(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(common));
+  if (common.size() != 2)
+  {
+    return false;
+  }
+  // (The one edge both links could share: w1 w2, when both triangles
+  // From w1 w2 and To w1 w2 exist - a tetrahedron.)
+  auto hasTriangle = [this, w1, w2](std::uint32_t x) {
+    for (const std::uint32_t t : this->Around[x])
+    {
+      if (Holds(this->Triangles[t], w1) && Holds(this->Triangles[t], w2))
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  return !(hasTriangle(c.From) && hasTriangle(c.To));
+}
+
+bool Decimator::KeepsShape(const Collapse& c) const
+{
+  for (std::size_t i = 0; i < c.Made.size(); ++i)
+  {
+    const Triangle& t = c.Made[i];
+    if (TriangleIsDegenerate(this->P[t[0]], this->P[t[1]], this->P[t[2]]) ||
+      !(Dot(this->Normal(t), this->Normal(this->Triangles[c.Kept[i]])) > 0.0))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool Decimator::KeepsFeatures(const Collapse& c) const
+{
+  // Every feature edge of the star but the one moved along keeps being one
+  // (as its image: From's edges become To's).
+  for (const std::uint32_t t : c.Kept)
+  {
+    const Triangle& old = this->Triangles[t];
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::uint32_t x = old[k], y = old[(k + 1) % 3];
+      if (this->IsFeature(x, y) && !this->IsFeatureAfter(c, x == c.From ? c.To : x, y == c.From ? c.To : y))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+bool Decimator::IsFeatureAfter(const Collapse& c, std::uint32_t x, std::uint32_t y) const
+{
+  std::vector<Vec3> normals;
+  std::vector<std::int32_t> labels;
+  for (std::size_t j = 0; j < c.Made.size(); ++j)
+  {
+    if (Holds(c.Made[j], x) && Holds(c.Made[j], y))
+    {
+      normals.push_back(this->Normal(c.Made[j]));
+      labels.push_back(this->LabelOf(c.Kept[j]));
+    }
+  }
+  for (const std::uint32_t o : this->Around[x])
+  {
+    if (!Holds(this->Triangles[o], c.From) && Holds(this->Triangles[o], y))
+    {
+      normals.push_back(this->Normal(this->Triangles[o]));
+      labels.push_back(this->LabelOf(o));
+    }
+  }
+  return normals.size() != 2 || this->Bent(normals[0], labels[0], normals[1], labels[1]);
+}
+
+bool Decimator::KeepsCreasesFollowed(const Collapse& c)
+{
+  if (this->Sharp.empty())
+  {
+    return true;
+  }
+  // Removed: feature edges of the star that are not feature edges after
+  // (gone, or no longer bent). Only edges with a triangle in the star change
+  // (SharpCreases.h); most collapses remove none.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> starEdges;
+  for (const std::vector<std::uint32_t>* part : { &c.Vanishing, &c.Kept })
+  {
+    for (const std::uint32_t t : *part)
+    {
+      const Triangle& old = this->Triangles[t];
+      for (int k = 0; k < 3; ++k)
+      {
+        starEdges.emplace_back(std::min(old[k], old[(k + 1) % 3]), std::max(old[k], old[(k + 1) % 3]));
+      }
+    }
+  }
+  std::sort(starEdges.begin(), starEdges.end());
+  starEdges.erase(std::unique(starEdges.begin(), starEdges.end()), starEdges.end());
+  std::vector<EdgeSegment> removed;
+  for (const auto& [x, y] : starEdges)
+  {
+    const bool now = x != c.From && y != c.From &&
+      this->IsFeatureAfter(c, x == c.From ? c.To : x, y == c.From ? c.To : y);
+    if (!now && this->IsFeature(x, y))
+    {
+      removed.push_back({ this->P[x], this->P[y] });
+    }
+  }
+  if (removed.empty())
+  {
+    return true;
+  }
+  // The sharp creases within reach of a removed edge, and the feature edges
+  // after within reach of those (from the triangles there).
+  const double reach = this->Parameters.Tolerance - this->Slack;
+  Box3 near{ removed.front().A, removed.front().A };
+  for (const EdgeSegment& e : removed)
+  {
+    for (const Vec3& p : { e.A, e.B })
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        near.lo[a] = std::min(near.lo[a], p[a]);
+        near.hi[a] = std::max(near.hi[a], p[a]);
+      }
+    }
+  }
+  const Box3 region = GrownBy(near, this->Parameters.Tolerance);
+  std::vector<EdgeSegment> pieces;
+  ++this->SharpMark;
+  this->SharpGrid.ForEachListed(region, [&](std::uint32_t k) {
+    if (this->SharpSeen[k] != this->SharpMark)
+    {
+      this->SharpSeen[k] = this->SharpMark;
+      EdgeSegment piece = this->Sharp[k];
+      if (ClipSegment(piece.A, piece.B, region))
+      {
+        pieces.push_back(piece);
+      }
+    }
+  });
+  if (pieces.empty())
+  {
+    return true;
+  }
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+  auto addEdges = [&edges](const Triangle& t) {
+    for (int k = 0; k < 3; ++k)
+    {
+      edges.emplace_back(std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]));
+    }
+  };
+  this->ForEachOther(c, GrownBy(region, this->Parameters.Tolerance), [&](std::uint32_t o) { addEdges(this->Triangles[o]); });
+  for (const Triangle& t : c.Made)
+  {
+    addEdges(t);
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  std::vector<EdgeSegment> after;
+  for (const auto& [x, y] : edges)
+  {
+    if (this->IsFeatureAfter(c, x, y))
+    {
+      after.push_back({ this->P[x], this->P[y] });
+    }
+  }
+  for (const EdgeSegment& piece : pieces)
+  {
+    if (!StaysFollowed(piece.A, piece.B, removed, after, reach))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool Decimator::MakesNoFeature(const Collapse& c) const
+{
+  for (std::size_t i = 0; i < c.Made.size(); ++i)
+  {
+    const Triangle& t = c.Made[i];
+    const Vec3 normal = this->Normal(t);
+    const std::int32_t label = this->LabelOf(c.Kept[i]);
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::uint32_t x = t[k], y = t[(k + 1) % 3];
+      // The triangle across the edge afterwards: made too, or one that stays.
+      bool found = false, bent = false;
+      for (std::size_t j = 0; j < c.Made.size() && !found; ++j)
+      {
+        if (j != i && Holds(c.Made[j], x) && Holds(c.Made[j], y))
+        {
+          found = true;
+          bent = this->Bent(normal, label, this->Normal(c.Made[j]), this->LabelOf(c.Kept[j]));
+        }
+      }
+      for (std::size_t j = 0; j < this->Around[x].size() && !found; ++j)
+      {
+        const std::uint32_t o = this->Around[x][j];
+        if (!Holds(this->Triangles[o], c.From) && Holds(this->Triangles[o], y))
+        {
+          found = true;
+          bent = this->Bent(normal, label, this->Normal(this->Triangles[o]), this->LabelOf(o));
+        }
+      }
+      if (!found)
+      {
+        return false; // (never in a closed manifold after a collapse the link condition allows)
+      }
+      if (!bent)
+      {
+        continue;
+      }
+      // A feature now: it must be the image of one before (From's edges
+      // become To's).
+      const std::uint32_t z = x == c.To ? y : (y == c.To ? x : c.From);
+      const bool before = z == c.From ? this->IsFeature(x, y)
+                                      : this->IsFeature(c.From, z) ||
+          (this->EdgeTriangles(c.To, z).size() == 2 && this->IsFeature(c.To, z));
+      if (!before)
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+double Decimator::Certify(const Collapse& c)
+{
+  return this->Surface.Mesh ? this->CertifyAgainstMesh(c) : this->CertifyThroughBounds(c);
+}
+
+template <typename Visit>
+void Decimator::ForEachOther(const Collapse& c, const Box3& box, Visit&& visit)
+{
+  ++this->SeenMark;
+  this->Grid.ForEachListed(box, [&](std::uint32_t o) {
+    if (this->Seen[o] == this->SeenMark)
+    {
+      return;
+    }
+    this->Seen[o] = this->SeenMark;
+    const Triangle& other = this->Triangles[o];
+    if (this->Alive[o] && !Holds(other, c.From) && TriangleBox(this->P, other).Overlaps(box))
+    {
+      visit(o);
+    }
+  });
+}
+
+void Decimator::NearSurface(const Box3& box, PolygonSet* polygons, std::vector<SourceTriangle>* pieces)
+{
+  const Vec3* points = this->Surface.Mesh->Points().data();
+  const std::vector<Triangle>& triangles = this->Surface.Mesh->Triangles();
+  ++this->SurfaceMark;
+  this->SurfaceGrid.ForEachListed(box, [&](std::uint32_t s) {
+    if (this->SurfaceSeen[s] == this->SurfaceMark || !TriangleBox(points, triangles[s]).Overlaps(box))
+    {
+      return;
+    }
+    this->SurfaceSeen[s] = this->SurfaceMark;
+    const Triangle& t = triangles[s];
+    if (polygons)
+    {
+      polygons->Add({ points[t[0]], points[t[1]], points[t[2]] });
+      return;
+    }
+    ClippedCorners clipped;
+    for (const std::uint32_t v : t)
+    {
+      clipped.push_back(points[v]);
+    }
+    ClipToBox(clipped, box);
+    for (std::size_t i = 1; i + 1 < clipped.size(); ++i)
+    {
+      pieces->push_back({ clipped[0], clipped[i], clipped[i + 1] });
+    }
+    if (clipped.size() == 1 || clipped.size() == 2)
+    {
+      pieces->push_back({ clipped.front(), clipped.back(), clipped.back() });
+    }
+  });
+}
+
+double Decimator::CertifyAgainstMesh(const Collapse& c)
+{
+  const double tolerance = this->Parameters.Tolerance;
+  const double giveUp = tolerance - this->Slack;
+  const std::size_t budget = this->Parameters.CertificateBudget;
+  // (a) The made triangles, to S near them.
+  std::vector<SourceTriangle> made;
+  PolygonSet madeSet;
+  for (const Triangle& t : c.Made)
+  {
+    made.push_back({ this->P[t[0]], this->P[t[1]], this->P[t[2]] });
+    madeSet.Add({ this->P[t[0]], this->P[t[1]], this->P[t[2]] });
+  }
+  PolygonSet nearMade;
+  this->NearSurface(GrownBy(BoxOf(this->P, c.Made), tolerance), &nearMade, nullptr);
+  const HausdorffEstimate toSurface = OneSidedHausdorff(made, nearMade, giveUp, giveUp, budget);
+  if (!(toSurface.Upper <= giveUp))
+  {
+    return HUGE_VAL;
+  }
+  // (b) S where the star was nearest, to the surface after.
+  std::vector<Triangle> star;
+  for (const std::uint32_t t : c.Vanishing)
+  {
+    star.push_back(this->Triangles[t]);
+  }
+  for (const std::uint32_t t : c.Kept)
+  {
+    star.push_back(this->Triangles[t]);
+  }
+  const Box3 region = GrownBy(BoxOf(this->P, star), tolerance);
+  std::vector<SourceTriangle> surfacePieces;
+  this->NearSurface(region, nullptr, &surfacePieces);
+  PolygonSet after = madeSet;
+  this->ForEachOther(c, GrownBy(region, tolerance), [&](std::uint32_t o) {
+    const Triangle& t = this->Triangles[o];
+    after.Add({ this->P[t[0]], this->P[t[1]], this->P[t[2]] });
+  });
+  const HausdorffEstimate covered = OneSidedHausdorff(surfacePieces, after, giveUp, giveUp, budget);
+  if (!(covered.Upper <= giveUp))
+  {
+    return HUGE_VAL;
+  }
+  return std::max(toSurface.Upper, covered.Upper) + this->Slack;
+}
+
+double Decimator::CertifyThroughBounds(const Collapse& c) const
+{
+  std::vector<SourceTriangle> before, after;
+  std::vector<double> offsets;
+  PolygonSet beforeSet, afterSet;
+  double largest = 0.0;
+  auto corners = [this](const Triangle& t) { return SourceTriangle{ this->P[t[0]], this->P[t[1]], this->P[t[2]] }; };
+  for (const std::vector<std::uint32_t>* part : { &c.Vanishing, &c.Kept })
+  {
+    for (const std::uint32_t t : *part)
+    {
+      const SourceTriangle s = corners(this->Triangles[t]);
+      before.push_back(s);
+      beforeSet.Add({ s[0], s[1], s[2] });
+      offsets.push_back(this->Bounds[t]);
+      largest = std::max(largest, this->Bounds[t]);
+    }
+  }
+  for (const Triangle& t : c.Made)
+  {
+    const SourceTriangle s = corners(t);
+    after.push_back(s);
+    afterSet.Add({ s[0], s[1], s[2] });
+  }
+  const double giveUp = this->Parameters.Tolerance - this->Slack;
+  if (!(largest < giveUp))
+  {
+    return HUGE_VAL;
+  }
+  // Refined until a quarter of the room left (a looser bound would use up
+  // the tolerance for the collapses after this one).
+  const double enough = largest + 0.25 * (giveUp - largest);
+  const std::size_t budget = this->Parameters.CertificateBudget;
+  const HausdorffEstimate covered = OneSidedHausdorff(before, afterSet, enough, giveUp, budget, { &offsets, nullptr });
+  if (!(covered.Upper <= giveUp))
+  {
+    return HUGE_VAL;
+  }
+  const HausdorffEstimate near = OneSidedHausdorff(after, beforeSet, enough, giveUp, budget, { nullptr, &offsets });
+  if (!(near.Upper <= giveUp))
+  {
+    return HUGE_VAL;
+  }
+  return std::max(covered.Upper, near.Upper) + this->Slack;
+}
+
+bool Decimator::MeetsAnother(const Collapse& c)
+{
+  for (std::size_t i = 0; i < c.Made.size(); ++i)
+  {
+    for (std::size_t j = i + 1; j < c.Made.size(); ++j)
+    {
+      if (TrianglesMeetImproperly(this->P, c.Made[i], c.Made[j]))
+      {
+        return true;
+      }
+    }
+  }
+  bool meets = false;
+  for (const Triangle& t : c.Made)
+  {
+    // (The star's triangles are replaced by the made ones.)
+    this->ForEachOther(c, TriangleBox(this->P, t),
+      [&](std::uint32_t o) { meets = meets || TrianglesMeetImproperly(this->P, t, this->Triangles[o]); });
+    if (meets)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+void Decimator::Apply(const Collapse& c, double bound)
+{
+  for (const std::uint32_t t : c.Vanishing)
+  {
+    this->Alive[t] = 0;
+    for (const std::uint32_t x : this->Triangles[t])
+    {
+      if (x != c.From)
+      {
+        std::vector<std::uint32_t>& around = this->Around[x];
+        around.erase(std::find(around.begin(), around.end(), t));
+      }
+    }
+  }
+  for (std::size_t i = 0; i < c.Kept.size(); ++i)
+  {
+    const std::uint32_t t = c.Kept[i];
+    this->Triangles[t] = c.Made[i];
+    this->Bounds[t] = bound;
+    this->Around[c.To].push_back(t);
+    this->Grid.Insert(t, TriangleBox(this->P, c.Made[i]));
+  }
+  this->Around[c.From].clear();
+  ++this->Result.Collapses;
+  // Every vertex whose star changed is queued again.
+  std::vector<std::uint32_t> changed = this->Neighbours(c.To);
+  changed.push_back(c.To);
+  for (const std::uint32_t w : changed)
+  {
+    ++this->Stamp[w];
+    this->Queue(w);
+  }
+}
+
+bool Decimator::Try(std::uint32_t from, std::uint32_t to)
+{
+  Collapse c;
+  c.From = from;
+  c.To = to;
+  if (!this->Describe(c) || !this->LinkConditionHolds(c))
+  {
+    ++this->Result.RefusedByLink;
+    return false;
+  }
+  // (Features: the input's sharp creases where S is known, else the
+  // surface's own dihedral angles and labels - header, Features.)
+  const bool byDihedral = !this->Surface.Mesh;
+  if (byDihedral && !this->MovesAlongFeatures(c))
+  {
+    ++this->Result.RefusedByFeature;
+    return false;
+  }
+  if (!this->KeepsShape(c))
+  {
+    ++this->Result.RefusedByShape;
+    return false;
+  }
+  if (byDihedral ? !this->MakesNoFeature(c) || !this->KeepsFeatures(c) : !this->KeepsCreasesFollowed(c))
+  {
+    ++this->Result.RefusedByFeature;
+    return false;
+  }
+  const double bound = this->Certify(c);
+  if (!(bound <= this->Parameters.Tolerance))
+  {
+    ++this->Result.RefusedByError;
+    return false;
+  }
+  if (this->MeetsAnother(c))
+  {
+    ++this->Result.RefusedByEmbedding;
+    return false;
+  }
+  this->Apply(c, bound);
+  this->Result.Bound = std::max(this->Result.Bound, bound);
+  return true;
+}
+
+void Decimator::Run()
+{
+  for (std::uint32_t v = 0; v < this->Around.size(); ++v)
+  {
+    this->Queue(v);
+  }
+  std::size_t popped = 0;
+  while (!this->Heap.empty())
+  {
+    if (this->Parameters.Progress && ++popped % 1024 == 0 &&
+      this->Parameters.Progress(static_cast<double>(popped) / static_cast<double>(popped + this->Heap.size())))
+    {
+      this->Result.Aborted = true;
+      return;
+    }
+    const Candidate c = this->Heap.top();
+    this->Heap.pop();
+    if (c.Stamp == this->Stamp[c.From] && !this->Around[c.From].empty() && !this->Around[c.To].empty())
+    {
+      this->Try(c.From, c.To);
+    }
+  }
+}
+
+void Decimator::Compact()
+{
+  const std::uint32_t none = ~std::uint32_t{ 0 };
+  std::vector<std::uint32_t> renumbered(this->Mesh.Points.size(), none);
+  ReleasableArray<Vec3> points, normals;
+  const bool hasNormals = this->Mesh.Normals.size() == this->Mesh.Points.size();
+  ReleasableArray<Triangle> triangles;
+  std::vector<std::uint32_t> cells;
+  std::vector<double> bounds;
+  ReleasableArray<std::int32_t> labels;
+  const bool hasLabels = this->Labels.size() == this->Triangles.size();
+  for (std::size_t t = 0; t < this->Triangles.size(); ++t)
+  {
+    if (!this->Alive[t])
+    {
+      continue;
+    }
+    Triangle kept = this->Triangles[t];
+    for (std::uint32_t& v : kept)
+    {
+      if (renumbered[v] == none)
+      {
+        renumbered[v] = static_cast<std::uint32_t>(points.size());
+        points.push_back(this->Mesh.Points[v]);
+        if (hasNormals)
+        {
+          normals.push_back(this->Mesh.Normals[v]);
+        }
+      }
+      v = renumbered[v];
+    }
+    triangles.push_back(kept);
+    cells.push_back(this->Mesh.TriangleCell[t]);
+    bounds.push_back(this->Bounds[t]);
+    if (hasLabels)
+    {
+      labels.push_back(this->Labels[t]);
+    }
+  }
+  this->Result.TrianglesAfter = triangles.size();
+  this->Mesh.Points = std::move(points);
+  this->Mesh.Normals = std::move(normals);
+  this->Mesh.Triangles = std::move(triangles);
+  this->Mesh.TriangleCell = std::move(cells);
+  this->Bounds = std::move(bounds);
+  if (hasLabels)
+  {
+    this->Labels = std::move(labels);
+  }
+  this->P = this->Mesh.Points.data();
+}
+
+} // namespace
+
+DecimationResult DecimateCertified(TriangleMesh& mesh, std::vector<double>& bounds,
+  ReleasableArray<std::int32_t>& labels, const DecimationParameters& parameters, const ExactMesh& surface)
+{
+  Decimator decimator(mesh, bounds, labels, parameters, surface);
+  decimator.Run();
+  decimator.Compact();
+  return decimator.Result;
+}
+
+} // namespace tpc

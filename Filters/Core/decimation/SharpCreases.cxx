@@ -1,0 +1,130 @@
+#include "SharpCreases.h"
+
+#include "ConvexPolygons.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tpc
+{
+
+std::vector<EdgeSegment> SharpEdges(const MeshSolid& mesh, double degrees)
+{
+  const double cosine = std::cos(degrees * M_PI / 180.0);
+  std::vector<EdgeSegment> sharp;
+  const auto& triangles = mesh.Triangles();
+  for (std::uint32_t t = 0; t < triangles.size(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::uint32_t other = mesh.Across(t, k);
+      // (Each edge once, from its lower-numbered triangle.)
+      if (other != MeshSolid::NoTriangle && t < other && Dot(mesh.Normal(t), mesh.Normal(other)) <= cosine)
+      {
+        sharp.push_back({ mesh.Points()[triangles[t][k]], mesh.Points()[triangles[t][(k + 1) % 3]] });
+      }
+    }
+  }
+  return sharp;
+}
+
+bool ClipSegment(Vec3& a, Vec3& b, const Box3& box)
+{
+  // Liang-Barsky: the parameters of ab inside each slab.
+  double t0 = 0.0, t1 = 1.0;
+  const Vec3 d = b - a;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    if (d[axis] == 0.0)
+    {
+      if (a[axis] < box.lo[axis] || a[axis] > box.hi[axis])
+      {
+        return false;
+      }
+      continue;
+    }
+    double lo = (box.lo[axis] - a[axis]) / d[axis], hi = (box.hi[axis] - a[axis]) / d[axis];
+    if (lo > hi)
+    {
+      std::swap(lo, hi);
+    }
+    t0 = std::max(t0, lo);
+    t1 = std::min(t1, hi);
+    if (t0 > t1)
+    {
+      return false;
+    }
+  }
+  const Vec3 start = a + d * t0, end = a + d * t1;
+  a = start;
+  b = end;
+  return true;
+}
+
+double DistanceToSegments(const Vec3& p, const std::vector<EdgeSegment>& segments)
+{
+  double nearest = HUGE_VAL;
+  for (const EdgeSegment& s : segments)
+  {
+    nearest = std::min(nearest, SegmentDistance(p, s.A, s.B));
+  }
+  return nearest;
+}
+
+namespace
+{
+
+/// min over segments of max(d(a, s), d(b, s)): the distance to the segments
+/// over all of ab is at most this (convexity, header).
+double UpperOver(const Vec3& a, const Vec3& b, const std::vector<EdgeSegment>& segments)
+{
+  double upper = HUGE_VAL;
+  for (const EdgeSegment& s : segments)
+  {
+    upper = std::min(upper, std::max(SegmentDistance(a, s.A, s.B), SegmentDistance(b, s.A, s.B)));
+  }
+  return upper;
+}
+
+} // namespace
+
+bool StaysFollowed(const Vec3& a, const Vec3& b, const std::vector<EdgeSegment>& removed,
+  const std::vector<EdgeSegment>& after, double reach, std::size_t budget)
+{
+  if (removed.empty())
+  {
+    return true;
+  }
+  std::vector<EdgeSegment> pieces{ { a, b } };
+  std::size_t examined = 0;
+  while (!pieces.empty())
+  {
+    const EdgeSegment piece = pieces.back();
+    pieces.pop_back();
+    if (++examined > budget)
+    {
+      return false;
+    }
+    if (UpperOver(piece.A, piece.B, after) <= reach)
+    {
+      continue;
+    }
+    const Vec3 middle = (piece.A + piece.B) * 0.5;
+    if (DistanceToSegments(middle, removed) - 0.5 * Norm(piece.B - piece.A) > reach)
+    {
+      continue; // (no removed edge within reach of the piece)
+    }
+    for (const Vec3& end : { piece.A, piece.B })
+    {
+      if (DistanceToSegments(end, removed) <= reach && DistanceToSegments(end, after) > reach)
+      {
+        return false;
+      }
+    }
+    pieces.push_back({ piece.A, middle });
+    pieces.push_back({ middle, piece.B });
+  }
+  return true;
+}
+
+} // namespace tpc

@@ -1,0 +1,40 @@
+#include "TriangleErrorBounds.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tpc
+{
+
+std::vector<double> TriangleErrorBounds(const AdaptiveOctree& tree, const ExtractionResult& extraction)
+{
+  std::vector<double> certified(tree.Nodes.size(), HUGE_VAL);
+  for (const auto& [node, error] : extraction.CellErrors)
+  {
+    certified[node] = error;
+  }
+  const RootGrid& grid = tree.Grid;
+  const std::vector<std::uint32_t>& cells = extraction.Mesh.TriangleCell;
+  std::vector<double> bounds(cells.size());
+  for (std::size_t t = 0; t < cells.size(); ++t)
+  {
+    const OctreeNode& node = tree.Nodes[cells[t]];
+    const double diagonal = grid.CellDiagonal(node.Level);
+    // (In the order DecideCell and GatherCertifiedBound count them.)
+    if (node.State == CellState::Surface && node.ErrorBounded)
+    {
+      bounds[t] = std::min(certified[cells[t]], diagonal);
+    }
+    else if (node.State == CellState::Exact || (node.State == CellState::Surface && node.PlaneSection))
+    {
+      bounds[t] = grid.CellDiagonal(grid.MaxDepth);
+    }
+    else
+    {
+      bounds[t] = diagonal;
+    }
+  }
+  return bounds;
+}
+
+} // namespace tpc

@@ -1,0 +1,314 @@
+// The certified decimation (CertifiedDecimation.h): far fewer triangles, and
+// every guarantee still true of the decimated surface - checked here against
+// independent oracles (CGAL's certified Hausdorff distance and its exact
+// self-intersection test), not against the decimation's own bookkeeping.
+#include "CertifiedDecimation.h"
+#include "CgalHausdorff.h"
+#include "CoreContour.h"
+#include "MeshBuilders.h"
+#include "SelfIntersection.h"
+#include "SharpCreases.h"
+#include "TriangleGrid.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <random>
+
+using tpc::Box3;
+using tpc::Vec3;
+
+namespace
+{
+
+/// One closed mesh through tpc::Contour, the lattice over [-1, 1]^3;
+/// decimated against the mesh (its input named as a mesh) or through the
+/// cells' bounds (the same solid as a bare term).
+tpc::ContourResult ContourMesh(const tpc::MeshSolid& mesh, double tolerance, bool decimate, bool againstMesh = true)
+{
+  tpc::ContourScene scene;
+  scene.Primitives.Meshes.push_back(mesh);
+  tpc::SceneInput input;
+  input.Name = "The test mesh";
+  input.Solid = tpc::CsgTerm::Mesh(0);
+  input.Mesh = againstMesh ? 0 : -1;
+  scene.Inputs.push_back(std::move(input));
+  tpc::ContourParameters p;
+  p.Region = Box3{ { -1, -1, -1 }, { 1, 1, 1 } };
+  p.Tolerance = tolerance;
+  p.Decimate = decimate;
+  return tpc::Contour(std::move(scene), p);
+}
+
+tpcoracle::TriangleSoup Soup(const std::vector<Vec3>& points, const std::vector<std::array<std::uint32_t, 3>>& triangles)
+{
+  tpcoracle::TriangleSoup soup;
+  for (const Vec3& p : points)
+  {
+    soup.Points.push_back({ p[0], p[1], p[2] });
+  }
+  soup.Triangles = triangles;
+  return soup;
+}
+
+/// The two-sided Hausdorff distance between `exact` and `surface` by CGAL
+/// (within 1 % of the tolerance), held against the proven bound: its lower
+/// end may not pass the bound. Returns the upper end.
+double ExpectWithinBound(const tpc::MeshSolid& exact, const tpc::TriangleMesh& surface, double bound,
+  double tolerance, const char* name)
+{
+  const tpcoracle::TriangleSoup s = Soup(exact.Points(), exact.Triangles());
+  const tpcoracle::TriangleSoup a = Soup(surface.Points.ToVector(), surface.Triangles.ToVector());
+  const double error = tolerance / 100;
+  const tpcoracle::HausdorffEstimate toSurface = tpcoracle::DirectedHausdorffWithCgal(s, a, error);
+  const tpcoracle::HausdorffEstimate toExact = tpcoracle::DirectedHausdorffWithCgal(a, s, error);
+  EXPECT_LE(toSurface.Lower, bound) << name;
+  EXPECT_LE(toExact.Lower, bound) << name;
+  return std::max(toSurface.Upper, toExact.Upper);
+}
+
+/// Every edge of `mesh` in exactly two triangles, once each way.
+bool ClosedAndOriented(const tpc::TriangleMesh& mesh)
+{
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
+  for (const tpc::Triangle& t : mesh.Triangles)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      ++directed[{ t[k], t[(k + 1) % 3] }];
+    }
+  }
+  for (const auto& [edge, count] : directed)
+  {
+    const auto back = directed.find({ edge.second, edge.first });
+    if (count != 1 || back == directed.end() || back->second != 1)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// The output edges whose triangles bend by `degrees` or more.
+std::vector<tpc::EdgeSegment> BentEdges(const tpc::TriangleMesh& mesh, double degrees)
+{
+  const tpc::MeshSolid solid(mesh.Points.ToVector(), mesh.Triangles.ToVector());
+  return tpc::SharpEdges(solid, degrees);
+}
+
+} // namespace
+
+TEST(CertifiedDecimation, MeshesKeepEveryGuaranteeWithFarFewerTriangles)
+{
+  struct Case
+  {
+    const char* Name;
+    tpc::MeshSolid Mesh;
+    int Genus;
+    double Tolerance;
+    std::size_t Fewer; ///< at least this many times fewer triangles than undecimated
+  };
+  // Measured: sphere 216 -> 52 triangles, torus 840 -> 116, tilted box
+  // 48 -> 12.
+  const std::vector<Case> cases{ { "sphere", tpctest::SphereMesh({ 0.02, -0.03, 0.01 }, 0.8, 4), 0, 1.0 / 32, 3 },
+    { "torus", tpctest::TorusMesh({ 0.01, 0.02, -0.01 }, 0.6, 0.25, 96, 48), 1, 1.0 / 64, 5 },
+    { "tilted box", tpctest::TiltedMesh(tpctest::CubeMesh({ -0.5, -0.4, -0.3 }, { 0.5, 0.4, 0.3 })), 0, 1.0 / 64,
+      3 } };
+  for (const Case& c : cases)
+  {
+    const tpc::ContourResult plain = ContourMesh(c.Mesh, c.Tolerance, false);
+    const tpc::ContourResult r = ContourMesh(c.Mesh, c.Tolerance, true);
+    ASSERT_EQ(r.Status, tpc::ContourResult::Outcome::Contoured) << c.Name;
+    const tpc::TriangleMesh& mesh = r.Surface();
+    EXPECT_TRUE(plain.Report.Guaranteed) << c.Name;
+    EXPECT_TRUE(r.Report.Guaranteed) << c.Name;
+    EXPECT_EQ(r.Report.Components, 1) << c.Name;
+    EXPECT_EQ(r.Report.Genus, c.Genus) << c.Name;
+    EXPECT_TRUE(ClosedAndOriented(mesh)) << c.Name;
+    const tpcoracle::EmbeddingVerdict cgal = tpctest::CgalVerdict(mesh);
+    EXPECT_TRUE(!cgal.Checked || cgal.Embedded()) << c.Name << ": " << cgal.SelfIntersectingPairs << " pairs";
+    EXPECT_EQ(r.Decimation.TrianglesAfter, mesh.Triangles.size()) << c.Name;
+    EXPECT_EQ(r.Decimation.TrianglesBefore, plain.Surface().Triangles.size()) << c.Name;
+    EXPECT_LT(mesh.Triangles.size() * c.Fewer, plain.Surface().Triangles.size()) << c.Name;
+    // The proven bound, within the tolerance, and CGAL's certified distance
+    // within it.
+    const double tolerance = r.Report.AbsoluteTolerance;
+    EXPECT_LE(r.Report.HausdorffBound, tolerance * (1 + 1e-9)) << c.Name;
+    const double measured = ExpectWithinBound(c.Mesh, mesh, r.Report.HausdorffBound, tolerance, c.Name);
+    std::cout << c.Name << " 1/" << 1 / c.Tolerance << ": " << plain.Surface().Triangles.size() << " -> "
+              << mesh.Triangles.size() << " triangles, bound " << r.Report.HausdorffBound / tolerance
+              << " tolerance, CGAL " << measured / tolerance << "\n";
+  }
+}
+
+TEST(CertifiedDecimation, SharpCreasesStayFollowed)
+{
+  // A tilted box and a chamfered tilted bar: every point of every input edge
+  // of 40 degrees or more stays within the tolerance of an output edge bent
+  // by 30 degrees or more (the chamfer's 45-degree creases too, 0.02 apart).
+  const double w = 0.02;
+  const std::vector<std::pair<const char*, tpc::MeshSolid>> cases{
+    { "tilted box", tpctest::TiltedMesh(tpctest::CubeMesh({ -0.5, -0.4, -0.3 }, { 0.5, 0.4, 0.3 })) },
+    { "chamfered bar",
+      tpctest::TiltedMesh(tpctest::PrismMesh({ { -0.5 + w, -0.3 }, { 0.5 - w, -0.3 }, { 0.5, -0.3 + w },
+                                                { 0.5, 0.3 - w }, { 0.5 - w, 0.3 }, { -0.5 + w, 0.3 },
+                                                { -0.5, 0.3 - w }, { -0.5, -0.3 + w } },
+        -0.6, 0.6)) }
+  };
+  for (const auto& [name, input] : cases)
+  {
+    for (const double tolerance : { 1.0 / 32, 1.0 / 64 })
+    {
+      const tpc::ContourResult r = ContourMesh(input, tolerance, true);
+      EXPECT_TRUE(r.Report.Guaranteed) << name;
+      EXPECT_GT(r.Decimation.Collapses, 0u) << name;
+      const std::vector<tpc::EdgeSegment> output = BentEdges(r.Surface(), 30.0);
+      const std::vector<tpc::EdgeSegment> sharp = tpc::SharpEdges(input, tpc::SharpCreaseAngle);
+      ASSERT_FALSE(sharp.empty());
+      double worst = 0.0;
+      for (const tpc::EdgeSegment& s : sharp)
+      {
+        for (int i = 0; i <= 16; ++i)
+        {
+          const Vec3 p = s.A + (s.B - s.A) * (i / 16.0);
+          worst = std::max(worst, tpc::DistanceToSegments(p, output));
+        }
+      }
+      EXPECT_LE(worst, r.Report.AbsoluteTolerance) << name << " 1/" << 1 / tolerance;
+      std::cout << name << " 1/" << 1 / tolerance << ": " << r.Surface().Triangles.size() << " triangles, "
+                << output.size() << " bent edges, worst sharp crease point " << worst / r.Report.AbsoluteTolerance
+                << " tolerance\n";
+    }
+  }
+}
+
+TEST(CertifiedDecimation, CsgDecimatesThroughTheCellsBounds)
+{
+  // A box of six planes (no mesh to measure against): plane-section cells
+  // have rounding-level bounds, so the faces lose most of their vertices,
+  // and the box's edges - dihedral features - keep their chains (measured:
+  // 556 -> 192 triangles; the cells along the edges, at the tolerance's
+  // size, leave no room).
+  tpctest::SceneBuilder b;
+  const tpc::CsgTerm box = b.Box({ -0.5, -0.4, -0.3 }, { 0.45, 0.35, 0.25 });
+  b.Finish(box);
+  tpc::ContourParameters p;
+  p.Region = Box3{ { -1, -1, -1 }, { 1, 1, 1 } };
+  p.Tolerance = 1.0 / 64;
+  const tpc::ContourResult plain = tpc::Contour(tpctest::ContourSceneOf(b.Scene), p);
+  p.Decimate = true;
+  const tpc::ContourResult r = tpc::Contour(tpctest::ContourSceneOf(b.Scene), p);
+  EXPECT_TRUE(r.Report.Guaranteed);
+  EXPECT_EQ(r.Report.Genus, 0);
+  EXPECT_TRUE(ClosedAndOriented(r.Surface()));
+  const tpcoracle::EmbeddingVerdict cgal = tpctest::CgalVerdict(r.Surface());
+  EXPECT_TRUE(!cgal.Checked || cgal.Embedded());
+  EXPECT_LT(r.Surface().Triangles.size() * 2, plain.Surface().Triangles.size());
+  const tpc::MeshSolid exact = tpctest::CubeMesh({ -0.5, -0.4, -0.3 }, { 0.45, 0.35, 0.25 });
+  const double measured =
+    ExpectWithinBound(exact, r.Surface(), r.Report.HausdorffBound, r.Report.AbsoluteTolerance, "box");
+  EXPECT_LE(r.Report.HausdorffBound, r.Report.AbsoluteTolerance * (1 + 1e-9));
+  std::cout << "box of planes: " << plain.Surface().Triangles.size() << " -> " << r.Surface().Triangles.size()
+            << " triangles, bound " << r.Report.HausdorffBound << ", CGAL " << measured << "\n";
+}
+
+TEST(CertifiedDecimation, NoRoomLeftMeansNoCollapse)
+{
+  // Through the bounds: triangles already at the tolerance admit no
+  // collapse (a collapse's bound is at least its star's); with room, the
+  // same surface loses most of its triangles and stays closed and embedded.
+  const tpc::MeshSolid torus = tpctest::TorusMesh({ 0, 0, 0 }, 0.6, 0.25, 48, 24);
+  for (const double start : { 0.02, 0.0 })
+  {
+    tpc::TriangleMesh mesh;
+    for (const Vec3& q : torus.Points())
+    {
+      mesh.Points.push_back(q);
+    }
+    for (const auto& t : torus.Triangles())
+    {
+      mesh.Triangles.push_back(t);
+      mesh.TriangleCell.push_back(0);
+    }
+    std::vector<double> bounds(mesh.Triangles.size(), start);
+    tpc::ReleasableArray<std::int32_t> labels;
+    tpc::DecimationParameters parameters;
+    parameters.Tolerance = 0.02;
+    const tpc::DecimationResult d = tpc::DecimateCertified(mesh, bounds, labels, parameters);
+    EXPECT_EQ(d.TrianglesAfter, mesh.Triangles.size());
+    EXPECT_EQ(bounds.size(), mesh.Triangles.size());
+    EXPECT_TRUE(ClosedAndOriented(mesh));
+    EXPECT_EQ(2 * mesh.Points.size(), mesh.Triangles.size()) << "a torus: V - E + F = V - F / 2 = 0";
+    EXPECT_EQ(tpc::CountSelfIntersections(mesh.Points.ToVector(), mesh.Triangles.ToVector()), 0u);
+    EXPECT_LE(d.Bound, parameters.Tolerance);
+    if (start > 0.0)
+    {
+      EXPECT_EQ(d.Collapses, 0u);
+    }
+    else
+    {
+      EXPECT_GT(d.Collapses * 4, torus.TriangleCount() / 2) << "most vertices removed";
+      EXPECT_GT(d.RefusedByError, 0u);
+    }
+  }
+}
+
+TEST(SharpCreases, StaysFollowedFindsACreaseLeftBehind)
+{
+  // A crease along x from 0 to 1, the feature edges removed by a collapse
+  // and those after it.
+  const double reach = 0.1;
+  const std::vector<tpc::EdgeSegment> along{ { { 0, 0, 0 }, { 1, 0, 0 } } };
+  const std::vector<tpc::EdgeSegment> shifted{ { { 0, 0.05, 0 }, { 1, 0.05, 0 } } };
+  const std::vector<tpc::EdgeSegment> away{ { { 0, 0.5, 0 }, { 1, 0.5, 0 } } };
+  const std::vector<tpc::EdgeSegment> half{ { { 0, 0, 0 }, { 0.6, 0, 0 } } };
+  const std::vector<tpc::EdgeSegment> none;
+  // Replaced by an edge within reach, or nothing removed near it: kept.
+  EXPECT_TRUE(tpc::StaysFollowed({ 0, 0, 0 }, { 1, 0, 0 }, along, shifted, reach));
+  EXPECT_TRUE(tpc::StaysFollowed({ 0, 0, 0 }, { 1, 0, 0 }, none, away, reach));
+  EXPECT_TRUE(tpc::StaysFollowed({ 0, 0, 0 }, { 1, 0, 0 }, away, away, reach));
+  // Its edge removed and none within reach after (all of it, or its last 0.3).
+  EXPECT_FALSE(tpc::StaysFollowed({ 0, 0, 0 }, { 1, 0, 0 }, along, away, reach));
+  EXPECT_FALSE(tpc::StaysFollowed({ 0, 0, 0 }, { 1, 0, 0 }, along, half, reach));
+  // The part the removed edge never followed (beyond 0.7) may stay
+  // unfollowed; up to 0.7 the edge after follows.
+  const std::vector<tpc::EdgeSegment> longer{ { { 0, 0, 0 }, { 0.65, 0, 0 } } };
+  EXPECT_TRUE(tpc::StaysFollowed({ 0, 0, 0 }, { 1, 0, 0 }, half, longer, reach));
+  EXPECT_FALSE(tpc::StaysFollowed({ 0, 0, 0 }, { 1, 0, 0 }, longer, half, reach));
+  Vec3 a{ -1, 0.5, 0.5 }, b{ 2, 0.5, 0.5 };
+  ASSERT_TRUE(tpc::ClipSegment(a, b, Box3{ { 0, 0, 0 }, { 1, 1, 1 } }));
+  EXPECT_DOUBLE_EQ(a[0], 0.0);
+  EXPECT_DOUBLE_EQ(b[0], 1.0);
+  Vec3 c{ -1, 2, 0.5 }, d{ 2, 2, 0.5 };
+  EXPECT_FALSE(tpc::ClipSegment(c, d, Box3{ { 0, 0, 0 }, { 1, 1, 1 } }));
+}
+
+TEST(TriangleGrid, ListsEveryBoxThatOverlaps)
+{
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), size(0.0, 0.3);
+  auto randomBox = [&]() {
+    const Vec3 lo{ u(rng), u(rng), u(rng) };
+    return Box3{ lo, lo + Vec3{ size(rng), size(rng), size(rng) } };
+  };
+  tpc::TriangleGrid grid({ -1, -1, -1 }, 0.07);
+  std::vector<Box3> boxes;
+  for (std::uint32_t i = 0; i < 500; ++i)
+  {
+    boxes.push_back(randomBox());
+    grid.Insert(i, boxes.back());
+  }
+  for (int q = 0; q < 200; ++q)
+  {
+    const Box3 query = randomBox();
+    std::vector<char> listed(boxes.size(), 0);
+    grid.ForEachListed(query, [&](std::uint32_t i) { listed[i] = 1; });
+    for (std::size_t i = 0; i < boxes.size(); ++i)
+    {
+      EXPECT_TRUE(!boxes[i].Overlaps(query) || listed[i]) << i;
+    }
+  }
+}
