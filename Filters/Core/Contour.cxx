@@ -1,6 +1,7 @@
 #include "Contour.h"
 
 #include "ExactCell.h"
+#include "ExactCellCriterion.h"
 #include "PieceTopology.h"
 #include "SelfIntersection.h"
 #include "TriangleErrorBounds.h"
@@ -686,12 +687,14 @@ ContourResult Contour(ContourScene scene, const ContourParameters& parameters, c
     result.Placed.Result.Octree, result.Extraction.Mesh, implicitScene.Primitives, owners, parallelFor);
   if (parameters.Decimate)
   {
-    // (Where the exact surface is one input mesh, the collapses are measured
-    // against it: CertifiedDecimation.h, Against the mesh.)
+    // (Where the exact surface is one input mesh - one mesh leaf, not capped
+    // by Bounds - the collapses are measured against it: CertifiedDecimation.h,
+    // Against the mesh.)
     ExactMesh surface;
-    if (scene.Inputs.size() == 1 && scene.Inputs[0].Mesh >= 0 && !parameters.Bounds)
+    if (IsOneMesh(*implicitScene.Expression))
     {
-      surface.Mesh = &implicitScene.Primitives.Meshes[static_cast<std::size_t>(scene.Inputs[0].Mesh)];
+      const CsgExpression& e = *implicitScene.Expression;
+      surface.Mesh = &implicitScene.Primitives.Meshes[e.NodeAt(e.Root()).LeafData.Primitive];
     }
     DecimateSurface(result, tolerance, surface, parallelFor, run);
     if (run.Aborted())

@@ -830,6 +830,13 @@ bool Decimator::Try(std::uint32_t from, std::uint32_t to)
 
 void Decimator::Run()
 {
+  // (Against the mesh, a collapse looks for the points of S it may leave
+  // within the tolerance of its star: every point of S must be within the
+  // tolerance of the surface before - header, Against the mesh.)
+  if (!(this->Result.Bound <= this->Parameters.Tolerance))
+  {
+    return;
+  }
   for (std::uint32_t v = 0; v < this->Around.size(); ++v)
   {
     this->Queue(v);

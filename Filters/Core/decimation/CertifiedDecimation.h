@@ -66,8 +66,10 @@
 // input edges of 40 degrees or more) are what must stay visible: the
 // extraction draws each within the tolerance of output edges bent by
 // FeatureAngle or more, and a collapse is kept only when every point of a
-// sharp crease near its star that was within the tolerance of such an edge
-// still is (StaysFollowed, a branch and bound along the crease). Otherwise
+// sharp crease within the tolerance of a feature edge the collapse removes
+// (gone, or no longer bent) is within the tolerance of a feature edge after
+// it (StaysFollowed, a branch and bound along the crease): a point followed
+// before stays followed. Otherwise
 // (CSG, several meshes) S's creases are not at hand, and the surface's own
 // are kept: an edge bent by more than FeatureAngle, or between triangles on
 // different solids' surfaces (labels), is a feature; a vertex on none may
@@ -130,15 +132,17 @@ struct DecimationResult
   double Bound = 0.0;
 };
 
-/// The exact surface S itself, where it is one closed input mesh (a scene of
-/// one mesh, not clipped): collapses are then certified against S directly
-/// (header: Against the mesh) instead of through the bounds they inherit.
+/// The exact surface S itself, where it is one closed input mesh (the
+/// scene's expression is one mesh leaf, not capped by Bounds): collapses are
+/// then certified against S directly (header: Against the mesh) instead of
+/// through the bounds they inherit.
 struct ExactMesh
 {
   const MeshSolid* Mesh = nullptr;
 };
 
-/// Decimates `mesh` (closed, oriented, manifold, embedded) in place.
+/// Decimates `mesh` (closed, oriented, manifold, embedded) in place; not at
+/// all when a triangle's bound already exceeds the tolerance.
 /// `bounds` holds e_t per triangle (header; TriangleErrorBounds.h), `labels`
 /// the solid each triangle lies on (edges between labels are features); both
 /// are compacted with the triangles, as is mesh.TriangleCell (each triangle

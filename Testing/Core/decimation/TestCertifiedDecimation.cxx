@@ -24,17 +24,16 @@ using tpc::Vec3;
 namespace
 {
 
-/// One closed mesh through tpc::Contour, the lattice over [-1, 1]^3;
-/// decimated against the mesh (its input named as a mesh) or through the
-/// cells' bounds (the same solid as a bare term).
-tpc::ContourResult ContourMesh(const tpc::MeshSolid& mesh, double tolerance, bool decimate, bool againstMesh = true)
+/// One closed mesh through tpc::Contour, the lattice over [-1, 1]^3 (a
+/// scene of one mesh: decimated against the mesh itself).
+tpc::ContourResult ContourMesh(const tpc::MeshSolid& mesh, double tolerance, bool decimate)
 {
   tpc::ContourScene scene;
   scene.Primitives.Meshes.push_back(mesh);
   tpc::SceneInput input;
   input.Name = "The test mesh";
   input.Solid = tpc::CsgTerm::Mesh(0);
-  input.Mesh = againstMesh ? 0 : -1;
+  input.Mesh = 0;
   scene.Inputs.push_back(std::move(input));
   tpc::ContourParameters p;
   p.Region = Box3{ { -1, -1, -1 }, { 1, 1, 1 } };
