@@ -111,6 +111,19 @@ double ExpectWithinTheProvenBound(vtkPolyData* input, const tpctest::FilterResul
   return std::max(toOutput.Upper, toInput.Upper);
 }
 
+/// The test mesh called `name`, or null.
+const KnownMesh* FindKnownMesh(const std::string& name)
+{
+  for (const KnownMesh& k : CgalMeshes)
+  {
+    if (name == k.Name)
+    {
+      return &k;
+    }
+  }
+  return nullptr;
+}
+
 class CgalRemeshing : public testing::TestWithParam<std::tuple<int, int>>
 {
 };
@@ -172,11 +185,7 @@ TEST(CgalRemeshing, CoarseToleranceReducesTriangleCountKeepingTopology)
   TPC_SKIP_WITHOUT_CGAL_MESHES();
   for (const char* name : { "turbine", "knot2", "knot1" })
   {
-    const KnownMesh* m = nullptr;
-    for (const KnownMesh& k : CgalMeshes)
-    {
-      m = std::string(k.Name) == name ? &k : m;
-    }
+    const KnownMesh* m = FindKnownMesh(name);
     ASSERT_NE(m, nullptr);
     vtkSmartPointer<vtkPolyData> input = ReadCgalMesh(name);
     vtkNew<vtkTopologyPreservingContour> filter;
@@ -209,11 +218,7 @@ TEST(CgalDecimation, KeepsTheGuaranteeOnFarFewerTriangles)
   TPC_SKIP_WITHOUT_CGAL_MESHES();
   for (const char* name : { "couplingdown", "helmet", "knot1", "double-torus-example", "joint", "sphere966", "eight" })
   {
-    const KnownMesh* m = nullptr;
-    for (const KnownMesh& k : CgalMeshes)
-    {
-      m = std::string(k.Name) == name ? &k : m;
-    }
+    const KnownMesh* m = FindKnownMesh(name);
     ASSERT_NE(m, nullptr);
     vtkSmartPointer<vtkPolyData> input = ReadCgalMesh(name);
     vtkNew<vtkTopologyPreservingContour> filter;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace tpc
 {
@@ -114,6 +115,39 @@ double PolygonSet::Distance(const Vec3& p, std::size_t i) const
   const Header& h = this->Headers[i];
   return DistanceToCorners(p, this->Corners.data() + h.First, h.HasInward ? this->Inward.data() + h.First : nullptr,
     h.Count, h.Normal);
+}
+
+bool ClipSegment(Vec3& a, Vec3& b, const Box3& box)
+{
+  // Liang-Barsky: the parameters of ab inside each slab.
+  double t0 = 0.0, t1 = 1.0;
+  const Vec3 d = b - a;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    if (d[axis] == 0.0)
+    {
+      if (a[axis] < box.lo[axis] || a[axis] > box.hi[axis])
+      {
+        return false;
+      }
+      continue;
+    }
+    double lo = (box.lo[axis] - a[axis]) / d[axis], hi = (box.hi[axis] - a[axis]) / d[axis];
+    if (lo > hi)
+    {
+      std::swap(lo, hi);
+    }
+    t0 = std::max(t0, lo);
+    t1 = std::min(t1, hi);
+    if (t0 > t1)
+    {
+      return false;
+    }
+  }
+  const Vec3 start = a + d * t0, end = a + d * t1;
+  a = start;
+  b = end;
+  return true;
 }
 
 } // namespace tpc

@@ -218,6 +218,10 @@ inline ConvexPolygon PolygonSet::operator[](std::size_t i) const
 /// Distance from `p` to the segment [a, b].
 double SegmentDistance(const Vec3& p, const Vec3& a, const Vec3& b);
 
+/// Clips the segment [a, b] to the closed box (Liang-Barsky), in place;
+/// false when they do not meet.
+bool ClipSegment(Vec3& a, Vec3& b, const Box3& box);
+
 /// Distance from `p` to the polygon (its interior included).
 double PolygonDistance(const Vec3& p, const ConvexPolygon& polygon);
 

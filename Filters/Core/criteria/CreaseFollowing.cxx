@@ -23,37 +23,6 @@ struct EdgeOfTriangle
   }
 };
 
-/// [a, b] clipped to `box` (Liang-Barsky); false when they do not meet.
-bool ClipToBox(const Vec3& a, const Vec3& b, const Box3& box, CreaseSegment& clipped)
-{
-  double t0 = 0.0, t1 = 1.0;
-  const Vec3 d = b - a;
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    if (d[axis] == 0.0)
-    {
-      if (a[axis] < box.lo[axis] || a[axis] > box.hi[axis])
-      {
-        return false;
-      }
-      continue;
-    }
-    double u0 = (box.lo[axis] - a[axis]) / d[axis], u1 = (box.hi[axis] - a[axis]) / d[axis];
-    if (u0 > u1)
-    {
-      std::swap(u0, u1);
-    }
-    t0 = std::max(t0, u0);
-    t1 = std::min(t1, u1);
-    if (t0 > t1)
-    {
-      return false;
-    }
-  }
-  clipped = { a + d * t0, a + d * t1 };
-  return true;
-}
-
 bool SamePoint(const Vec3& a, const Vec3& b)
 {
   return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
@@ -129,8 +98,8 @@ std::vector<CreaseSegment> CreasesInCell(const CsgLeaf& leaf, const PrimitiveSet
   for (std::size_t i = 0; i + 1 < uses.size(); ++i)
   {
     const EdgeOfTriangle &p = uses[i], &q = uses[i + 1];
-    CreaseSegment clipped;
-    if (p.Low == q.Low && p.High == q.High && ClipToBox(mesh.Points()[p.Low], mesh.Points()[p.High], cell, clipped))
+    CreaseSegment clipped{ mesh.Points()[p.Low], mesh.Points()[p.High] };
+    if (p.Low == q.Low && p.High == q.High && ClipSegment(clipped.A, clipped.B, cell))
     {
       creases.push_back(clipped);
     }

@@ -45,10 +45,6 @@ struct EdgeSegment
 /// The edges of `mesh` whose triangles' normals differ by `degrees` or more.
 std::vector<EdgeSegment> SharpEdges(const MeshSolid& mesh, double degrees);
 
-/// Clips the segment ab to the closed box, in place; false when nothing of it
-/// is in the box.
-bool ClipSegment(Vec3& a, Vec3& b, const Box3& box);
-
 /// The distance from p to the nearest of `segments` (+inf when none).
 double DistanceToSegments(const Vec3& p, const std::vector<EdgeSegment>& segments);
 

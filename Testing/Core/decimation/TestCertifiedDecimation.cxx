@@ -4,6 +4,7 @@
 // self-intersection test), not against the decimation's own bookkeeping.
 #include "CertifiedDecimation.h"
 #include "CgalHausdorff.h"
+#include "ConvexPolygons.h"
 #include "CoreContour.h"
 #include "MeshBuilders.h"
 #include "SelfIntersection.h"
