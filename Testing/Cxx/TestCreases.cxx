@@ -265,7 +265,8 @@ TEST(Creases, DecimatedCadMeshesKeepTheirCreasesOnFewerEdges)
     const char* Name;
     double Relative;
   };
-  for (const Case& c : { Case{ "couplingdown", 1.0 / 64 }, Case{ "couplingdown", 1.0 / 128 }, Case{ "fandisk", 1.0 / 64 } })
+  for (const Case& c :
+    { Case{ "couplingdown", 1.0 / 64 }, Case{ "couplingdown", 1.0 / 128 }, Case{ "fandisk", 1.0 / 64 } })
   {
     vtkSmartPointer<vtkPolyData> input = tpctest::ReadCgalMesh(c.Name);
     vtkNew<vtkTopologyPreservingContour> filter;

@@ -82,12 +82,18 @@ public:
   DecimationResult Result;
 
 private:
-  Vec3 Normal(const Triangle& t) const { return Normalized(Cross(this->P[t[1]] - this->P[t[0]], this->P[t[2]] - this->P[t[0]])); }
+  Vec3 Normal(const Triangle& t) const
+  {
+    return Normalized(Cross(this->P[t[1]] - this->P[t[0]], this->P[t[2]] - this->P[t[0]]));
+  }
   std::vector<std::uint32_t> Neighbours(std::uint32_t v) const;
   /// The live triangles holding both a and b (two in a closed manifold).
   std::vector<std::uint32_t> EdgeTriangles(std::uint32_t a, std::uint32_t b) const;
   bool IsFeature(std::uint32_t a, std::uint32_t b) const;
-  std::int32_t LabelOf(std::uint32_t t) const { return this->Labels.size() == this->Triangles.size() ? this->Labels[t] : 0; }
+  std::int32_t LabelOf(std::uint32_t t) const
+  {
+    return this->Labels.size() == this->Triangles.size() ? this->Labels[t] : 0;
+  }
   bool Bent(const Vec3& n1, std::int32_t label1, const Vec3& n2, std::int32_t label2) const
   {
     return Dot(n1, n2) < this->CosFeatureAngle || label1 != label2;
@@ -110,8 +116,8 @@ private:
   /// overlaps `box`.
   template <typename Visit>
   void ForEachOther(const Collapse& c, const Box3& box, Visit&& visit);
-  /// S's triangles whose boxes overlap `box`, as polygons (clipped to `clip`
-  /// when given) in `polygons`, or fanned into `pieces`.
+  /// S's triangles whose boxes overlap `box`: whole, as polygons in
+  /// `polygons`, or clipped to `box` and fanned into `pieces`.
   void NearSurface(const Box3& box, PolygonSet* polygons, std::vector<SourceTriangle>* pieces);
   bool MeetsAnother(const Collapse& c);
   void Apply(const Collapse& c, double bound);
@@ -498,7 +504,8 @@ bool Decimator::KeepsCreasesFollowed(const Collapse& c)
       edges.emplace_back(std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]));
     }
   };
-  this->ForEachOther(c, GrownBy(region, this->Parameters.Tolerance), [&](std::uint32_t o) { addEdges(this->Triangles[o]); });
+  this->ForEachOther(
+    c, GrownBy(region, this->Parameters.Tolerance), [&](std::uint32_t o) { addEdges(this->Triangles[o]); });
   for (const Triangle& t : c.Made)
   {
     addEdges(t);

@@ -43,7 +43,8 @@ tpc::ContourResult ContourMesh(const tpc::MeshSolid& mesh, double tolerance, boo
   return tpc::Contour(std::move(scene), p);
 }
 
-tpcoracle::TriangleSoup Soup(const std::vector<Vec3>& points, const std::vector<std::array<std::uint32_t, 3>>& triangles)
+tpcoracle::TriangleSoup Soup(
+  const std::vector<Vec3>& points, const std::vector<std::array<std::uint32_t, 3>>& triangles)
 {
   tpcoracle::TriangleSoup soup;
   for (const Vec3& p : points)
