@@ -8,7 +8,8 @@
 // depth and rules out the guarantee; coincident faces of two meshes are a
 // tangential contact), the domain and its margins, clipping to Bounds, the
 // lattice placements, the subdivision (paper 5.3), the extraction (4.3), the
-// exact embedding check, the topology report of the whole surface (also when
+// exact embedding check, the certified decimation when asked (Decimate),
+// the topology report of the whole surface (also when
 // this process holds one piece of it), and *the* definition of
 // TopologyGuaranteed with the reasons when it is 0.
 //
