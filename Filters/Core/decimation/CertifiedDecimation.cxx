@@ -1,6 +1,7 @@
 #include "CertifiedDecimation.h"
 
 #include "ConvexPolygons.h"
+#include "ExactPredicates.h"
 #include "PolygonHausdorff.h"
 #include "SelfIntersection.h"
 #include "SharpCreases.h"
@@ -120,6 +121,7 @@ private:
   /// `polygons`, or clipped to `box` and fanned into `pieces`.
   void NearSurface(const Box3& box, PolygonSet* polygons, std::vector<SourceTriangle>* pieces);
   bool MeetsAnother(const Collapse& c);
+  bool SweepsOverAnother(const Collapse& c);
   void Apply(const Collapse& c, double bound);
 
   TriangleMesh& Mesh;
@@ -388,16 +390,21 @@ bool Decimator::KeepsShape(const Collapse& c) const
 bool Decimator::KeepsFeatures(const Collapse& c) const
 {
   // Every feature edge of the star but the one moved along keeps being one
-  // (as its image: From's edges become To's).
-  for (const std::uint32_t t : c.Kept)
+  // (as its image: From's edges become To's; the vanishing triangles' edges
+  // To w too, whose other triangle changes).
+  for (const std::vector<std::uint32_t>* part : { &c.Kept, &c.Vanishing })
   {
-    const Triangle& old = this->Triangles[t];
-    for (int k = 0; k < 3; ++k)
+    for (const std::uint32_t t : *part)
     {
-      const std::uint32_t x = old[k], y = old[(k + 1) % 3];
-      if (this->IsFeature(x, y) && !this->IsFeatureAfter(c, x == c.From ? c.To : x, y == c.From ? c.To : y))
+      const Triangle& old = this->Triangles[t];
+      for (int k = 0; k < 3; ++k)
       {
-        return false;
+        const std::uint32_t u = old[k], v = old[(k + 1) % 3];
+        const std::uint32_t x = u == c.From ? c.To : u, y = v == c.From ? c.To : v;
+        if (x != y && this->IsFeature(u, v) && !this->IsFeatureAfter(c, x, y))
+        {
+          return false;
+        }
       }
     }
   }
@@ -757,6 +764,79 @@ bool Decimator::MeetsAnother(const Collapse& c)
   return false;
 }
 
+/// p in the closed tetrahedron t of orientation `sign` (exact): no face
+/// sees p on the side opposite its fourth vertex.
+bool InClosedTetrahedron(const Vec3& p, const std::array<Vec3, 4>& t, int sign)
+{
+  for (int i = 0; i < 4; ++i)
+  {
+    std::array<Vec3, 4> q = t;
+    q[i] = p;
+    if (Orient3D(q[0], q[1], q[2], q[3]) == -sign)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Header, Embedding: does the pocket between the star and the made
+/// triangles hold a vertex of another live triangle?
+bool Decimator::SweepsOverAnother(const Collapse& c)
+{
+  // The tetrahedra (From, To, a, b) over the made triangles' far edges ab.
+  struct Swept
+  {
+    std::array<Vec3, 4> Corners;
+    std::uint32_t A, B;
+    int Sign;
+  };
+  std::vector<Swept> swept;
+  for (const Triangle& t : c.Made)
+  {
+    const int k = t[0] == c.To ? 0 : (t[1] == c.To ? 1 : 2);
+    const std::uint32_t a = t[(k + 1) % 3], b = t[(k + 2) % 3];
+    const int sign = Orient3D(this->P[c.From], this->P[c.To], this->P[a], this->P[b]);
+    if (sign != 0)
+    {
+      swept.push_back({ { this->P[c.From], this->P[c.To], this->P[a], this->P[b] }, a, b, sign });
+    }
+  }
+  if (swept.empty())
+  {
+    return false;
+  }
+  std::vector<Triangle> star;
+  for (const std::vector<std::uint32_t>* part : { &c.Vanishing, &c.Kept })
+  {
+    for (const std::uint32_t t : *part)
+    {
+      star.push_back(this->Triangles[t]);
+    }
+  }
+  const Box3 box = BoxOf(this->P, star); // (N's vertices are O's)
+  bool sweeps = false;
+  this->ForEachOther(c, box, [&](std::uint32_t o) {
+    for (const std::uint32_t v : this->Triangles[o])
+    {
+      if (sweeps || v == c.To || !box.Contains(this->P[v]))
+      {
+        continue;
+      }
+      for (const Swept& s : swept)
+      {
+        // (A link vertex is a corner of its own tetrahedra.)
+        if (v != s.A && v != s.B && InClosedTetrahedron(this->P[v], s.Corners, s.Sign))
+        {
+          sweeps = true;
+          break;
+        }
+      }
+    }
+  });
+  return sweeps;
+}
+
 void Decimator::Apply(const Collapse& c, double bound)
 {
   for (const std::uint32_t t : c.Vanishing)
@@ -825,7 +905,7 @@ bool Decimator::Try(std::uint32_t from, std::uint32_t to)
     ++this->Result.RefusedByError;
     return false;
   }
-  if (this->MeetsAnother(c))
+  if (this->MeetsAnother(c) || this->SweepsOverAnother(c))
   {
     ++this->Result.RefusedByEmbedding;
     return false;

@@ -145,6 +145,70 @@ TEST(CertifiedDecimation, MeshesKeepEveryGuaranteeWithFarFewerTriangles)
   }
 }
 
+TEST(CertifiedDecimation, ASmallVoidBelowTheSurfaceStaysInside)
+{
+  // A sphere with a small void a third of the tolerance below its surface:
+  // chords of the decimated sphere cut deeper than that, and a collapse
+  // whose new triangles pass below the void would leave it outside the
+  // solid, inside out - no triangle meets another, the distance and the
+  // counts are unchanged. Such collapses sweep over the void's vertices
+  // (SweepsOverAnother) and are refused: the void stays inside the outer
+  // surface, and its component stays one.
+  const tpc::MeshSolid outer = tpctest::SphereMesh({ 0, 0, 0 }, 0.8, 4);
+  const double tolerance = 1.0 / 32;
+  const double absolute = tolerance * Box3{ { -1, -1, -1 }, { 1, 1, 1 } }.Grown(0.05).Diagonal();
+  // (Off the icosphere's vertices, where the decimated surface keeps the
+  // radius: between them its chords cut in.)
+  const Vec3 centre = tpc::Normalized(Vec3{ 0.31, 0.52, 0.79 }) * (0.8 - 0.33 * absolute);
+  const tpc::MeshSolid inner = tpctest::SphereMesh(centre, 0.1 * absolute, 2);
+  std::vector<Vec3> points = outer.Points();
+  std::vector<std::array<std::uint32_t, 3>> triangles = outer.Triangles();
+  const auto offset = static_cast<std::uint32_t>(points.size());
+  points.insert(points.end(), inner.Points().begin(), inner.Points().end());
+  for (const auto& t : inner.Triangles())
+  {
+    triangles.push_back({ t[0] + offset, t[2] + offset, t[1] + offset }); // (a void: facing inward)
+  }
+  const tpc::ContourResult r = ContourMesh(tpc::MeshSolid(points, triangles), tolerance, true);
+  ASSERT_EQ(r.Status, tpc::ContourResult::Outcome::Contoured);
+  EXPECT_TRUE(r.Report.Guaranteed);
+  EXPECT_EQ(r.Report.Components, 2);
+  EXPECT_GT(r.Decimation.Collapses, 0u);
+  // The decimated outer surface, as a solid: every vertex of the void's
+  // component inside it (the void's vertices are those nearest the centre).
+  const tpc::TriangleMesh& mesh = r.Surface();
+  std::vector<std::array<std::uint32_t, 3>> outerTriangles;
+  std::vector<char> ofVoid(mesh.Points.size(), 0);
+  for (const tpc::Triangle& t : mesh.Triangles)
+  {
+    bool small = true;
+    for (const std::uint32_t v : t)
+    {
+      small = small && tpc::Norm(mesh.Points[v] - centre) < absolute;
+    }
+    if (small)
+    {
+      ofVoid[t[0]] = ofVoid[t[1]] = ofVoid[t[2]] = 1;
+    }
+    else
+    {
+      outerTriangles.push_back(t);
+    }
+  }
+  const tpc::MeshSolid decimatedOuter(mesh.Points.ToVector(), outerTriangles);
+  std::size_t voidPoints = 0, inside = 0;
+  for (std::size_t v = 0; v < mesh.Points.size(); ++v)
+  {
+    voidPoints += ofVoid[v];
+    inside += ofVoid[v] && decimatedOuter.IsInside(mesh.Points[v]) ? 1 : 0;
+  }
+  EXPECT_GT(voidPoints, 3u);
+  EXPECT_EQ(inside, voidPoints);
+  std::cout << "sphere with a void: " << mesh.Triangles.size() << " triangles, " << r.Decimation.RefusedByEmbedding
+            << " collapses refused by the embedding tests, " << inside << " of " << voidPoints
+            << " void vertices inside the outer surface\n";
+}
+
 TEST(CertifiedDecimation, SharpCreasesStayFollowed)
 {
   // A tilted box and a chamfered tilted bar: every point of every input edge
