@@ -91,6 +91,9 @@ private:
   /// The live triangles holding both a and b (two in a closed manifold).
   std::vector<std::uint32_t> EdgeTriangles(std::uint32_t a, std::uint32_t b) const;
   bool IsFeature(std::uint32_t a, std::uint32_t b) const;
+  SourceTriangle CornersOf(const Triangle& t) const { return { this->P[t[0]], this->P[t[1]], this->P[t[2]] }; }
+  /// The star's triangles, vanishing then kept, as they are before `c`.
+  std::vector<Triangle> StarOf(const Collapse& c) const;
   std::int32_t LabelOf(std::uint32_t t) const
   {
     return this->Labels.size() == this->Triangles.size() ? this->Labels[t] : 0;
@@ -108,8 +111,15 @@ private:
   bool MakesNoFeature(const Collapse& c) const;
   bool KeepsFeatures(const Collapse& c) const;
   bool KeepsCreasesFollowed(const Collapse& c);
+  /// Once `c` is made, do exactly two triangles hold the edge x y (named
+  /// after it), and are they bent (`bent`)?
+  bool EdgeAfter(const Collapse& c, std::uint32_t x, std::uint32_t y, bool& bent) const;
   /// Is x y a feature edge once `c` is made (x, y named after it)?
-  bool IsFeatureAfter(const Collapse& c, std::uint32_t x, std::uint32_t y) const;
+  bool IsFeatureAfter(const Collapse& c, std::uint32_t x, std::uint32_t y) const
+  {
+    bool bent = false;
+    return !this->EdgeAfter(c, x, y, bent) || bent;
+  }
   double Certify(const Collapse& c);
   double CertifyThroughBounds(const Collapse& c) const;
   double CertifyAgainstMesh(const Collapse& c);
@@ -311,6 +321,35 @@ void Decimator::Queue(std::uint32_t v)
   }
 }
 
+std::vector<Triangle> Decimator::StarOf(const Collapse& c) const
+{
+  std::vector<Triangle> star;
+  for (const std::vector<std::uint32_t>* part : { &c.Vanishing, &c.Kept })
+  {
+    for (const std::uint32_t t : *part)
+    {
+      star.push_back(this->Triangles[t]);
+    }
+  }
+  return star;
+}
+
+/// The edges of `triangles`, each once, as (lower, higher) vertex ids.
+std::vector<std::pair<std::uint32_t, std::uint32_t>> EdgesOf(const std::vector<Triangle>& triangles)
+{
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+  for (const Triangle& t : triangles)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      edges.emplace_back(std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]));
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
+
 bool Decimator::Describe(Collapse& c) const
 {
   for (const std::uint32_t t : this->Around[c.From])
@@ -411,7 +450,7 @@ bool Decimator::KeepsFeatures(const Collapse& c) const
   return true;
 }
 
-bool Decimator::IsFeatureAfter(const Collapse& c, std::uint32_t x, std::uint32_t y) const
+bool Decimator::EdgeAfter(const Collapse& c, std::uint32_t x, std::uint32_t y, bool& bent) const
 {
   std::vector<Vec3> normals;
   std::vector<std::int32_t> labels;
@@ -431,7 +470,8 @@ bool Decimator::IsFeatureAfter(const Collapse& c, std::uint32_t x, std::uint32_t
       labels.push_back(this->LabelOf(o));
     }
   }
-  return normals.size() != 2 || this->Bent(normals[0], labels[0], normals[1], labels[1]);
+  bent = normals.size() == 2 && this->Bent(normals[0], labels[0], normals[1], labels[1]);
+  return normals.size() == 2;
 }
 
 bool Decimator::KeepsCreasesFollowed(const Collapse& c)
@@ -443,25 +483,11 @@ bool Decimator::KeepsCreasesFollowed(const Collapse& c)
   // Removed: feature edges of the star that are not feature edges after
   // (gone, or no longer bent). Only edges with a triangle in the star change
   // (SharpCreases.h); most collapses remove none.
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> starEdges;
-  for (const std::vector<std::uint32_t>* part : { &c.Vanishing, &c.Kept })
-  {
-    for (const std::uint32_t t : *part)
-    {
-      const Triangle& old = this->Triangles[t];
-      for (int k = 0; k < 3; ++k)
-      {
-        starEdges.emplace_back(std::min(old[k], old[(k + 1) % 3]), std::max(old[k], old[(k + 1) % 3]));
-      }
-    }
-  }
-  std::sort(starEdges.begin(), starEdges.end());
-  starEdges.erase(std::unique(starEdges.begin(), starEdges.end()), starEdges.end());
+  // (An edge of From's is gone: removed if it was a feature.)
   std::vector<EdgeSegment> removed;
-  for (const auto& [x, y] : starEdges)
+  for (const auto& [x, y] : EdgesOf(this->StarOf(c)))
   {
-    const bool now = x != c.From && y != c.From &&
-      this->IsFeatureAfter(c, x == c.From ? c.To : x, y == c.From ? c.To : y);
+    const bool now = x != c.From && y != c.From && this->IsFeatureAfter(c, x, y);
     if (!now && this->IsFeature(x, y))
     {
       removed.push_back({ this->P[x], this->P[y] });
@@ -474,19 +500,12 @@ bool Decimator::KeepsCreasesFollowed(const Collapse& c)
   // The sharp creases within reach of a removed edge, and the feature edges
   // after within reach of those (from the triangles there).
   const double reach = this->Parameters.Tolerance - this->Slack;
-  Box3 near{ removed.front().A, removed.front().A };
+  std::vector<Vec3> ends;
   for (const EdgeSegment& e : removed)
   {
-    for (const Vec3& p : { e.A, e.B })
-    {
-      for (int a = 0; a < 3; ++a)
-      {
-        near.lo[a] = std::min(near.lo[a], p[a]);
-        near.hi[a] = std::max(near.hi[a], p[a]);
-      }
-    }
+    ends.insert(ends.end(), { e.A, e.B });
   }
-  const Box3 region = GrownBy(near, this->Parameters.Tolerance);
+  const Box3 region = GrownBy(BoundsOf(ends.data(), ends.size()), this->Parameters.Tolerance);
   std::vector<EdgeSegment> pieces;
   ++this->SharpMark;
   this->SharpGrid.ForEachListed(region, [&](std::uint32_t k) {
@@ -504,23 +523,11 @@ bool Decimator::KeepsCreasesFollowed(const Collapse& c)
   {
     return true;
   }
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
-  auto addEdges = [&edges](const Triangle& t) {
-    for (int k = 0; k < 3; ++k)
-    {
-      edges.emplace_back(std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]));
-    }
-  };
+  std::vector<Triangle> near = c.Made;
   this->ForEachOther(
-    c, GrownBy(region, this->Parameters.Tolerance), [&](std::uint32_t o) { addEdges(this->Triangles[o]); });
-  for (const Triangle& t : c.Made)
-  {
-    addEdges(t);
-  }
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    c, GrownBy(region, this->Parameters.Tolerance), [&](std::uint32_t o) { near.push_back(this->Triangles[o]); });
   std::vector<EdgeSegment> after;
-  for (const auto& [x, y] : edges)
+  for (const auto& [x, y] : EdgesOf(near))
   {
     if (this->IsFeatureAfter(c, x, y))
     {
@@ -539,34 +546,13 @@ bool Decimator::KeepsCreasesFollowed(const Collapse& c)
 
 bool Decimator::MakesNoFeature(const Collapse& c) const
 {
-  for (std::size_t i = 0; i < c.Made.size(); ++i)
+  for (const Triangle& t : c.Made)
   {
-    const Triangle& t = c.Made[i];
-    const Vec3 normal = this->Normal(t);
-    const std::int32_t label = this->LabelOf(c.Kept[i]);
     for (int k = 0; k < 3; ++k)
     {
       const std::uint32_t x = t[k], y = t[(k + 1) % 3];
-      // The triangle across the edge afterwards: made too, or one that stays.
-      bool found = false, bent = false;
-      for (std::size_t j = 0; j < c.Made.size() && !found; ++j)
-      {
-        if (j != i && Holds(c.Made[j], x) && Holds(c.Made[j], y))
-        {
-          found = true;
-          bent = this->Bent(normal, label, this->Normal(c.Made[j]), this->LabelOf(c.Kept[j]));
-        }
-      }
-      for (std::size_t j = 0; j < this->Around[x].size() && !found; ++j)
-      {
-        const std::uint32_t o = this->Around[x][j];
-        if (!Holds(this->Triangles[o], c.From) && Holds(this->Triangles[o], y))
-        {
-          found = true;
-          bent = this->Bent(normal, label, this->Normal(this->Triangles[o]), this->LabelOf(o));
-        }
-      }
-      if (!found)
+      bool bent = false;
+      if (!this->EdgeAfter(c, x, y, bent))
       {
         return false; // (never in a closed manifold after a collapse the link condition allows)
       }
@@ -656,8 +642,8 @@ double Decimator::CertifyAgainstMesh(const Collapse& c)
   PolygonSet madeSet;
   for (const Triangle& t : c.Made)
   {
-    made.push_back({ this->P[t[0]], this->P[t[1]], this->P[t[2]] });
-    madeSet.Add({ this->P[t[0]], this->P[t[1]], this->P[t[2]] });
+    made.push_back(this->CornersOf(t));
+    madeSet.Add({ made.back()[0], made.back()[1], made.back()[2] });
   }
   PolygonSet nearMade;
   this->NearSurface(GrownBy(BoxOf(this->P, c.Made), tolerance), &nearMade, nullptr);
@@ -667,22 +653,13 @@ double Decimator::CertifyAgainstMesh(const Collapse& c)
     return HUGE_VAL;
   }
   // (b) S where the star was nearest, to the surface after.
-  std::vector<Triangle> star;
-  for (const std::uint32_t t : c.Vanishing)
-  {
-    star.push_back(this->Triangles[t]);
-  }
-  for (const std::uint32_t t : c.Kept)
-  {
-    star.push_back(this->Triangles[t]);
-  }
-  const Box3 region = GrownBy(BoxOf(this->P, star), tolerance);
+  const Box3 region = GrownBy(BoxOf(this->P, this->StarOf(c)), tolerance);
   std::vector<SourceTriangle> surfacePieces;
   this->NearSurface(region, nullptr, &surfacePieces);
   PolygonSet after = madeSet;
   this->ForEachOther(c, GrownBy(region, tolerance), [&](std::uint32_t o) {
-    const Triangle& t = this->Triangles[o];
-    after.Add({ this->P[t[0]], this->P[t[1]], this->P[t[2]] });
+    const SourceTriangle s = this->CornersOf(this->Triangles[o]);
+    after.Add({ s[0], s[1], s[2] });
   });
   const HausdorffEstimate covered = OneSidedHausdorff(surfacePieces, after, giveUp, giveUp, budget);
   if (!(covered.Upper <= giveUp))
@@ -698,12 +675,11 @@ double Decimator::CertifyThroughBounds(const Collapse& c) const
   std::vector<double> offsets;
   PolygonSet beforeSet, afterSet;
   double largest = 0.0;
-  auto corners = [this](const Triangle& t) { return SourceTriangle{ this->P[t[0]], this->P[t[1]], this->P[t[2]] }; };
   for (const std::vector<std::uint32_t>* part : { &c.Vanishing, &c.Kept })
   {
     for (const std::uint32_t t : *part)
     {
-      const SourceTriangle s = corners(this->Triangles[t]);
+      const SourceTriangle s = this->CornersOf(this->Triangles[t]);
       before.push_back(s);
       beforeSet.Add({ s[0], s[1], s[2] });
       offsets.push_back(this->Bounds[t]);
@@ -712,7 +688,7 @@ double Decimator::CertifyThroughBounds(const Collapse& c) const
   }
   for (const Triangle& t : c.Made)
   {
-    const SourceTriangle s = corners(t);
+    const SourceTriangle s = this->CornersOf(t);
     after.push_back(s);
     afterSet.Add({ s[0], s[1], s[2] });
   }
@@ -806,15 +782,7 @@ bool Decimator::SweepsOverAnother(const Collapse& c)
   {
     return false;
   }
-  std::vector<Triangle> star;
-  for (const std::vector<std::uint32_t>* part : { &c.Vanishing, &c.Kept })
-  {
-    for (const std::uint32_t t : *part)
-    {
-      star.push_back(this->Triangles[t]);
-    }
-  }
-  const Box3 box = BoxOf(this->P, star); // (N's vertices are O's)
+  const Box3 box = BoxOf(this->P, this->StarOf(c)); // (N's vertices are O's)
   bool sweeps = false;
   this->ForEachOther(c, box, [&](std::uint32_t o) {
     for (const std::uint32_t v : this->Triangles[o])
