@@ -33,6 +33,9 @@ struct Piece
   double Upper = HUGE_VAL;    ///< of the offset distance on the piece: UpperOfG + Offset
   double UpperOfG = HUGE_VAL; ///< of g on the piece (header: Offsets)
   double Offset = 0.0;        ///< its source triangle's offset
+  /// The target of the single-target bound (1), and that bound of g.
+  std::uint32_t SingleTarget = SingleTargetWitness::None;
+  double Single = HUGE_VAL;
   bool operator<(const Piece& o) const { return this->Upper < o.Upper; }
 };
 
@@ -150,6 +153,7 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
   }
   double nearest[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL };
   double single = HUGE_VAL;
+  std::uint32_t singleTarget = SingleTargetWitness::None;
   const auto largest = [&] { return std::max({ single, nearest[0], nearest[1], nearest[2] }); };
   // Whether target t may lower a vertex's nearest distance or the single-
   // target bound, and then its distances. (A vertex's distance to the
@@ -182,6 +186,7 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
     if (improvesSingle)
     {
       single = farthest; // (all three computed, their maximum below the bound)
+      singleTarget = t;
     }
   };
   // Nearest box first: its target usually bounds the piece well enough to
@@ -232,6 +237,8 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
   const double upper = std::min(single, vertexMax + CoveringRadius(piece.Vertices)); // (of g)
   piece.UpperOfG = upper;
   piece.Upper = upper + piece.Offset;
+  piece.SingleTarget = singleTarget;
+  piece.Single = single;
   lower = std::max(lower, vertexMax == HUGE_VAL ? 0.0 : vertexMax + piece.Offset);
   // (Appended after the parent's entries were read: the arena may move.)
   piece.First = arena.size();
@@ -253,9 +260,13 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
 
 HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
   const PolygonSet& targets, double enough, double giveUp, std::size_t budget,
-  const DistanceOffsets& offsets)
+  const DistanceOffsets& offsets, std::vector<SingleTargetWitness>* witnesses)
 {
   HausdorffEstimate estimate;
+  if (witnesses)
+  {
+    witnesses->assign(sources.size(), SingleTargetWitness{});
+  }
   if (sources.empty())
   {
     return estimate;
@@ -295,6 +306,10 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
   {
     Piece piece{ sources[k], 0, 0, HUGE_VAL, HUGE_VAL, offsets.Sources ? (*offsets.Sources)[k] : 0.0 };
     evaluate(piece, 0, targets.size(), HUGE_VAL, settle, context, estimate.Lower);
+    if (witnesses && piece.Single + piece.Offset <= settle)
+    {
+      (*witnesses)[k] = { piece.SingleTarget, piece.Single + piece.Offset };
+    }
     keep(piece);
   }
   std::size_t evaluated = sources.size();

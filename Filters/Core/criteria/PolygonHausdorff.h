@@ -44,6 +44,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace tpc
@@ -68,10 +69,23 @@ struct DistanceOffsets
   const std::vector<double>* Targets = nullptr;
 };
 
+/// A source triangle settled whole by the single-target bound (1): every
+/// point of it within Bound of target Target alone (offsets included).
+struct SingleTargetWitness
+{
+  static constexpr std::uint32_t None = ~std::uint32_t{ 0 };
+  std::uint32_t Target = None; ///< None: not settled so (split, or by (2))
+  double Bound = 0.0;
+};
+
 /// Bounds h(sources, targets) as above (with `offsets`, the offset distance);
-/// Upper is +inf when there are sources but no targets.
+/// Upper is +inf when there are sources but no targets. `witnesses`, when
+/// given, receives one entry per source: the target that settled it at its
+/// first evaluation by (1) alone, within min(enough, giveUp) - a certificate
+/// that stays true as long as that target does (CertifiedDecimation.h keeps
+/// them between collapses).
 HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
   const PolygonSet& targets, double enough, double giveUp, std::size_t budget = 4096,
-  const DistanceOffsets& offsets = {});
+  const DistanceOffsets& offsets = {}, std::vector<SingleTargetWitness>* witnesses = nullptr);
 
 } // namespace tpc

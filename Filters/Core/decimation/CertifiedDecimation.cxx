@@ -69,6 +69,9 @@ struct Collapse
   std::vector<std::uint32_t> Vanishing;
   std::vector<std::uint32_t> Kept;
   std::vector<Triangle> Made; ///< Kept's triangles after the move, in Kept's order
+  /// Against the mesh: S's triangles measured by (b), each with its new
+  /// witness (or none), set in Apply (header: Witnesses).
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> Witnesses;
 };
 
 class Decimator
@@ -120,16 +123,22 @@ private:
     bool bent = false;
     return !this->EdgeAfter(c, x, y, bent) || bent;
   }
-  double Certify(const Collapse& c);
+  double Certify(Collapse& c);
   double CertifyThroughBounds(const Collapse& c) const;
-  double CertifyAgainstMesh(const Collapse& c);
+  double CertifyAgainstMesh(Collapse& c);
   /// Calls visit(o) once for each live triangle but the star's whose box
   /// overlaps `box`.
   template <typename Visit>
   void ForEachOther(const Collapse& c, const Box3& box, Visit&& visit);
   /// S's triangles whose boxes overlap `box`: whole, as polygons in
   /// `polygons`, or clipped to `box` and fanned into `pieces`.
-  void NearSurface(const Box3& box, PolygonSet* polygons, std::vector<SourceTriangle>* pieces);
+  void NearSurface(const Box3& box, PolygonSet& polygons);
+  /// S's triangles overlapping `region` that no live triangle outside the
+  /// star witnesses (header: Witnesses): whole where they lie in `region`,
+  /// else clipped to it and fanned; `from` names each piece's triangle and
+  /// whether it is whole.
+  void UnwitnessedNear(const Collapse& c, const Box3& region, std::vector<SourceTriangle>& pieces,
+    std::vector<std::pair<std::uint32_t, bool>>& from);
   bool MeetsAnother(const Collapse& c);
   bool SweepsOverAnother(const Collapse& c);
   void Apply(const Collapse& c, double bound);
@@ -155,6 +164,12 @@ private:
   TriangleGrid SurfaceGrid;
   std::vector<std::uint32_t> SurfaceSeen;
   std::uint32_t SurfaceMark = 0;
+  /// Per triangle of S: a live triangle within the tolerance of all of it,
+  /// or None (header: Witnesses).
+  std::vector<std::uint32_t> Witness;
+  /// Marks the star's triangles while a collapse is certified.
+  std::vector<std::uint32_t> InStar;
+  std::uint32_t StarMark = 0;
   /// S's sharp creases (SharpCreases.h), when S is known.
   std::vector<EdgeSegment> Sharp;
   TriangleGrid SharpGrid;
@@ -248,6 +263,8 @@ Decimator::Decimator(TriangleMesh& mesh, std::vector<double>& bounds, Releasable
       this->SurfaceGrid.Insert(t, TriangleBox(surface.Mesh->Points().data(), triangles[t]));
     }
     this->SurfaceSeen.assign(triangles.size(), 0);
+    this->Witness.assign(triangles.size(), SingleTargetWitness::None);
+    this->InStar.assign(this->Triangles.size(), 0);
     this->Sharp = SharpEdges(*surface.Mesh, SharpCreaseAngle);
     for (std::uint32_t k = 0; k < this->Sharp.size(); ++k)
     {
@@ -575,7 +592,7 @@ bool Decimator::MakesNoFeature(const Collapse& c) const
   return true;
 }
 
-double Decimator::Certify(const Collapse& c)
+double Decimator::Certify(Collapse& c)
 {
   return this->Surface.Mesh ? this->CertifyAgainstMesh(c) : this->CertifyThroughBounds(c);
 }
@@ -598,7 +615,7 @@ void Decimator::ForEachOther(const Collapse& c, const Box3& box, Visit&& visit)
   });
 }
 
-void Decimator::NearSurface(const Box3& box, PolygonSet* polygons, std::vector<SourceTriangle>* pieces)
+void Decimator::NearSurface(const Box3& box, PolygonSet& polygons)
 {
   const Vec3* points = this->Surface.Mesh->Points().data();
   const std::vector<Triangle>& triangles = this->Surface.Mesh->Triangles();
@@ -610,9 +627,41 @@ void Decimator::NearSurface(const Box3& box, PolygonSet* polygons, std::vector<S
     }
     this->SurfaceSeen[s] = this->SurfaceMark;
     const Triangle& t = triangles[s];
-    if (polygons)
+    polygons.Add({ points[t[0]], points[t[1]], points[t[2]] });
+  });
+}
+
+void Decimator::UnwitnessedNear(const Collapse& c, const Box3& region, std::vector<SourceTriangle>& pieces,
+  std::vector<std::pair<std::uint32_t, bool>>& from)
+{
+  ++this->StarMark;
+  for (const std::vector<std::uint32_t>* part : { &c.Vanishing, &c.Kept })
+  {
+    for (const std::uint32_t t : *part)
     {
-      polygons->Add({ points[t[0]], points[t[1]], points[t[2]] });
+      this->InStar[t] = this->StarMark;
+    }
+  }
+  const Vec3* points = this->Surface.Mesh->Points().data();
+  const std::vector<Triangle>& triangles = this->Surface.Mesh->Triangles();
+  ++this->SurfaceMark;
+  this->SurfaceGrid.ForEachListed(region, [&](std::uint32_t s) {
+    const Triangle& t = triangles[s];
+    const Box3 box = TriangleBox(points, t);
+    if (this->SurfaceSeen[s] == this->SurfaceMark || !box.Overlaps(region))
+    {
+      return;
+    }
+    this->SurfaceSeen[s] = this->SurfaceMark;
+    const std::uint32_t w = this->Witness[s];
+    if (w != SingleTargetWitness::None && this->Alive[w] && this->InStar[w] != this->StarMark)
+    {
+      return; // (its witness stays as it is)
+    }
+    if (region.Contains(box.lo) && region.Contains(box.hi))
+    {
+      pieces.push_back({ points[t[0]], points[t[1]], points[t[2]] });
+      from.emplace_back(s, true);
       return;
     }
     ClippedCorners clipped;
@@ -620,19 +669,21 @@ void Decimator::NearSurface(const Box3& box, PolygonSet* polygons, std::vector<S
     {
       clipped.push_back(points[v]);
     }
-    ClipToBox(clipped, box);
+    ClipToBox(clipped, region);
     for (std::size_t i = 1; i + 1 < clipped.size(); ++i)
     {
-      pieces->push_back({ clipped[0], clipped[i], clipped[i + 1] });
+      pieces.push_back({ clipped[0], clipped[i], clipped[i + 1] });
+      from.emplace_back(s, false);
     }
     if (clipped.size() == 1 || clipped.size() == 2)
     {
-      pieces->push_back({ clipped.front(), clipped.back(), clipped.back() });
+      pieces.push_back({ clipped.front(), clipped.back(), clipped.back() });
+      from.emplace_back(s, false);
     }
   });
 }
 
-double Decimator::CertifyAgainstMesh(const Collapse& c)
+double Decimator::CertifyAgainstMesh(Collapse& c)
 {
   const double tolerance = this->Parameters.Tolerance;
   const double giveUp = tolerance - this->Slack;
@@ -646,27 +697,41 @@ double Decimator::CertifyAgainstMesh(const Collapse& c)
     madeSet.Add({ made.back()[0], made.back()[1], made.back()[2] });
   }
   PolygonSet nearMade;
-  this->NearSurface(GrownBy(BoxOf(this->P, c.Made), tolerance), &nearMade, nullptr);
+  this->NearSurface(GrownBy(BoxOf(this->P, c.Made), tolerance), nearMade);
   const HausdorffEstimate toSurface = OneSidedHausdorff(made, nearMade, giveUp, giveUp, budget);
   if (!(toSurface.Upper <= giveUp))
   {
     return HUGE_VAL;
   }
-  // (b) S where the star was nearest, to the surface after.
+  // (b) S where the star was nearest (but where a triangle outside the star
+  // witnesses it), to the surface after.
   const Box3 region = GrownBy(BoxOf(this->P, this->StarOf(c)), tolerance);
   std::vector<SourceTriangle> surfacePieces;
-  this->NearSurface(region, nullptr, &surfacePieces);
+  std::vector<std::pair<std::uint32_t, bool>> from;
+  this->UnwitnessedNear(c, region, surfacePieces, from);
   PolygonSet after = madeSet;
+  std::vector<std::uint32_t> afterIds = c.Kept; // (the made triangles take the kept ones' ids)
   this->ForEachOther(c, GrownBy(region, tolerance), [&](std::uint32_t o) {
     const SourceTriangle s = this->CornersOf(this->Triangles[o]);
     after.Add({ s[0], s[1], s[2] });
+    afterIds.push_back(o);
   });
-  const HausdorffEstimate covered = OneSidedHausdorff(surfacePieces, after, giveUp, giveUp, budget);
+  std::vector<SingleTargetWitness> settled;
+  const HausdorffEstimate covered = OneSidedHausdorff(surfacePieces, after, giveUp, giveUp, budget, {}, &settled);
   if (!(covered.Upper <= giveUp))
   {
     return HUGE_VAL;
   }
-  return std::max(toSurface.Upper, covered.Upper) + this->Slack;
+  // New witnesses: a whole triangle of S settled by one triangle after.
+  double witnessed = 0.0;
+  c.Witnesses.clear();
+  for (std::size_t k = 0; k < from.size(); ++k)
+  {
+    const bool whole = from[k].second && settled[k].Target != SingleTargetWitness::None;
+    c.Witnesses.emplace_back(from[k].first, whole ? afterIds[settled[k].Target] : SingleTargetWitness::None);
+    witnessed = whole ? std::max(witnessed, settled[k].Bound) : witnessed;
+  }
+  return std::max({ toSurface.Upper, covered.Upper, witnessed }) + this->Slack;
 }
 
 double Decimator::CertifyThroughBounds(const Collapse& c) const
@@ -828,6 +893,10 @@ void Decimator::Apply(const Collapse& c, double bound)
     this->Grid.Insert(t, TriangleBox(this->P, c.Made[i]));
   }
   this->Around[c.From].clear();
+  for (const auto& [s, w] : c.Witnesses)
+  {
+    this->Witness[s] = w;
+  }
   ++this->Result.Collapses;
   // Every vertex whose star changed is queued again.
   std::vector<std::uint32_t> changed = this->Neighbours(c.To);

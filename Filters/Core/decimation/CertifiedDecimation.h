@@ -44,6 +44,22 @@
 // lies there). B becomes max(B, hA, hB) + rounding slack. No bound
 // accumulates: each collapse is measured against S.
 //
+// Witnesses. Most of S near a star is nearest to triangles outside it, and
+// measuring it again at every collapse nearby was most of (b)'s work. When
+// (b) settles a whole triangle s of S by one triangle w after the collapse
+// (the single-target bound of PolygonHausdorff.h: every point of s within
+// b_s <= the tolerance of w; b_s goes into B), w becomes s's witness. As long
+// as w is alive and outside the star being collapsed, w is unchanged (only
+// the star's triangles change), so s keeps b_s and (b) skips it. Every s
+// whose witness is in the star lies in R (within the tolerance of w, inside
+// the star's box), so (b) measures it again and gives it a new witness or
+// none; a triangle of S without one (measured in pieces, or clipped to R) is
+// measured by every collapse whose R it meets, as before. Only S's
+// triangles whose coverage may change are measured, and each collapse's
+// decisions are those of measuring all of S in R (a skipped s settles within
+// the tolerance either way): armadillo at 1/128 decimated in 3.9 s instead
+// of 5.7, the same surface byte for byte.
+//
 // Embedding. The surface before is embedded (the exact check of
 // SurfaceEmbedding.h; the pass does not run otherwise). A collapse is kept
 // only when no triangle of N meets another one of N, or any other live
