@@ -425,7 +425,7 @@ void DecimateSurface(ContourResult& r, double tolerance, const ExactMesh& surfac
   DecimationParameters parameters;
   parameters.Tolerance = tolerance;
   parameters.Progress = run.Stage(EmbeddingEnd, EmbeddingEnd);
-  r.Decimation = DecimateCertified(r.Extraction.Mesh, bounds, r.TriangleSolid, parameters, surface);
+  r.Decimation = DecimateCertified(r.Extraction.Mesh, bounds, r.TriangleSolid, parameters, surface, parallelFor);
   if (r.Decimation.Collapses == 0)
   {
     return;

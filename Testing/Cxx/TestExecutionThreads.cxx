@@ -140,42 +140,48 @@ TEST(ExecutionThreads, NestedLoopsAndExceptions)
 
 TEST(ExecutionThreads, FilterOutputIsTheSameOnOneThreadAndTwo)
 {
-  // A sphere mesh remeshed at 1/64: the core's loops write only their own
-  // ranges (Parallel.h), so the threads change nothing.
+  // A sphere mesh remeshed at 1/64, as extracted and decimated: the core's
+  // loops write only their own ranges (Parallel.h), and the decimation's
+  // batches decide as one after another (CertifiedDecimation.h, Parallel),
+  // so the threads change nothing.
   vtkNew<vtkSphereSource> sphere;
   sphere->SetThetaResolution(48);
   sphere->SetPhiResolution(32);
   vtkNew<vtkTriangleFilter> triangles;
   triangles->SetInputConnection(sphere->GetOutputPort());
   triangles->Update();
-  std::vector<double> points[2];
-  std::vector<vtkIdType> cells[2];
-  const char* backends[2] = { "Sequential", "STDThread" };
-  for (int k = 0; k < 2; ++k)
+  for (const bool decimate : { false, true })
   {
-    WithBackend(backends[k], [&] {
-      if (k == 1 && vtkSMPTools::GetEstimatedNumberOfThreads() < 2)
-      {
-        GTEST_SKIP() << "one processor: one thread either way";
-      }
-      vtkNew<vtkTopologyPreservingContour> filter;
-      filter->SetInputData(triangles->GetOutput());
-      filter->SetTolerance(1.0 / 64);
-      const tpctest::FilterResult r = tpctest::Run(filter);
-      EXPECT_EQ(r.Guaranteed, 1) << backends[k];
-      vtkDataArray* xyz = r.Surface->GetPoints()->GetData();
-      for (vtkIdType i = 0; i < xyz->GetNumberOfValues(); ++i)
-      {
-        points[k].push_back(xyz->GetComponent(i / 3, static_cast<int>(i % 3)));
-      }
-      vtkDataArray* connectivity = r.Surface->GetPolys()->GetConnectivityArray();
-      for (vtkIdType i = 0; i < connectivity->GetNumberOfValues(); ++i)
-      {
-        cells[k].push_back(static_cast<vtkIdType>(connectivity->GetComponent(i, 0)));
-      }
-    });
+    std::vector<double> points[2];
+    std::vector<vtkIdType> cells[2];
+    const char* backends[2] = { "Sequential", "STDThread" };
+    for (int k = 0; k < 2; ++k)
+    {
+      WithBackend(backends[k], [&] {
+        if (k == 1 && vtkSMPTools::GetEstimatedNumberOfThreads() < 2)
+        {
+          GTEST_SKIP() << "one processor: one thread either way";
+        }
+        vtkNew<vtkTopologyPreservingContour> filter;
+        filter->SetInputData(triangles->GetOutput());
+        filter->SetTolerance(1.0 / 64);
+        filter->SetDecimate(decimate);
+        const tpctest::FilterResult r = tpctest::Run(filter);
+        EXPECT_EQ(r.Guaranteed, 1) << backends[k];
+        vtkDataArray* xyz = r.Surface->GetPoints()->GetData();
+        for (vtkIdType i = 0; i < xyz->GetNumberOfValues(); ++i)
+        {
+          points[k].push_back(xyz->GetComponent(i / 3, static_cast<int>(i % 3)));
+        }
+        vtkDataArray* connectivity = r.Surface->GetPolys()->GetConnectivityArray();
+        for (vtkIdType i = 0; i < connectivity->GetNumberOfValues(); ++i)
+        {
+          cells[k].push_back(static_cast<vtkIdType>(connectivity->GetComponent(i, 0)));
+        }
+      });
+    }
+    EXPECT_GT(cells[0].size(), decimate ? 30u : 100u) << decimate;
+    EXPECT_EQ(points[0], points[1]) << decimate;
+    EXPECT_EQ(cells[0], cells[1]) << decimate;
   }
-  EXPECT_GT(cells[0].size(), 100u);
-  EXPECT_EQ(points[0], points[1]);
-  EXPECT_EQ(cells[0], cells[1]);
 }

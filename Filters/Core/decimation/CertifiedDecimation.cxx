@@ -3,6 +3,7 @@
 #include "ConvexPolygons.h"
 #include "ExactPredicates.h"
 #include "PolygonHausdorff.h"
+#include "ScratchPool.h"
 #include "SelfIntersection.h"
 #include "SharpCreases.h"
 #include "TriangleGrid.h"
@@ -12,6 +13,7 @@
 #include <cmath>
 #include <functional>
 #include <queue>
+#include <cstdio>
 
 namespace tpc
 {
@@ -74,13 +76,72 @@ struct Collapse
   std::vector<std::pair<std::uint32_t, std::uint32_t>> Witnesses;
 };
 
+/// Why a collapse examined is refused, or that it is certified.
+enum class Verdict
+{
+  Certified,
+  Link,
+  Feature,
+  Shape,
+  Error,
+  Embedding
+};
+
+struct Examined
+{
+  Collapse What;
+  Verdict Outcome = Verdict::Link;
+  double Bound = 0.0; ///< the made triangles' bound, when certified
+};
+
+/// Which items one search has visited: a stamp per item, bumped per search
+/// (no clearing between searches).
+struct VisitMarks
+{
+  std::vector<std::uint32_t> Stamp;
+  std::uint32_t Current = 0;
+
+  void Start(std::size_t items)
+  {
+    if (this->Stamp.size() < items)
+    {
+      this->Stamp.resize(items, 0);
+    }
+    ++this->Current;
+  }
+  /// True the first time `i` is visited in this search.
+  bool First(std::uint32_t i)
+  {
+    if (this->Stamp[i] == this->Current)
+    {
+      return false;
+    }
+    this->Stamp[i] = this->Current;
+    return true;
+  }
+  bool Visited(std::uint32_t i) const { return this->Stamp[i] == this->Current; }
+};
+
+/// One thread's marks while it examines collapses (header: Parallel).
+struct ExamineScratch
+{
+  VisitMarks Triangles; ///< the surface's live triangles
+  VisitMarks Star;      ///< the star's triangles
+  VisitMarks Surface;   ///< S's triangles
+  VisitMarks Sharp;     ///< S's sharp crease segments
+};
+
+/// Collapses examined together (header: Parallel): enough to keep two to
+/// a few threads busy, few enough that the order stays nearly the heap's.
+constexpr std::size_t CollapsesPerBatch = 16;
+
 class Decimator
 {
 public:
   Decimator(TriangleMesh& mesh, std::vector<double>& bounds, ReleasableArray<std::int32_t>& labels,
     const DecimationParameters& parameters, const ExactMesh& surface);
 
-  void Run();
+  void Run(const ParallelFor& parallelFor);
   void Compact();
 
   DecimationResult Result;
@@ -106,14 +167,19 @@ private:
     return Dot(n1, n2) < this->CosFeatureAngle || label1 != label2;
   }
   void Queue(std::uint32_t v);
-  bool Try(std::uint32_t from, std::uint32_t to);
+  /// Pops the next batch of collapses to examine together (header: Parallel).
+  void FormBatch(std::vector<Candidate>& batch);
+  /// Whether `c` reads nothing the batch's collapses write; if so, it joins.
+  bool Claim(const Candidate& c);
+  /// Every check of moving `from` onto `to`, on the surface as it is (reads only).
+  Examined Examine(std::uint32_t from, std::uint32_t to, ExamineScratch& scratch) const;
   bool Describe(Collapse& c) const;
   bool MovesAlongFeatures(const Collapse& c) const;
   bool LinkConditionHolds(const Collapse& c) const;
   bool KeepsShape(const Collapse& c) const;
   bool MakesNoFeature(const Collapse& c) const;
   bool KeepsFeatures(const Collapse& c) const;
-  bool KeepsCreasesFollowed(const Collapse& c);
+  bool KeepsCreasesFollowed(const Collapse& c, ExamineScratch& scratch) const;
   /// Once `c` is made, do exactly two triangles hold the edge x y (named
   /// after it), and are they bent (`bent`)?
   bool EdgeAfter(const Collapse& c, std::uint32_t x, std::uint32_t y, bool& bent) const;
@@ -123,24 +189,27 @@ private:
     bool bent = false;
     return !this->EdgeAfter(c, x, y, bent) || bent;
   }
-  double Certify(Collapse& c);
+  double Certify(Collapse& c, ExamineScratch& scratch) const;
   double CertifyThroughBounds(const Collapse& c) const;
-  double CertifyAgainstMesh(Collapse& c);
+  double CertifyAgainstMesh(Collapse& c, ExamineScratch& scratch) const;
+  /// Calls visit(o) once for each live triangle whose box overlaps `box`.
+  template <typename Visit>
+  void ForEachLive(const Box3& box, VisitMarks& marks, Visit&& visit) const;
   /// Calls visit(o) once for each live triangle but the star's whose box
   /// overlaps `box`.
   template <typename Visit>
-  void ForEachOther(const Collapse& c, const Box3& box, Visit&& visit);
-  /// S's triangles whose boxes overlap `box`: whole, as polygons in
-  /// `polygons`, or clipped to `box` and fanned into `pieces`.
-  void NearSurface(const Box3& box, PolygonSet& polygons);
+  void ForEachOther(const Collapse& c, const Box3& box, VisitMarks& marks, Visit&& visit) const;
+  /// S's triangles whose boxes overlap `box`, as polygons.
+  void NearSurface(const Box3& box, PolygonSet& polygons, VisitMarks& marks) const;
   /// S's triangles overlapping `region` that no live triangle outside the
   /// star witnesses (header: Witnesses): whole where they lie in `region`,
   /// else clipped to it and fanned; `from` names each piece's triangle and
   /// whether it is whole.
   void UnwitnessedNear(const Collapse& c, const Box3& region, std::vector<SourceTriangle>& pieces,
-    std::vector<std::pair<std::uint32_t, bool>>& from);
-  bool MeetsAnother(const Collapse& c);
-  bool SweepsOverAnother(const Collapse& c);
+    std::vector<std::pair<std::uint32_t, bool>>& from, ExamineScratch& scratch) const;
+  bool MeetsAnother(const Collapse& c, ExamineScratch& scratch) const;
+  bool SweepsOverAnother(const Collapse& c, ExamineScratch& scratch) const;
+  void Count(Verdict outcome);
   void Apply(const Collapse& c, double bound);
 
   TriangleMesh& Mesh;
@@ -156,25 +225,18 @@ private:
   std::vector<std::vector<std::uint32_t>> Around;
   /// Bumped when a vertex's star changes: older candidates are stale.
   std::vector<std::uint32_t> Stamp;
-  std::vector<std::uint32_t> Seen;
-  std::uint32_t SeenMark = 0;
   TriangleGrid Grid;
+  /// The batch being formed: the boxes of what its collapses write (Claim).
+  std::vector<Box3> WrittenBoxes;
   ExactMesh Surface;
   /// S's triangles, when collapses are certified against S.
   TriangleGrid SurfaceGrid;
-  std::vector<std::uint32_t> SurfaceSeen;
-  std::uint32_t SurfaceMark = 0;
   /// Per triangle of S: a live triangle within the tolerance of all of it,
   /// or None (header: Witnesses).
   std::vector<std::uint32_t> Witness;
-  /// Marks the star's triangles while a collapse is certified.
-  std::vector<std::uint32_t> InStar;
-  std::uint32_t StarMark = 0;
   /// S's sharp creases (SharpCreases.h), when S is known.
   std::vector<EdgeSegment> Sharp;
   TriangleGrid SharpGrid;
-  std::vector<std::uint32_t> SharpSeen;
-  std::uint32_t SharpMark = 0;
   std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> Heap;
 };
 
@@ -205,17 +267,23 @@ Box3 GrownBy(Box3 box, double margin)
   return box;
 }
 
+/// The smallest box holding both.
+Box3 Union(Box3 a, const Box3& b)
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    a.lo[k] = std::min(a.lo[k], b.lo[k]);
+    a.hi[k] = std::max(a.hi[k], b.hi[k]);
+  }
+  return a;
+}
+
 Box3 BoxOf(const Vec3* points, const std::vector<Triangle>& triangles)
 {
   Box3 box = TriangleBox(points, triangles.front());
   for (const Triangle& t : triangles)
   {
-    const Box3 b = TriangleBox(points, t);
-    for (int a = 0; a < 3; ++a)
-    {
-      box.lo[a] = std::min(box.lo[a], b.lo[a]);
-      box.hi[a] = std::max(box.hi[a], b.hi[a]);
-    }
+    box = Union(box, TriangleBox(points, t));
   }
   return box;
 }
@@ -232,7 +300,6 @@ Decimator::Decimator(TriangleMesh& mesh, std::vector<double>& bounds, Releasable
   , Alive(mesh.Triangles.size(), 1)
   , Around(mesh.Points.size())
   , Stamp(mesh.Points.size(), 0)
-  , Seen(mesh.Triangles.size(), 0)
   , Grid(PointsBox(mesh.Points).lo, BucketWidth(PointsBox(mesh.Points), parameters.Tolerance))
   , Surface(surface)
   , SurfaceGrid(PointsBox(mesh.Points).lo, BucketWidth(PointsBox(mesh.Points), parameters.Tolerance))
@@ -262,16 +329,13 @@ Decimator::Decimator(TriangleMesh& mesh, std::vector<double>& bounds, Releasable
     {
       this->SurfaceGrid.Insert(t, TriangleBox(surface.Mesh->Points().data(), triangles[t]));
     }
-    this->SurfaceSeen.assign(triangles.size(), 0);
     this->Witness.assign(triangles.size(), SingleTargetWitness::None);
-    this->InStar.assign(this->Triangles.size(), 0);
     this->Sharp = SharpEdges(*surface.Mesh, SharpCreaseAngle);
     for (std::uint32_t k = 0; k < this->Sharp.size(); ++k)
     {
       const Vec3 ends[2] = { this->Sharp[k].A, this->Sharp[k].B };
       this->SharpGrid.Insert(k, BoundsOf(ends, 2));
     }
-    this->SharpSeen.assign(this->Sharp.size(), 0);
   }
 }
 
@@ -491,7 +555,7 @@ bool Decimator::EdgeAfter(const Collapse& c, std::uint32_t x, std::uint32_t y, b
   return normals.size() == 2;
 }
 
-bool Decimator::KeepsCreasesFollowed(const Collapse& c)
+bool Decimator::KeepsCreasesFollowed(const Collapse& c, ExamineScratch& scratch) const
 {
   if (this->Sharp.empty())
   {
@@ -524,11 +588,10 @@ bool Decimator::KeepsCreasesFollowed(const Collapse& c)
   }
   const Box3 region = GrownBy(BoundsOf(ends.data(), ends.size()), this->Parameters.Tolerance);
   std::vector<EdgeSegment> pieces;
-  ++this->SharpMark;
+  scratch.Sharp.Start(this->Sharp.size());
   this->SharpGrid.ForEachListed(region, [&](std::uint32_t k) {
-    if (this->SharpSeen[k] != this->SharpMark)
+    if (scratch.Sharp.First(k))
     {
-      this->SharpSeen[k] = this->SharpMark;
       EdgeSegment piece = this->Sharp[k];
       if (ClipSegment(piece.A, piece.B, region))
       {
@@ -541,8 +604,8 @@ bool Decimator::KeepsCreasesFollowed(const Collapse& c)
     return true;
   }
   std::vector<Triangle> near = c.Made;
-  this->ForEachOther(
-    c, GrownBy(region, this->Parameters.Tolerance), [&](std::uint32_t o) { near.push_back(this->Triangles[o]); });
+  this->ForEachOther(c, GrownBy(region, this->Parameters.Tolerance), scratch.Triangles,
+    [&](std::uint32_t o) { near.push_back(this->Triangles[o]); });
   std::vector<EdgeSegment> after;
   for (const auto& [x, y] : EdgesOf(near))
   {
@@ -592,69 +655,72 @@ bool Decimator::MakesNoFeature(const Collapse& c) const
   return true;
 }
 
-double Decimator::Certify(Collapse& c)
+double Decimator::Certify(Collapse& c, ExamineScratch& scratch) const
 {
-  return this->Surface.Mesh ? this->CertifyAgainstMesh(c) : this->CertifyThroughBounds(c);
+  return this->Surface.Mesh ? this->CertifyAgainstMesh(c, scratch) : this->CertifyThroughBounds(c);
 }
 
 template <typename Visit>
-void Decimator::ForEachOther(const Collapse& c, const Box3& box, Visit&& visit)
+void Decimator::ForEachLive(const Box3& box, VisitMarks& marks, Visit&& visit) const
 {
-  ++this->SeenMark;
+  marks.Start(this->Triangles.size());
   this->Grid.ForEachListed(box, [&](std::uint32_t o) {
-    if (this->Seen[o] == this->SeenMark)
-    {
-      return;
-    }
-    this->Seen[o] = this->SeenMark;
-    const Triangle& other = this->Triangles[o];
-    if (this->Alive[o] && !Holds(other, c.From) && TriangleBox(this->P, other).Overlaps(box))
+    if (marks.First(o) && this->Alive[o] && TriangleBox(this->P, this->Triangles[o]).Overlaps(box))
     {
       visit(o);
     }
   });
 }
 
-void Decimator::NearSurface(const Box3& box, PolygonSet& polygons)
+template <typename Visit>
+void Decimator::ForEachOther(const Collapse& c, const Box3& box, VisitMarks& marks, Visit&& visit) const
+{
+  this->ForEachLive(box, marks, [&](std::uint32_t o) {
+    if (!Holds(this->Triangles[o], c.From))
+    {
+      visit(o);
+    }
+  });
+}
+
+void Decimator::NearSurface(const Box3& box, PolygonSet& polygons, VisitMarks& marks) const
 {
   const Vec3* points = this->Surface.Mesh->Points().data();
   const std::vector<Triangle>& triangles = this->Surface.Mesh->Triangles();
-  ++this->SurfaceMark;
+  marks.Start(triangles.size());
   this->SurfaceGrid.ForEachListed(box, [&](std::uint32_t s) {
-    if (this->SurfaceSeen[s] == this->SurfaceMark || !TriangleBox(points, triangles[s]).Overlaps(box))
+    if (!marks.First(s) || !TriangleBox(points, triangles[s]).Overlaps(box))
     {
       return;
     }
-    this->SurfaceSeen[s] = this->SurfaceMark;
     const Triangle& t = triangles[s];
     polygons.Add({ points[t[0]], points[t[1]], points[t[2]] });
   });
 }
 
 void Decimator::UnwitnessedNear(const Collapse& c, const Box3& region, std::vector<SourceTriangle>& pieces,
-  std::vector<std::pair<std::uint32_t, bool>>& from)
+  std::vector<std::pair<std::uint32_t, bool>>& from, ExamineScratch& scratch) const
 {
-  ++this->StarMark;
+  scratch.Star.Start(this->Triangles.size());
   for (const std::vector<std::uint32_t>* part : { &c.Vanishing, &c.Kept })
   {
     for (const std::uint32_t t : *part)
     {
-      this->InStar[t] = this->StarMark;
+      scratch.Star.First(t);
     }
   }
   const Vec3* points = this->Surface.Mesh->Points().data();
   const std::vector<Triangle>& triangles = this->Surface.Mesh->Triangles();
-  ++this->SurfaceMark;
+  scratch.Surface.Start(triangles.size());
   this->SurfaceGrid.ForEachListed(region, [&](std::uint32_t s) {
     const Triangle& t = triangles[s];
     const Box3 box = TriangleBox(points, t);
-    if (this->SurfaceSeen[s] == this->SurfaceMark || !box.Overlaps(region))
+    if (!scratch.Surface.First(s) || !box.Overlaps(region))
     {
       return;
     }
-    this->SurfaceSeen[s] = this->SurfaceMark;
     const std::uint32_t w = this->Witness[s];
-    if (w != SingleTargetWitness::None && this->Alive[w] && this->InStar[w] != this->StarMark)
+    if (w != SingleTargetWitness::None && this->Alive[w] && !scratch.Star.Visited(w))
     {
       return; // (its witness stays as it is)
     }
@@ -683,7 +749,7 @@ void Decimator::UnwitnessedNear(const Collapse& c, const Box3& region, std::vect
   });
 }
 
-double Decimator::CertifyAgainstMesh(Collapse& c)
+double Decimator::CertifyAgainstMesh(Collapse& c, ExamineScratch& scratch) const
 {
   const double tolerance = this->Parameters.Tolerance;
   const double giveUp = tolerance - this->Slack;
@@ -697,7 +763,7 @@ double Decimator::CertifyAgainstMesh(Collapse& c)
     madeSet.Add({ made.back()[0], made.back()[1], made.back()[2] });
   }
   PolygonSet nearMade;
-  this->NearSurface(GrownBy(BoxOf(this->P, c.Made), tolerance), nearMade);
+  this->NearSurface(GrownBy(BoxOf(this->P, c.Made), tolerance), nearMade, scratch.Surface);
   const HausdorffEstimate toSurface = OneSidedHausdorff(made, nearMade, giveUp, giveUp, budget);
   if (!(toSurface.Upper <= giveUp))
   {
@@ -708,10 +774,10 @@ double Decimator::CertifyAgainstMesh(Collapse& c)
   const Box3 region = GrownBy(BoxOf(this->P, this->StarOf(c)), tolerance);
   std::vector<SourceTriangle> surfacePieces;
   std::vector<std::pair<std::uint32_t, bool>> from;
-  this->UnwitnessedNear(c, region, surfacePieces, from);
+  this->UnwitnessedNear(c, region, surfacePieces, from, scratch);
   PolygonSet after = madeSet;
   std::vector<std::uint32_t> afterIds = c.Kept; // (the made triangles take the kept ones' ids)
-  this->ForEachOther(c, GrownBy(region, tolerance), [&](std::uint32_t o) {
+  this->ForEachOther(c, GrownBy(region, tolerance), scratch.Triangles, [&](std::uint32_t o) {
     const SourceTriangle s = this->CornersOf(this->Triangles[o]);
     after.Add({ s[0], s[1], s[2] });
     afterIds.push_back(o);
@@ -779,7 +845,7 @@ double Decimator::CertifyThroughBounds(const Collapse& c) const
   return std::max(covered.Upper, near.Upper) + this->Slack;
 }
 
-bool Decimator::MeetsAnother(const Collapse& c)
+bool Decimator::MeetsAnother(const Collapse& c, ExamineScratch& scratch) const
 {
   for (std::size_t i = 0; i < c.Made.size(); ++i)
   {
@@ -795,7 +861,7 @@ bool Decimator::MeetsAnother(const Collapse& c)
   for (const Triangle& t : c.Made)
   {
     // (The star's triangles are replaced by the made ones.)
-    this->ForEachOther(c, TriangleBox(this->P, t),
+    this->ForEachOther(c, TriangleBox(this->P, t), scratch.Triangles,
       [&](std::uint32_t o) { meets = meets || TrianglesMeetImproperly(this->P, t, this->Triangles[o]); });
     if (meets)
     {
@@ -823,7 +889,7 @@ bool InClosedTetrahedron(const Vec3& p, const std::array<Vec3, 4>& t, int sign)
 
 /// Header, Embedding: does the pocket between the star and the made
 /// triangles hold a vertex of another live triangle?
-bool Decimator::SweepsOverAnother(const Collapse& c)
+bool Decimator::SweepsOverAnother(const Collapse& c, ExamineScratch& scratch) const
 {
   // The tetrahedra (From, To, a, b) over the made triangles' far edges ab.
   struct Swept
@@ -849,7 +915,7 @@ bool Decimator::SweepsOverAnother(const Collapse& c)
   }
   const Box3 box = BoxOf(this->P, this->StarOf(c)); // (N's vertices are O's)
   bool sweeps = false;
-  this->ForEachOther(c, box, [&](std::uint32_t o) {
+  this->ForEachOther(c, box, scratch.Triangles, [&](std::uint32_t o) {
     for (const std::uint32_t v : this->Triangles[o])
     {
       if (sweeps || v == c.To || !box.Contains(this->P[v]))
@@ -908,51 +974,126 @@ void Decimator::Apply(const Collapse& c, double bound)
   }
 }
 
-bool Decimator::Try(std::uint32_t from, std::uint32_t to)
+Examined Decimator::Examine(std::uint32_t from, std::uint32_t to, ExamineScratch& scratch) const
 {
-  Collapse c;
+  Examined e;
+  Collapse& c = e.What;
   c.From = from;
   c.To = to;
   if (!this->Describe(c) || !this->LinkConditionHolds(c))
   {
-    ++this->Result.RefusedByLink;
-    return false;
+    e.Outcome = Verdict::Link;
+    return e;
   }
   // (Features: the input's sharp creases where S is known, else the
   // surface's own dihedral angles and labels - header, Features.)
   const bool byDihedral = !this->Surface.Mesh;
   if (byDihedral && !this->MovesAlongFeatures(c))
   {
-    ++this->Result.RefusedByFeature;
-    return false;
+    e.Outcome = Verdict::Feature;
+    return e;
   }
   if (!this->KeepsShape(c))
   {
-    ++this->Result.RefusedByShape;
-    return false;
+    e.Outcome = Verdict::Shape;
+    return e;
   }
-  if (byDihedral ? !this->MakesNoFeature(c) || !this->KeepsFeatures(c) : !this->KeepsCreasesFollowed(c))
+  if (byDihedral ? !this->MakesNoFeature(c) || !this->KeepsFeatures(c) : !this->KeepsCreasesFollowed(c, scratch))
   {
-    ++this->Result.RefusedByFeature;
-    return false;
+    e.Outcome = Verdict::Feature;
+    return e;
   }
-  const double bound = this->Certify(c);
-  if (!(bound <= this->Parameters.Tolerance))
+  e.Bound = this->Certify(c, scratch);
+  if (!(e.Bound <= this->Parameters.Tolerance))
   {
-    ++this->Result.RefusedByError;
-    return false;
+    e.Outcome = Verdict::Error;
+    return e;
   }
-  if (this->MeetsAnother(c) || this->SweepsOverAnother(c))
+  e.Outcome = this->MeetsAnother(c, scratch) || this->SweepsOverAnother(c, scratch) ? Verdict::Embedding
+                                                                                    : Verdict::Certified;
+  return e;
+}
+
+void Decimator::Count(Verdict outcome)
+{
+  switch (outcome)
   {
-    ++this->Result.RefusedByEmbedding;
-    return false;
+    case Verdict::Certified:
+      break; // (counted by Apply)
+    case Verdict::Link:
+      ++this->Result.RefusedByLink;
+      break;
+    case Verdict::Feature:
+      ++this->Result.RefusedByFeature;
+      break;
+    case Verdict::Shape:
+      ++this->Result.RefusedByShape;
+      break;
+    case Verdict::Error:
+      ++this->Result.RefusedByError;
+      break;
+    case Verdict::Embedding:
+      ++this->Result.RefusedByEmbedding;
+      break;
   }
-  this->Apply(c, bound);
-  this->Result.Bound = std::max(this->Result.Bound, bound);
+}
+
+bool Decimator::Claim(const Candidate& c)
+{
+  // Read: what the live triangles overlapping the star's box grown by twice
+  // the tolerance hold, and the lists around their vertices. Written: the
+  // triangles around the star's vertices (header: Parallel).
+  const std::vector<std::uint32_t>& star = this->Around[c.From];
+  Box3 read = TriangleBox(this->P, this->Triangles[star.front()]);
+  for (const std::uint32_t t : star)
+  {
+    read = Union(read, TriangleBox(this->P, this->Triangles[t]));
+  }
+  Box3 written = read;
+  read = GrownBy(read, 2.0 * this->Parameters.Tolerance);
+  for (const Box3& other : this->WrittenBoxes)
+  {
+    if (read.Overlaps(other))
+    {
+      return false;
+    }
+  }
+  for (const std::uint32_t t : star)
+  {
+    for (const std::uint32_t v : this->Triangles[t])
+    {
+      for (const std::uint32_t o : this->Around[v])
+      {
+        written = Union(written, TriangleBox(this->P, this->Triangles[o]));
+      }
+    }
+  }
+  this->WrittenBoxes.push_back(written);
   return true;
 }
 
-void Decimator::Run()
+void Decimator::FormBatch(std::vector<Candidate>& batch)
+{
+  batch.clear();
+  this->WrittenBoxes.clear();
+  std::vector<Candidate> deferred;
+  while (!this->Heap.empty() && batch.size() < CollapsesPerBatch && deferred.size() < 3 * CollapsesPerBatch)
+  {
+    const Candidate c = this->Heap.top();
+    this->Heap.pop();
+    if (c.Stamp != this->Stamp[c.From] || this->Around[c.From].empty() || this->Around[c.To].empty())
+    {
+      continue; // (stale)
+    }
+    (this->Claim(c) ? batch : deferred).push_back(c);
+  }
+  for (const Candidate& c : deferred)
+  {
+    this->Heap.push(c);
+  }
+}
+
+void Decimator::Run(const ParallelFor& parallelFor)
 {
   // (Against the mesh, a collapse looks for the points of S it may leave
   // within the tolerance of its star: every point of S must be within the
@@ -965,21 +1106,49 @@ void Decimator::Run()
   {
     this->Queue(v);
   }
-  std::size_t popped = 0;
+  ScratchPool<ExamineScratch> scratch;
+  std::vector<Candidate> batch;
+  std::vector<Examined> examined;
+  std::size_t tried = 0, reported = 0;
   while (!this->Heap.empty())
   {
-    if (this->Parameters.Progress && ++popped % 1024 == 0 &&
-      this->Parameters.Progress(static_cast<double>(popped) / static_cast<double>(popped + this->Heap.size())))
+    if (this->Parameters.Progress && tried >= reported + 1024)
     {
-      this->Result.Aborted = true;
-      return;
+      reported = tried;
+      if (this->Parameters.Progress(static_cast<double>(tried) / static_cast<double>(tried + this->Heap.size())))
+      {
+        this->Result.Aborted = true;
+        return;
+      }
     }
-    const Candidate c = this->Heap.top();
-    this->Heap.pop();
-    if (c.Stamp == this->Stamp[c.From] && !this->Around[c.From].empty() && !this->Around[c.To].empty())
+    this->FormBatch(batch);
+    examined.assign(batch.size(), Examined{});
+    parallelFor(batch.size(), [&](std::size_t begin, std::size_t end) {
+      ScratchPool<ExamineScratch>::Lease marks(scratch);
+      for (std::size_t i = begin; i < end; ++i)
+      {
+        examined[i] = this->Examine(batch[i].From, batch[i].To, *marks);
+      }
+    });
+    // (In the batch's order: the same surface as examining and applying
+    // them one after another, whatever the threads - header, Parallel.)
+    for (std::size_t i = 0; i < examined.size(); ++i)
     {
-      this->Try(c.From, c.To);
+      const Examined& e = examined[i];
+      if (this->Parameters.CheckBatches)
+      {
+        ScratchPool<ExamineScratch>::Lease marks(scratch);
+        const bool same = this->Examine(batch[i].From, batch[i].To, *marks).Outcome == e.Outcome;
+        this->Result.BatchDisagreements += same ? 0 : 1;
+      }
+      this->Count(e.Outcome);
+      if (e.Outcome == Verdict::Certified)
+      {
+        this->Apply(e.What, e.Bound);
+        this->Result.Bound = std::max(this->Result.Bound, e.Bound);
+      }
     }
+    tried += batch.size();
   }
 }
 
@@ -1038,10 +1207,11 @@ void Decimator::Compact()
 } // namespace
 
 DecimationResult DecimateCertified(TriangleMesh& mesh, std::vector<double>& bounds,
-  ReleasableArray<std::int32_t>& labels, const DecimationParameters& parameters, const ExactMesh& surface)
+  ReleasableArray<std::int32_t>& labels, const DecimationParameters& parameters, const ExactMesh& surface,
+  const ParallelFor& parallelFor)
 {
   Decimator decimator(mesh, bounds, labels, parameters, surface);
-  decimator.Run();
+  decimator.Run(parallelFor);
   decimator.Compact();
   return decimator.Result;
 }
