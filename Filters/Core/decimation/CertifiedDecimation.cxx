@@ -831,7 +831,7 @@ double Decimator::CertifyThroughBounds(const Collapse& c) const
   // Refined until a quarter of the room left (a looser bound would use up
   // the tolerance for the collapses after this one).
   const double enough = largest + 0.25 * (giveUp - largest);
-  const std::size_t budget = this->Parameters.CertificateBudget;
+  const std::size_t budget = this->Parameters.BoundsCertificateBudget;
   const HausdorffEstimate covered = OneSidedHausdorff(before, afterSet, enough, giveUp, budget, { &offsets, nullptr });
   if (!(covered.Upper <= giveUp))
   {

@@ -164,6 +164,17 @@ struct DecimationParameters
   /// budget 256, 4 762 triangles in 3.6 s; 1 024, 3 482 in 2.0 s; 4 096,
   /// 3 470 in 1.6 s, with the dihedral rules).
   std::size_t CertificateBudget = 4096;
+  /// The same through the cells' bounds (CSG; header: Error). There most
+  /// refused collapses spend the whole budget: a star whose bounds are near
+  /// the tolerance leaves d(y, N) almost no room, and where N's nearest
+  /// triangle changes the pieces must shrink to that room - measured on the
+  /// demo CSG at 1/128 (one thread), 13 595 of 38 028 certificates ran out
+  /// of 4 096 pieces, 95 % of the pieces evaluated, while 90 % of those
+  /// that passed needed 512 or fewer. At 1/64, 1/128, 1/256: 4 450, 7 788,
+  /// 9 224 triangles in 3.4, 7.4, 9.0 s (2 threads) with 4 096; 4 516,
+  /// 7 950, 9 618 in 1.4, 2.7, 3.6 s with 1 024; 4 668 and
+  /// 10 224 in 1.1, 2.7 s with 512 (at 1/64 and 1/256).
+  std::size_t BoundsCertificateBudget = 1024;
   /// Told the share of candidates tried (not monotone: collapses queue new
   /// ones); true asks to stop. The surface is valid after every collapse, so
   /// stopping early leaves a surface for which everything above holds.
