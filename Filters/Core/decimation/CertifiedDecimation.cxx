@@ -267,20 +267,24 @@ double Decimator::CertifyAgainstMesh(Collapse& c, ExamineScratch& scratch) const
   const double tolerance = this->Parameters.Tolerance;
   const double giveUp = tolerance - this->Slack;
   const std::size_t budget = this->Parameters.CertificateBudget;
-  // (a) The made triangles, to S near them.
-  std::vector<SourceTriangle> made;
-  PolygonSet madeSet;
+  // (a) The made triangles, to S near them: one at a time, each with the
+  // whole budget. (A large made triangle on a CAD face needs about a
+  // thousand pieces, and a collapse there makes five to ten: with one budget
+  // for all, fandisk's large faces refused the same collapses again and
+  // again - at 1/128, 155 of 1 039 certificates ran out, 71 % of the pieces
+  // evaluated, 3.4 s; one budget each, 0.75 s, 164 -> 162 triangles.)
+  PolygonSet madeSet, nearMade;
+  this->NearSurface(GrownBy(BoxOf(this->Live.P, c.Made), tolerance), nearMade, scratch.Surface);
+  double toSurface = 0.0;
   for (const Triangle& t : c.Made)
   {
-    made.push_back(this->Live.CornersOf(t));
-    madeSet.Add({ made.back()[0], made.back()[1], made.back()[2] });
-  }
-  PolygonSet nearMade;
-  this->NearSurface(GrownBy(BoxOf(this->Live.P, c.Made), tolerance), nearMade, scratch.Surface);
-  const HausdorffEstimate toSurface = OneSidedHausdorff(made, nearMade, giveUp, giveUp, budget);
-  if (!(toSurface.Upper <= giveUp))
-  {
-    return HUGE_VAL;
+    const SourceTriangle made = this->Live.CornersOf(t);
+    madeSet.Add({ made[0], made[1], made[2] });
+    toSurface = std::max(toSurface, OneSidedHausdorff({ made }, nearMade, giveUp, giveUp, budget).Upper);
+    if (!(toSurface <= giveUp))
+    {
+      return HUGE_VAL;
+    }
   }
   // (b) S where the star was nearest (but where a triangle outside the star
   // witnesses it), to the surface after.
@@ -310,7 +314,7 @@ double Decimator::CertifyAgainstMesh(Collapse& c, ExamineScratch& scratch) const
     c.Witnesses.emplace_back(from[k].first, whole ? afterIds[settled[k].Target] : SingleTargetWitness::None);
     witnessed = whole ? std::max(witnessed, settled[k].Bound) : witnessed;
   }
-  return std::max({ toSurface.Upper, covered.Upper, witnessed }) + this->Slack;
+  return std::max({ toSurface, covered.Upper, witnessed }) + this->Slack;
 }
 
 double Decimator::CertifyThroughBounds(const Collapse& c) const
