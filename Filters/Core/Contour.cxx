@@ -619,8 +619,22 @@ void DecideGuarantee(ContourResult& r, const ContourParameters& p, double tolera
     why << " the surface is not embedded: " << embedding.ImproperPairs
         << " pair(s) of triangles meet other than in a shared edge or vertex, " << embedding.CoincidentVertices
         << " vertex pair(s) coincide, " << embedding.Degenerate
-        << " triangle(s) are degenerate (exact test of the output); their " << embedding.BlamedCells
-        << " cell(s) are marked CellState=3, SplitReason 11 (PATCH_NOT_EMBEDDED).";
+        << " triangle(s) are degenerate (exact test of the output)";
+    if (embedding.BlamedCells > 0)
+    {
+      why << "; their " << embedding.BlamedCells
+          << " cell(s) are marked CellState=3, SplitReason 11 (PATCH_NOT_EMBEDDED).";
+    }
+    else if (r.Decimation.Collapses > 0)
+    {
+      // (Found by the check of the decimated surface, which no cell made.)
+      why << ", in the decimated surface (each collapse was checked exactly against every triangle it could "
+             "meet, so this is a defect: please report it); turn Decimate off for the surface as extracted.";
+    }
+    else
+    {
+      why << ".";
+    }
   }
   if (inconsistent > 0)
   {

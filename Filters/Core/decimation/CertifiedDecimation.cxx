@@ -408,7 +408,11 @@ Examined Decimator::Examine(std::uint32_t from, std::uint32_t to, ExamineScratch
     e.Outcome = Verdict::Shape;
     return e;
   }
-  if (byDihedral ? !MakesNoFeature(this->Live, c) || !KeepsFeatures(this->Live, c) : !this->Creases.KeepsFollowed(this->Live, c, this->Parameters.Tolerance, this->Slack, scratch.Sharp, scratch.Triangles))
+  const bool keepsFeatures = byDihedral
+    ? MakesNoFeature(this->Live, c) && KeepsFeatures(this->Live, c)
+    : this->Creases.KeepsFollowed(
+        this->Live, c, this->Parameters.Tolerance, this->Slack, scratch.Sharp, scratch.Triangles);
+  if (!keepsFeatures)
   {
     e.Outcome = Verdict::Feature;
     return e;
@@ -419,8 +423,9 @@ Examined Decimator::Examine(std::uint32_t from, std::uint32_t to, ExamineScratch
     e.Outcome = Verdict::Error;
     return e;
   }
-  e.Outcome = MeetsAnother(this->Live, c, scratch.Triangles) || SweepsOverAnother(this->Live, c, scratch.Triangles) ? Verdict::Embedding
-                                                                                    : Verdict::Certified;
+  const bool embedded =
+    !MeetsAnother(this->Live, c, scratch.Triangles) && !SweepsOverAnother(this->Live, c, scratch.Triangles);
+  e.Outcome = embedded ? Verdict::Certified : Verdict::Embedding;
   return e;
 }
 
