@@ -72,14 +72,16 @@ bool StaysFollowed(const Vec3& a, const Vec3& b, const std::vector<EdgeSegment>&
     {
       return false;
     }
-    if (UpperOver(piece.A, piece.B, after) <= reach)
-    {
-      continue;
-    }
+    // (The removed edges, a few, before the edges after, often hundreds:
+    // either test settles the piece.)
     const Vec3 middle = (piece.A + piece.B) * 0.5;
     if (DistanceToSegments(middle, removed) - 0.5 * Norm(piece.B - piece.A) > reach)
     {
       continue; // (no removed edge within reach of the piece)
+    }
+    if (UpperOver(piece.A, piece.B, after) <= reach)
+    {
+      continue;
     }
     for (const Vec3& end : { piece.A, piece.B })
     {
