@@ -140,9 +140,9 @@ vtkSmartPointer<ArrayT> TakeOver(tpc::ReleasableArray<T>& values, int components
   return array;
 }
 
-/// The surface with its normals, each triangle's grid cell and solid, its
-/// points split along creases first when `creaseAngle` is set (CreaseSplit.h;
-/// "SurfacePointId" then maps them back). The core's points, normals,
+/// The surface with its normals, each triangle's grid cell, solid and
+/// certified error, its points split along creases first when `creaseAngle`
+/// is set (CreaseSplit.h; "SurfacePointId" then maps them back). The core's points, normals,
 /// triangles and solids become the output's arrays without a copy
 /// (ReleasableArray.h); the result's mesh is left empty.
 void MoveSurface(tpc::ContourResult& result, const std::vector<vtkIdType>& nodeToCell,
@@ -193,6 +193,14 @@ void MoveSurface(tpc::ContourResult& result, const std::vector<vtkIdType>& nodeT
   out->GetPointData()->SetNormals(normals);
   out->GetCellData()->AddArray(gridCell);
   out->GetCellData()->AddArray(solidId);
+  if (result.TriangleErrorBound.size() == static_cast<std::size_t>(triangles->GetNumberOfCells()))
+  {
+    vtkNew<vtkDoubleArray> certified;
+    certified->SetName("CertifiedError");
+    certified->SetNumberOfValues(static_cast<vtkIdType>(result.TriangleErrorBound.size()));
+    std::copy(result.TriangleErrorBound.begin(), result.TriangleErrorBound.end(), certified->GetPointer(0));
+    out->GetCellData()->AddArray(certified);
+  }
   mesh = tpc::TriangleMesh();
 }
 enum class InputConversion

@@ -421,11 +421,11 @@ void DecimateSurface(ContourResult& r, double tolerance, const ExactMesh& surfac
       "reasons); the surface is as extracted." });
     return;
   }
-  std::vector<double> bounds = TriangleErrorBounds(r.Placed.Result.Octree, e);
   DecimationParameters parameters;
   parameters.Tolerance = tolerance;
   parameters.Progress = run.Stage(EmbeddingEnd, EmbeddingEnd);
-  r.Decimation = DecimateCertified(r.Extraction.Mesh, bounds, r.TriangleSolid, parameters, surface, parallelFor);
+  r.Decimation =
+    DecimateCertified(r.Extraction.Mesh, r.TriangleErrorBound, r.TriangleSolid, parameters, surface, parallelFor);
   if (r.Decimation.Collapses == 0)
   {
     return;
@@ -699,6 +699,7 @@ ContourResult Contour(ContourScene scene, const ContourParameters& parameters, c
   }
   result.TriangleSolid = TriangleSolids(
     result.Placed.Result.Octree, result.Extraction.Mesh, implicitScene.Primitives, owners, parallelFor);
+  result.TriangleErrorBound = TriangleErrorBounds(result.Placed.Result.Octree, result.Extraction);
   if (parameters.Decimate)
   {
     // (Where the exact surface is one input mesh - one mesh leaf, not capped

@@ -161,6 +161,11 @@ struct ContourResult
   /// lies on (where the field at its centroid is decided), -1 on a cap of
   /// Bounds.
   ReleasableArray<std::int32_t> TriangleSolid;
+  /// Per triangle of the surface: every point of it lies within this
+  /// distance of the exact surface - its cell's proven bound
+  /// (TriangleErrorBounds.h), or after Decimate the certified bound of the
+  /// collapse that made it. The largest is at most Report.HausdorffBound.
+  std::vector<double> TriangleErrorBound;
 
   /// The octree and the statistics of the subdivision that was kept.
   const SubdivisionResult& Subdivision() const { return this->Placed.Result; }

@@ -1,11 +1,14 @@
 // The filter's outputs as a pipeline meets them: the surface on port 0 (the
 // main result, where ParaView's simple API looks), the grid on port 1; which
-// solid each triangle comes from (SolidId); the order in which the inputs are
-// folded, and its reversal.
+// solid each triangle comes from (SolidId) and how close it is certified to
+// lie (CertifiedError); the order in which the inputs are folded, and its
+// reversal.
 #include "FilterTestHelpers.h"
 
 #include "vtkCellData.h"
 #include "vtkCubeSource.h"
+#include "vtkDoubleArray.h"
+#include "vtkImplicitPolyDataDistance.h"
 #include "vtkIntArray.h"
 #include "vtkMassProperties.h"
 #include "vtkSphere.h"
@@ -14,7 +17,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
+#include <iostream>
 #include <map>
 
 using tpctest::FilterResult;
@@ -134,4 +140,89 @@ TEST(SolidsAndPorts, ReverseInputOrderSwapsTheMinuend)
   const double overlap = 0.39 * 0.48 * 0.52;
   EXPECT_NEAR(volume[0], 1.0 - overlap, 0.01);
   EXPECT_NEAR(volume[1], 0.76 * 0.48 * 0.52 - overlap, 0.01);
+}
+
+TEST(SolidsAndPorts, EachTriangleCarriesItsCertifiedError)
+{
+  // CertifiedError (cell data): every point of a triangle lies within its
+  // value of the exact surface, and the largest is at most HausdorffBound -
+  // as extracted and decimated, for a mesh (the exact surface is the input
+  // mesh, measured by vtkImplicitPolyDataDistance) and a sphere function
+  // (measured as | |x - c| - r |), at each triangle's corners, edge
+  // midpoints and centroid.
+  vtkNew<vtkSphereSource> source;
+  source->SetRadius(0.5);
+  source->SetThetaResolution(48);
+  source->SetPhiResolution(32);
+  vtkNew<vtkTriangleFilter> mesh;
+  mesh->SetInputConnection(source->GetOutputPort());
+  mesh->Update();
+  vtkNew<vtkImplicitPolyDataDistance> toMesh;
+  toMesh->SetInput(mesh->GetOutput());
+  const double center[3] = { 0.01, -0.02, 0.03 };
+  vtkNew<vtkSphere> sphere;
+  sphere->SetCenter(center[0], center[1], center[2]);
+  sphere->SetRadius(0.5);
+  for (const bool decimate : { false, true })
+  {
+    for (const bool implicit : { false, true })
+    {
+      vtkNew<vtkTopologyPreservingContour> filter;
+      if (implicit)
+      {
+        filter->SetImplicitFunction(sphere);
+        filter->SetBounds(-1, 1, -1, 1, -1, 1);
+        filter->SetTolerance(0.02);
+      }
+      else
+      {
+        filter->SetInputData(mesh->GetOutput());
+        filter->SetTolerance(1.0 / 32);
+      }
+      filter->SetDecimate(decimate);
+      const FilterResult r = tpctest::Run(filter);
+      const std::string name = std::string(implicit ? "sphere" : "mesh") + (decimate ? ", decimated" : "");
+      ASSERT_EQ(r.Guaranteed, 1) << name;
+      auto* certified = vtkDoubleArray::SafeDownCast(r.Surface->GetCellData()->GetArray("CertifiedError"));
+      ASSERT_TRUE(certified) << name;
+      ASSERT_EQ(certified->GetNumberOfValues(), r.Surface->GetNumberOfPolys()) << name;
+      const std::function<double(const double*)> distance = [&](const double* p) {
+        return implicit ? std::fabs(std::hypot(p[0] - center[0], p[1] - center[1], p[2] - center[2]) - 0.5)
+                        : std::fabs(toMesh->EvaluateFunction(const_cast<double*>(p)));
+      };
+      double largest = 0.0, smallest = HUGE_VAL, worst = 0.0;
+      vtkNew<vtkIdList> ids;
+      for (vtkIdType t = 0; t < r.Surface->GetNumberOfCells(); ++t)
+      {
+        const double e = certified->GetValue(t);
+        largest = std::max(largest, e);
+        smallest = std::min(smallest, e);
+        r.Surface->GetCellPoints(t, ids);
+        double corners[3][3];
+        for (int k = 0; k < 3; ++k)
+        {
+          r.Surface->GetPoint(ids->GetId(k), corners[k]);
+        }
+        // Corners, edge midpoints, centroid (barycentric weights).
+        const double weights[7][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 }, { 0.5, 0.5, 0 }, { 0, 0.5, 0.5 },
+          { 0.5, 0, 0.5 }, { 1.0 / 3, 1.0 / 3, 1.0 / 3 } };
+        for (const auto& w : weights)
+        {
+          double p[3];
+          for (int a = 0; a < 3; ++a)
+          {
+            p[a] = w[0] * corners[0][a] + w[1] * corners[1][a] + w[2] * corners[2][a];
+          }
+          const double d = distance(p);
+          worst = std::max(worst, d / e);
+          EXPECT_LE(d, e * (1 + 1e-9) + 1e-12) << name << ", triangle " << t;
+        }
+      }
+      EXPECT_GE(smallest, 0.0) << name;
+      EXPECT_LE(largest, r.HausdorffBound * (1 + 1e-12)) << name;
+      std::cout << name << ": " << r.Surface->GetNumberOfPolys() << " triangles, CertifiedError from "
+                << smallest / r.Tolerance << " to " << largest / r.Tolerance << " tolerance, measured at most "
+                << worst << " of it" << std::endl;
+    }
+  }
 }

@@ -178,6 +178,10 @@ forward = servermanager.Fetch(pair)
 ids = forward.GetCellData().GetArray("SolidId")
 check(ids is not None and sorted(set(ids.GetValue(i) for i in range(ids.GetNumberOfTuples()))) == [0, 1],
       "SolidId names the part (0) and the ball (1)", failures)
+certified = forward.GetCellData().GetArray("CertifiedError")
+check(certified is not None and certified.GetNumberOfTuples() == forward.GetNumberOfPolys()
+      and 0 < certified.GetRange()[1] <= field(forward, "HausdorffBound") * (1 + 1e-12),
+      "CertifiedError: one bound per triangle, the largest at most HausdorffBound", failures)
 pair.ReverseInputOrder = 1
 pair.UpdatePipeline()
 reverse = servermanager.Fetch(pair)
