@@ -41,16 +41,32 @@ double DistanceToSegments(const Vec3& p, const std::vector<EdgeSegment>& segment
 namespace
 {
 
-/// min over segments of max(d(a, s), d(b, s)): the distance to the segments
-/// over all of ab is at most this (convexity, header).
-double UpperOver(const Vec3& a, const Vec3& b, const std::vector<EdgeSegment>& segments)
+/// Whether one segment lies within `reach` of both a and b - then, by
+/// convexity (header), of all of ab. (Stops at the first: only whether
+/// one does matters.)
+bool OneFollowsAll(const Vec3& a, const Vec3& b, const std::vector<EdgeSegment>& segments, double reach)
 {
-  double upper = HUGE_VAL;
   for (const EdgeSegment& s : segments)
   {
-    upper = std::min(upper, std::max(SegmentDistance(a, s.A, s.B), SegmentDistance(b, s.A, s.B)));
+    if (SegmentDistance(a, s.A, s.B) <= reach && SegmentDistance(b, s.A, s.B) <= reach)
+    {
+      return true;
+    }
   }
-  return upper;
+  return false;
+}
+
+/// Whether a segment lies within `reach` of p.
+bool AnyWithin(const Vec3& p, const std::vector<EdgeSegment>& segments, double reach)
+{
+  for (const EdgeSegment& s : segments)
+  {
+    if (SegmentDistance(p, s.A, s.B) <= reach)
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 } // namespace
@@ -79,13 +95,13 @@ bool StaysFollowed(const Vec3& a, const Vec3& b, const std::vector<EdgeSegment>&
     {
       continue; // (no removed edge within reach of the piece)
     }
-    if (UpperOver(piece.A, piece.B, after) <= reach)
+    if (OneFollowsAll(piece.A, piece.B, after, reach))
     {
       continue;
     }
     for (const Vec3& end : { piece.A, piece.B })
     {
-      if (DistanceToSegments(end, removed) <= reach && DistanceToSegments(end, after) > reach)
+      if (AnyWithin(end, removed, reach) && !AnyWithin(end, after, reach))
       {
         return false;
       }
