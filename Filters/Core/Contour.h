@@ -164,7 +164,9 @@ struct ContourResult
   /// Per triangle of the surface: every point of it lies within this
   /// distance of the exact surface - its cell's proven bound
   /// (TriangleErrorBounds.h), or after Decimate the certified bound of the
-  /// collapse that made it. The largest is at most Report.HausdorffBound.
+  /// collapse that made it; NaN where the cell's patch failed the embedding
+  /// check. Where the report is guaranteed, the largest is at most
+  /// Report.HausdorffBound.
   std::vector<double> TriangleErrorBound;
 
   /// The octree and the statistics of the subdivision that was kept.

@@ -55,10 +55,13 @@
 // the star's box), so (b) measures it again and gives it a new witness or
 // none; a triangle of S without one (measured in pieces, or clipped to R) is
 // measured by every collapse whose R it meets, as before. Only S's
-// triangles whose coverage may change are measured, and each collapse's
-// decisions are those of measuring all of S in R (a skipped s settles within
-// the tolerance either way): armadillo at 1/128 decimated in 3.9 s instead
-// of 5.7, the same surface byte for byte.
+// triangles whose coverage may change are measured. A skipped s would settle
+// within the tolerance anyway, so the decisions are those of measuring all
+// of S in R but for the branch and bound's budget and early stop, which see
+// fewer sources (a collapse may now pass that ran out of pieces before, or
+// get another bound - sound either way); on the meshes measured, the same
+// surfaces byte for byte (armadillo at 1/128 decimated in 3.9 s instead of
+// 5.7).
 //
 // Embedding. The surface before is embedded (the exact check of
 // SurfaceEmbedding.h; the pass does not run otherwise). A collapse is kept
@@ -130,12 +133,16 @@
 // around the star's vertices, and a candidate joins only if its X is
 // disjoint from every earlier member's W. A witness i relies on lies within
 // the tolerance of a triangle of S meeting (b)'s region, so it overlaps X_i
-// too. So each member's checks see what they would after the earlier members
-// were applied, and the batch's decisions are those of examining and
-// applying its members one after another: the surface does not depend on
-// the number of threads. (One difference, sound either way: a triangle of S
-// that both an earlier member and i measure gets i's witness, where one after
-// another i might have kept the earlier's.) Armadillo at 1/128: 5.2 s on one
+// too. And the witness entries j rewrites: X_i misses j's star, so the
+// regions R_i and R_j are disjoint, and a triangle s of S meeting both is
+// clipped in both, so measured by both and left without a witness by both;
+// a live witness of s in j's star would lie within 2 tolerances of i's star,
+// inside X_i, which the rule refuses. (Boxes are grown in the same steps as
+// Examine grows them, so the rule holds to the last rounding.) So each
+// member's checks see what they would after the earlier members were
+// applied, and the batch's decisions, bounds and witnesses are those of
+// examining and applying its members one after another: the surface does
+// not depend on the number of threads. Armadillo at 1/128: 5.2 s on one
 // thread, 3.0 s on two.
 #pragma once
 
@@ -181,8 +188,8 @@ struct DecimationParameters
   /// stopping early leaves a surface for which everything above holds.
   ProgressCallback Progress;
   /// (For tests.) Examines each member of a batch again once the earlier
-  /// ones are applied, counting the verdicts that differ (header: Parallel;
-  /// there should be none).
+  /// ones are applied, counting those whose verdict, bound or witnesses
+  /// differ (header: Parallel; there should be none).
   bool CheckBatches = false;
 };
 

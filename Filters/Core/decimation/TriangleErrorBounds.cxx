@@ -21,7 +21,11 @@ std::vector<double> TriangleErrorBounds(const AdaptiveOctree& tree, const Extrac
     const OctreeNode& node = tree.Nodes[cells[t]];
     const double diagonal = grid.CellDiagonal(node.Level);
     // (In the order DecideCell and GatherCertifiedBound count them.)
-    if (node.State == CellState::Surface && node.ErrorBounded)
+    if (node.FailedTest == SplitReason::PatchNotEmbedded)
+    {
+      bounds[t] = std::nan(""); // (header: not proven)
+    }
+    else if (node.State == CellState::Surface && node.ErrorBounded)
     {
       bounds[t] = std::min(certified[cells[t]], diagonal);
     }

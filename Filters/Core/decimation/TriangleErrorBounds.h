@@ -16,7 +16,10 @@
 // Giving each triangle of P_C the bound of its cell C then yields the two
 // facts the decimation keeps true: (a) every point of triangle t is within
 // e_t of S, and (b) every point s of S is within e_t of some triangle t (the
-// cell holding s has a patch, and s is within E_C of it).
+// cell holding s has a patch, and s is within E_C of it). A cell whose patch
+// failed the exact embedding check (SplitReason PatchNotEmbedded) may have
+// triangles leaving it, which the diagonal argument needs: its triangles get
+// NaN, not proven (the guarantee is withdrawn there, and no decimation runs).
 #pragma once
 
 #include "AdaptiveOctree.h"
