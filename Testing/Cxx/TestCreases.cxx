@@ -257,8 +257,8 @@ TEST(Creases, DecimatedCadMeshesKeepTheirCreasesOnFewerEdges)
   // sharp input crease near it stays within the tolerance of an output
   // crease (SharpCreases.h), so the creases are still followed, by far fewer
   // edges - the 30-degree output creases at most 1.5 times the input's
-  // (issue 17; measured: couplingdown 0.38 at 1/64 and 0.39 at 1/128 with
-  // 458 and 778 triangles, fandisk 0.14 at 1/64 with 118; undecimated
+  // (issue 17; measured: couplingdown 0.26 at 1/64 and 0.39 at 1/128 with
+  // 450 and 784 triangles, fandisk 0.12 at 1/64 with 120; undecimated
   // couplingdown has 1.43 and 2.39).
   struct Case
   {
