@@ -1,10 +1,9 @@
 #include "CertifiedDecimation.h"
 
 #include "CollapseEmbedding.h"
-#include "ConvexPolygons.h"
+#include "ErrorCertificates.h"
 #include "FeatureRules.h"
 #include "LiveSurface.h"
-#include "PolygonHausdorff.h"
 #include "ScratchPool.h"
 
 #include <algorithm>
@@ -54,10 +53,8 @@ struct Examined
 /// One thread's marks while it examines collapses (header: Parallel).
 struct ExamineScratch
 {
-  VisitMarks Triangles; ///< the surface's live triangles
-  VisitMarks Star;      ///< the star's triangles
-  VisitMarks Surface;   ///< S's triangles
-  VisitMarks Sharp;     ///< S's sharp crease segments
+  CertificateMarks Certificate;
+  VisitMarks Sharp; ///< S's sharp crease segments
 };
 
 /// Collapses examined together (header: Parallel): enough to keep two to
@@ -102,17 +99,6 @@ private:
   bool Claim(const Candidate& c);
   /// Every check of moving `from` onto `to`, on the surface as it is (reads only).
   Examined Examine(std::uint32_t from, std::uint32_t to, ExamineScratch& scratch) const;
-  double Certify(Collapse& c, ExamineScratch& scratch) const;
-  double CertifyThroughBounds(const Collapse& c) const;
-  double CertifyAgainstMesh(Collapse& c, ExamineScratch& scratch) const;
-  /// S's triangles whose boxes overlap `box`, as polygons.
-  void NearSurface(const Box3& box, PolygonSet& polygons, VisitMarks& marks) const;
-  /// S's triangles overlapping `region` that no live triangle outside the
-  /// star witnesses (header: Witnesses): whole where they lie in `region`,
-  /// else clipped to it and fanned; `from` names each piece's triangle and
-  /// whether it is whole.
-  void UnwitnessedNear(const Collapse& c, const Box3& region, std::vector<SourceTriangle>& pieces,
-    std::vector<std::pair<std::uint32_t, bool>>& from, ExamineScratch& scratch) const;
   void Count(Verdict outcome);
   void Apply(const Collapse& c, double bound);
 
@@ -120,21 +106,23 @@ private:
   std::vector<double>& Bounds;
   ReleasableArray<std::int32_t>& Labels;
   DecimationParameters Parameters;
-  double Slack = 0.0;
+  double Slack;
   LiveSurface Live;
   /// Bumped when a vertex's star changes: older candidates are stale.
   std::vector<std::uint32_t> Stamp;
   std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> Heap;
   /// The batch being formed: the boxes of what its collapses write (Claim).
   std::vector<Box3> WrittenBoxes;
-  ExactMesh Surface;
-  /// S's triangles, when collapses are certified against S.
-  TriangleGrid SurfaceGrid;
-  /// Per triangle of S: a live triangle within the tolerance of all of it,
-  /// or None (header: Witnesses).
-  std::vector<std::uint32_t> Witness;
+  ErrorCertificates Error;
   SharpCreaseRule Creases;
 };
+
+/// Distances are computed in floating point (PolygonHausdorff.h): the same
+/// slack as the cells' certificates (MeshCellError.cxx, RoundingSlack).
+double RoundingSlack(const Box3& box)
+{
+  return 4096.0 * DBL_EPSILON * box.Magnitude() + 1e-12 * box.Diagonal();
+}
 
 Decimator::Decimator(TriangleMesh& mesh, std::vector<double>& bounds, ReleasableArray<std::int32_t>& labels,
   const DecimationParameters& parameters, const ExactMesh& surface)
@@ -142,31 +130,19 @@ Decimator::Decimator(TriangleMesh& mesh, std::vector<double>& bounds, Releasable
   , Bounds(bounds)
   , Labels(labels)
   , Parameters(parameters)
+  , Slack(RoundingSlack(PointsBox(mesh.Points)))
   , Live(mesh, labels, parameters.FeatureAngle, BucketWidth(PointsBox(mesh.Points), parameters.Tolerance))
   , Stamp(mesh.Points.size(), 0)
-  , Surface(surface)
-  , SurfaceGrid(PointsBox(mesh.Points).lo, BucketWidth(PointsBox(mesh.Points), parameters.Tolerance))
+  , Error(this->Live, bounds, this->Parameters, surface, PointsBox(mesh.Points).lo,
+      BucketWidth(PointsBox(mesh.Points), parameters.Tolerance), this->Slack)
   , Creases(surface.Mesh ? SharpCreaseRule(*surface.Mesh, PointsBox(mesh.Points).lo,
                              BucketWidth(PointsBox(mesh.Points), parameters.Tolerance))
                          : SharpCreaseRule(PointsBox(mesh.Points).lo, 1.0))
 {
-  // Distances are computed in floating point (PolygonHausdorff.h): the same
-  // slack as the cells' certificates (MeshCellError.cxx, RoundingSlack).
-  const Box3 box = PointsBox(mesh.Points);
-  this->Slack = 4096.0 * DBL_EPSILON * box.Magnitude() + 1e-12 * box.Diagonal();
   this->Result.TrianglesBefore = this->Live.Triangles.size();
   for (const double e : bounds)
   {
     this->Result.Bound = std::max(this->Result.Bound, e);
-  }
-  if (surface.Mesh)
-  {
-    const std::vector<Triangle>& triangles = surface.Mesh->Triangles();
-    for (std::uint32_t t = 0; t < triangles.size(); ++t)
-    {
-      this->SurfaceGrid.Insert(t, TriangleBox(surface.Mesh->Points().data(), triangles[t]));
-    }
-    this->Witness.assign(triangles.size(), SingleTargetWitness::None);
   }
 }
 
@@ -191,177 +167,6 @@ void Decimator::Queue(std::uint32_t v)
   }
 }
 
-double Decimator::Certify(Collapse& c, ExamineScratch& scratch) const
-{
-  return this->Surface.Mesh ? this->CertifyAgainstMesh(c, scratch) : this->CertifyThroughBounds(c);
-}
-
-void Decimator::NearSurface(const Box3& box, PolygonSet& polygons, VisitMarks& marks) const
-{
-  const Vec3* points = this->Surface.Mesh->Points().data();
-  const std::vector<Triangle>& triangles = this->Surface.Mesh->Triangles();
-  marks.Start(triangles.size());
-  this->SurfaceGrid.ForEachListed(box, [&](std::uint32_t s) {
-    if (!marks.First(s) || !TriangleBox(points, triangles[s]).Overlaps(box))
-    {
-      return;
-    }
-    const Triangle& t = triangles[s];
-    polygons.Add({ points[t[0]], points[t[1]], points[t[2]] });
-  });
-}
-
-void Decimator::UnwitnessedNear(const Collapse& c, const Box3& region, std::vector<SourceTriangle>& pieces,
-  std::vector<std::pair<std::uint32_t, bool>>& from, ExamineScratch& scratch) const
-{
-  scratch.Star.Start(this->Live.Triangles.size());
-  for (const std::vector<std::uint32_t>* part : { &c.Vanishing, &c.Kept })
-  {
-    for (const std::uint32_t t : *part)
-    {
-      scratch.Star.First(t);
-    }
-  }
-  const Vec3* points = this->Surface.Mesh->Points().data();
-  const std::vector<Triangle>& triangles = this->Surface.Mesh->Triangles();
-  scratch.Surface.Start(triangles.size());
-  this->SurfaceGrid.ForEachListed(region, [&](std::uint32_t s) {
-    const Triangle& t = triangles[s];
-    const Box3 box = TriangleBox(points, t);
-    if (!scratch.Surface.First(s) || !box.Overlaps(region))
-    {
-      return;
-    }
-    const std::uint32_t w = this->Witness[s];
-    if (w != SingleTargetWitness::None && this->Live.Alive[w] && !scratch.Star.Visited(w))
-    {
-      return; // (its witness stays as it is)
-    }
-    if (region.Contains(box.lo) && region.Contains(box.hi))
-    {
-      pieces.push_back({ points[t[0]], points[t[1]], points[t[2]] });
-      from.emplace_back(s, true);
-      return;
-    }
-    ClippedCorners clipped;
-    for (const std::uint32_t v : t)
-    {
-      clipped.push_back(points[v]);
-    }
-    ClipToBox(clipped, region);
-    for (std::size_t i = 1; i + 1 < clipped.size(); ++i)
-    {
-      pieces.push_back({ clipped[0], clipped[i], clipped[i + 1] });
-      from.emplace_back(s, false);
-    }
-    if (clipped.size() == 1 || clipped.size() == 2)
-    {
-      pieces.push_back({ clipped.front(), clipped.back(), clipped.back() });
-      from.emplace_back(s, false);
-    }
-  });
-}
-
-double Decimator::CertifyAgainstMesh(Collapse& c, ExamineScratch& scratch) const
-{
-  const double tolerance = this->Parameters.Tolerance;
-  const double giveUp = tolerance - this->Slack;
-  const std::size_t budget = this->Parameters.CertificateBudget;
-  // (a) The made triangles, to S near them: one at a time, each with the
-  // whole budget. (A large made triangle on a CAD face needs about a
-  // thousand pieces, and a collapse there makes five to ten: with one budget
-  // for all, fandisk's large faces refused the same collapses again and
-  // again - at 1/128, 155 of 1 039 certificates ran out, 71 % of the pieces
-  // evaluated, 3.4 s; one budget each, 0.75 s, 164 -> 162 triangles.)
-  PolygonSet madeSet, nearMade;
-  this->NearSurface(GrownBy(BoxOf(this->Live.P, c.Made), tolerance), nearMade, scratch.Surface);
-  double toSurface = 0.0;
-  for (const Triangle& t : c.Made)
-  {
-    const SourceTriangle made = this->Live.CornersOf(t);
-    madeSet.Add({ made[0], made[1], made[2] });
-    toSurface = std::max(toSurface, OneSidedHausdorff({ made }, nearMade, giveUp, giveUp, budget).Upper);
-    if (!(toSurface <= giveUp))
-    {
-      return HUGE_VAL;
-    }
-  }
-  // (b) S where the star was nearest (but where a triangle outside the star
-  // witnesses it), to the surface after.
-  const Box3 region = GrownBy(BoxOf(this->Live.P, this->Live.StarOf(c)), tolerance);
-  std::vector<SourceTriangle> surfacePieces;
-  std::vector<std::pair<std::uint32_t, bool>> from;
-  this->UnwitnessedNear(c, region, surfacePieces, from, scratch);
-  PolygonSet after = madeSet;
-  std::vector<std::uint32_t> afterIds = c.Kept; // (the made triangles take the kept ones' ids)
-  this->Live.ForEachOther(c, GrownBy(region, tolerance), scratch.Triangles, [&](std::uint32_t o) {
-    const SourceTriangle s = this->Live.CornersOf(this->Live.Triangles[o]);
-    after.Add({ s[0], s[1], s[2] });
-    afterIds.push_back(o);
-  });
-  std::vector<SingleTargetWitness> settled;
-  const HausdorffEstimate covered = OneSidedHausdorff(surfacePieces, after, giveUp, giveUp, budget, {}, &settled);
-  if (!(covered.Upper <= giveUp))
-  {
-    return HUGE_VAL;
-  }
-  // New witnesses: a whole triangle of S settled by one triangle after.
-  double witnessed = 0.0;
-  c.Witnesses.clear();
-  for (std::size_t k = 0; k < from.size(); ++k)
-  {
-    const bool whole = from[k].second && settled[k].Target != SingleTargetWitness::None;
-    c.Witnesses.emplace_back(from[k].first, whole ? afterIds[settled[k].Target] : SingleTargetWitness::None);
-    witnessed = whole ? std::max(witnessed, settled[k].Bound) : witnessed;
-  }
-  return std::max({ toSurface, covered.Upper, witnessed }) + this->Slack;
-}
-
-double Decimator::CertifyThroughBounds(const Collapse& c) const
-{
-  std::vector<SourceTriangle> before, after;
-  std::vector<double> offsets;
-  PolygonSet beforeSet, afterSet;
-  double largest = 0.0;
-  for (const std::vector<std::uint32_t>* part : { &c.Vanishing, &c.Kept })
-  {
-    for (const std::uint32_t t : *part)
-    {
-      const SourceTriangle s = this->Live.CornersOf(this->Live.Triangles[t]);
-      before.push_back(s);
-      beforeSet.Add({ s[0], s[1], s[2] });
-      offsets.push_back(this->Bounds[t]);
-      largest = std::max(largest, this->Bounds[t]);
-    }
-  }
-  for (const Triangle& t : c.Made)
-  {
-    const SourceTriangle s = this->Live.CornersOf(t);
-    after.push_back(s);
-    afterSet.Add({ s[0], s[1], s[2] });
-  }
-  const double giveUp = this->Parameters.Tolerance - this->Slack;
-  if (!(largest < giveUp))
-  {
-    return HUGE_VAL;
-  }
-  // Refined until a quarter of the room left (a looser bound would use up
-  // the tolerance for the collapses after this one).
-  const double enough = largest + 0.25 * (giveUp - largest);
-  const std::size_t budget = this->Parameters.BoundsCertificateBudget;
-  const HausdorffEstimate covered = OneSidedHausdorff(before, afterSet, enough, giveUp, budget, { &offsets, nullptr });
-  if (!(covered.Upper <= giveUp))
-  {
-    return HUGE_VAL;
-  }
-  const HausdorffEstimate near = OneSidedHausdorff(after, beforeSet, enough, giveUp, budget, { nullptr, &offsets });
-  if (!(near.Upper <= giveUp))
-  {
-    return HUGE_VAL;
-  }
-  return std::max(covered.Upper, near.Upper) + this->Slack;
-}
-
 void Decimator::Apply(const Collapse& c, double bound)
 {
   this->Live.Apply(c);
@@ -369,10 +174,7 @@ void Decimator::Apply(const Collapse& c, double bound)
   {
     this->Bounds[t] = bound;
   }
-  for (const auto& [s, w] : c.Witnesses)
-  {
-    this->Witness[s] = w;
-  }
+  this->Error.Commit(c);
   ++this->Result.Collapses;
   // Every vertex whose star changed is queued again.
   std::vector<std::uint32_t> changed = this->Live.Neighbours(c.To);
@@ -397,7 +199,7 @@ Examined Decimator::Examine(std::uint32_t from, std::uint32_t to, ExamineScratch
   }
   // (Features: the input's sharp creases where S is known, else the
   // surface's own dihedral angles and labels - header, Features.)
-  const bool byDihedral = !this->Surface.Mesh;
+  const bool byDihedral = !this->Error.AgainstTheMesh();
   if (byDihedral && !MovesAlongFeatures(this->Live, c))
   {
     e.Outcome = Verdict::Feature;
@@ -411,20 +213,20 @@ Examined Decimator::Examine(std::uint32_t from, std::uint32_t to, ExamineScratch
   const bool keepsFeatures = byDihedral
     ? MakesNoFeature(this->Live, c) && KeepsFeatures(this->Live, c)
     : this->Creases.KeepsFollowed(
-        this->Live, c, this->Parameters.Tolerance, this->Slack, scratch.Sharp, scratch.Triangles);
+        this->Live, c, this->Parameters.Tolerance, this->Slack, scratch.Sharp, scratch.Certificate.Triangles);
   if (!keepsFeatures)
   {
     e.Outcome = Verdict::Feature;
     return e;
   }
-  e.Bound = this->Certify(c, scratch);
+  e.Bound = this->Error.Certify(c, scratch.Certificate);
   if (!(e.Bound <= this->Parameters.Tolerance))
   {
     e.Outcome = Verdict::Error;
     return e;
   }
-  const bool embedded =
-    !MeetsAnother(this->Live, c, scratch.Triangles) && !SweepsOverAnother(this->Live, c, scratch.Triangles);
+  VisitMarks& triangles = scratch.Certificate.Triangles;
+  const bool embedded = !MeetsAnother(this->Live, c, triangles) && !SweepsOverAnother(this->Live, c, triangles);
   e.Outcome = embedded ? Verdict::Certified : Verdict::Embedding;
   return e;
 }

@@ -1,0 +1,67 @@
+// The certified error of a collapse (CertifiedDecimation.h: Error, Against
+// the mesh, Witnesses): where the scene is one input mesh S, against S
+// itself, both ways, with the witnesses that spare (b) most of S; elsewhere
+// through each triangle's bound, composed by the branch and bound's offsets.
+#pragma once
+
+#include "CertifiedDecimation.h"
+#include "LiveSurface.h"
+#include "PolygonHausdorff.h"
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace tpc
+{
+
+/// The marks a certificate's searches use (one set per thread).
+struct CertificateMarks
+{
+  VisitMarks Triangles; ///< the surface's live triangles
+  VisitMarks Star;      ///< the star's triangles
+  VisitMarks Surface;   ///< S's triangles
+};
+
+class ErrorCertificates
+{
+public:
+  /// `live`, `bounds` (e_t per triangle) and `parameters` are read as they
+  /// are when Certify runs; `surface` is S where known. S's triangles are
+  /// listed in a grid of buckets `bucketWidth` wide from `origin`.
+  ErrorCertificates(const LiveSurface& live, const std::vector<double>& bounds,
+    const DecimationParameters& parameters, const ExactMesh& surface, const Vec3& origin, double bucketWidth,
+    double slack);
+
+  /// The bound of c's made triangles (rounding slack included), or +inf
+  /// when it is not certified within the tolerance. Against the mesh it
+  /// also sets c.Witnesses, which Commit keeps once c is applied.
+  double Certify(Collapse& c, CertificateMarks& marks) const;
+  /// c was applied: its witnesses hold.
+  void Commit(const Collapse& c);
+  bool AgainstTheMesh() const { return this->Surface.Mesh != nullptr; }
+
+private:
+  double ThroughBounds(const Collapse& c) const;
+  double AgainstMesh(Collapse& c, CertificateMarks& marks) const;
+  /// S's triangles whose boxes overlap `box`, as polygons.
+  void NearSurface(const Box3& box, PolygonSet& polygons, VisitMarks& marks) const;
+  /// S's triangles overlapping `region` that no live triangle outside the
+  /// star witnesses (CertifiedDecimation.h, Witnesses): whole where they lie
+  /// in `region`, else clipped to it and fanned; `from` names each piece's
+  /// triangle and whether it is whole.
+  void UnwitnessedNear(const Collapse& c, const Box3& region, std::vector<SourceTriangle>& pieces,
+    std::vector<std::pair<std::uint32_t, bool>>& from, CertificateMarks& marks) const;
+
+  const LiveSurface& Live;
+  const std::vector<double>& Bounds;
+  const DecimationParameters& Parameters;
+  ExactMesh Surface;
+  TriangleGrid SurfaceGrid;
+  /// Per triangle of S: a live triangle within the tolerance of all of it,
+  /// or None.
+  std::vector<std::uint32_t> Witness;
+  double Slack;
+};
+
+} // namespace tpc
