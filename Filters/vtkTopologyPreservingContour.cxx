@@ -142,9 +142,9 @@ vtkSmartPointer<ArrayT> TakeOver(tpc::ReleasableArray<T>& values, int components
 
 /// The surface with its normals, each triangle's grid cell, solid and
 /// certified error, its points split along creases first when `creaseAngle`
-/// is set (CreaseSplit.h; "SurfacePointId" then maps them back). The core's points, normals,
-/// triangles and solids become the output's arrays without a copy
-/// (ReleasableArray.h); the result's mesh is left empty.
+/// is set (CreaseSplit.h; "SurfacePointId" then maps them back). The core's
+/// points, normals, triangles and solids become the output's arrays without
+/// a copy (ReleasableArray.h); the result's mesh is left empty.
 void MoveSurface(tpc::ContourResult& result, const std::vector<vtkIdType>& nodeToCell,
   std::optional<double> creaseAngle, vtkPolyData* out)
 {

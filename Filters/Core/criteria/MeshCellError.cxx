@@ -236,14 +236,7 @@ HausdorffEstimate CertifiedMeshPatchError(const PolygonSet& surface,
   std::vector<SourceTriangle> pieces;
   for (const ConvexPolygon& q : surface)
   {
-    for (std::size_t i = 1; i + 1 < q.Points.size(); ++i)
-    {
-      pieces.push_back({ q.Points[0], q.Points[i], q.Points[i + 1] });
-    }
-    if (q.Points.size() < 3)
-    {
-      pieces.push_back({ q.Points.front(), q.Points.back(), q.Points.back() });
-    }
+    AppendAsSources(q.Points.begin(), q.Points.size(), pieces);
   }
   PolygonSet targets;
   targets.reserve(patch.size(), 3 * patch.size());

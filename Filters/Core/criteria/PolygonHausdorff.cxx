@@ -41,6 +41,18 @@ struct Piece
 
 } // namespace
 
+void AppendAsSources(const Vec3* corners, std::size_t count, std::vector<SourceTriangle>& sources)
+{
+  for (std::size_t i = 1; i + 1 < count; ++i)
+  {
+    sources.push_back({ corners[0], corners[i], corners[i + 1] });
+  }
+  if (count == 1 || count == 2)
+  {
+    sources.push_back({ corners[0], corners[count - 1], corners[count - 1] });
+  }
+}
+
 double CoveringRadius(const SourceTriangle& t)
 {
   // Squared edge lengths, c the longest, opposite vertex C; a opposite A

@@ -61,6 +61,12 @@ struct HausdorffEstimate
   double Lower = 0.0; ///< attained at a point of the sources (with offsets: by the offset distance)
 };
 
+/// Appends the convex polygon with corners `corners` (in order) as source
+/// triangles: a fan from its first corner; a point or a segment (what a
+/// clipping may leave) as one degenerate triangle, which the bounds measure
+/// all the same.
+void AppendAsSources(const Vec3* corners, std::size_t count, std::vector<SourceTriangle>& sources);
+
 /// Offsets added to the distances (header: Offsets): one per source
 /// triangle, one per target, each >= 0; null for zeros.
 struct DistanceOffsets

@@ -87,16 +87,8 @@ void ErrorCertificates::UnwitnessedNear(const Collapse& c, const Box3& region, s
       clipped.push_back(points[v]);
     }
     ClipToBox(clipped, region);
-    for (std::size_t i = 1; i + 1 < clipped.size(); ++i)
-    {
-      pieces.push_back({ clipped[0], clipped[i], clipped[i + 1] });
-      from.emplace_back(s, false);
-    }
-    if (clipped.size() == 1 || clipped.size() == 2)
-    {
-      pieces.push_back({ clipped.front(), clipped.back(), clipped.back() });
-      from.emplace_back(s, false);
-    }
+    AppendAsSources(clipped.data(), clipped.size(), pieces);
+    from.resize(pieces.size(), { s, false });
   });
 }
 
@@ -117,7 +109,7 @@ double ErrorCertificates::AgainstMesh(Collapse& c, CertificateMarks& marks) cons
   for (const Triangle& t : c.Made)
   {
     const SourceTriangle made = this->Live.CornersOf(t);
-    madeSet.Add({ made[0], made[1], made[2] });
+    madeSet.Add(made.data(), made.size());
     toSurface = std::max(toSurface, OneSidedHausdorff({ made }, nearMade, giveUp, giveUp, budget).Upper);
     if (!(toSurface <= giveUp))
     {
@@ -134,7 +126,7 @@ double ErrorCertificates::AgainstMesh(Collapse& c, CertificateMarks& marks) cons
   std::vector<std::uint32_t> afterIds = c.Kept; // (the made triangles take the kept ones' ids)
   this->Live.ForEachOther(c, GrownBy(region, tolerance), marks.Triangles, [&](std::uint32_t o) {
     const SourceTriangle s = this->Live.CornersOf(this->Live.Triangles[o]);
-    after.Add({ s[0], s[1], s[2] });
+    after.Add(s.data(), s.size());
     afterIds.push_back(o);
   });
   std::vector<SingleTargetWitness> settled;
@@ -167,7 +159,7 @@ double ErrorCertificates::ThroughBounds(const Collapse& c) const
     {
       const SourceTriangle s = this->Live.CornersOf(this->Live.Triangles[t]);
       before.push_back(s);
-      beforeSet.Add({ s[0], s[1], s[2] });
+      beforeSet.Add(s.data(), s.size());
       offsets.push_back(this->Bounds[t]);
       largest = std::max(largest, this->Bounds[t]);
     }
@@ -176,7 +168,7 @@ double ErrorCertificates::ThroughBounds(const Collapse& c) const
   {
     const SourceTriangle s = this->Live.CornersOf(t);
     after.push_back(s);
-    afterSet.Add({ s[0], s[1], s[2] });
+    afterSet.Add(s.data(), s.size());
   }
   const double giveUp = this->Parameters.Tolerance - this->Slack;
   if (!(largest < giveUp))
