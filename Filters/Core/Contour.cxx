@@ -426,6 +426,14 @@ void DecimateSurface(ContourResult& r, double tolerance, const ExactMesh& surfac
   parameters.Progress = run.Stage(EmbeddingEnd, EmbeddingEnd);
   r.Decimation =
     DecimateCertified(r.Extraction.Mesh, r.TriangleErrorBound, r.TriangleSolid, parameters, surface, parallelFor);
+  if (r.Decimation.NotAClosedManifold)
+  {
+    r.Messages.push_back({ ContourMessage::Level::Warning,
+      "Decimate is not applied: the extracted surface is not a closed, consistently oriented manifold (see the "
+      "topology report), which the decimation's link condition and certificates assume; the surface is as "
+      "extracted. An embedded surface whose cells all have patches should be one: please report this." });
+    return;
+  }
   if (r.Decimation.Collapses == 0)
   {
     return;

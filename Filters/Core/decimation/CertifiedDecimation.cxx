@@ -5,6 +5,7 @@
 #include "FeatureRules.h"
 #include "LiveSurface.h"
 #include "ScratchPool.h"
+#include "TopologyReport.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -430,6 +431,22 @@ DecimationResult DecimateCertified(TriangleMesh& mesh, std::vector<double>& boun
   ReleasableArray<std::int32_t>& labels, const DecimationParameters& parameters, const ExactMesh& surface,
   const ParallelFor& parallelFor)
 {
+  // (The extraction makes closed manifolds of embedded surfaces whose cells
+  // all have patches, the caller's condition; checked here all the same - a
+  // pass over the edges and vertex links, a few percent of the extraction -
+  // since on anything else the link condition would not mean what it says.)
+  const TopologyReport premise = ComputeTopologyReport(mesh, parallelFor);
+  if (!premise.Closed || !premise.Manifold || !premise.Oriented)
+  {
+    DecimationResult refused;
+    refused.TrianglesBefore = refused.TrianglesAfter = mesh.Triangles.size();
+    refused.NotAClosedManifold = true;
+    for (const double e : bounds)
+    {
+      refused.Bound = std::max(refused.Bound, e);
+    }
+    return refused;
+  }
   Decimator decimator(mesh, bounds, labels, parameters, surface);
   decimator.Run(parallelFor);
   decimator.Compact();

@@ -71,18 +71,42 @@
 // triangles whose boxes overlap, from a grid that never misses one
 // (TriangleGrid.h). Vertices are never created or moved, so no two coincide.
 // Embedded before and no new improper pair: embedded after. That is not yet
-// the same solid: O and N bound a thin pocket - the union of the tetrahedra
-// (v, u, a, b) over the far edges ab of N's triangles - and a part of the
-// surface lying in it (a small void just below the surface; a neighbouring
-// triangle folded in with a vertex there) meets neither O nor N, yet would end up on the
-// other side of the surface (a void outside the solid, inside out). A
-// collapse is refused when a vertex of another live triangle lies in one of
-// these closed tetrahedra (exact Orient3D; a link vertex is tested against
-// the tetrahedra it is not a corner of). A component lying in the pocket has
-// its vertices there, or on the faces between the tetrahedra, which the
-// closed test includes (`Core.CertifiedDecimation.ASmallVoidBelowTheSurfaceStaysInside`
-// fails without this test: the void ends outside the solid, the report
-// guaranteed).
+// the same solid's boundary. The points that change sides are those of odd
+// winding number about O followed by N reversed, a closed surface: the
+// pocket, which lies in the union of the tetrahedra (v, u, a, b) over the
+// far edges ab of N's triangles (the chains of their boundaries sum to O
+// minus N, so a point of nonzero winding lies in one of nonzero volume), and
+// whose boundary lies in O and N. A component C of the surface other than
+// the star's shares no vertex with O or N; it meets O nowhere (embedded
+// before) and N only improperly (refused above), so it lies wholly inside
+// the pocket or wholly outside. Outside, it stays on the side of the star's
+// component it was on - only the pocket's points change sides - and nothing
+// changed for it. Inside (a small void just below the surface), it would end
+// on the other side: a void outside the solid, inside out. Then its vertices
+// lie in the closed tetrahedra, and a collapse is refused when a vertex of
+// another live triangle lies in one (exact Orient3D; a link vertex is tested
+// against the tetrahedra it is not a corner of).
+// `Core.CertifiedDecimation.ASmallVoidBelowTheSurfaceStaysInside` fails
+// without this test (the void ends outside the solid, the report guaranteed).
+// The star's own component A: after the collapse it is a closed, connected,
+// embedded surface, consistently oriented (the collapse keeps the
+// orientation of every triangle it keeps), so it bounds one region
+// (Jordan-Brouwer) and its normals point out of that region everywhere or
+// nowhere (the set where they do is open and closed in a connected surface).
+// If A has a vertex outside the star's box, the triangles around it are not
+// made by the collapse and have points outside the pocket (which lies in the
+// box), where nothing changed sides: there the normals point as before, so
+// everywhere. Then a part of A folded into the pocket - even a triangle whose
+// vertices are all corners of the tetrahedra, which the vertex test cannot
+// see - does no harm. If A has none, all the rest of A may lie in the
+// pocket and the collapse may turn A inside out (a bipyramid of five
+// vertices, reflex along an edge, an equator vertex moved onto one apex: the
+// tetrahedron left lies beyond the faces it keeps;
+// `Core.CertifiedDecimation.ASmallComponentIsNotTurnedInsideOut` fails
+// without this): such a collapse is refused, after a walk over A's vertices
+// inside the box (most walks stop among the link's neighbours). (The vertex
+// test also refuses a collapse where a vertex of A lies in the pocket: more
+// than needed, never less.)
 //
 // Topology. A collapse of the edge uv in a closed 2-manifold preserves its
 // topological type when the link condition holds: Lk(u) and Lk(v) share
@@ -205,6 +229,10 @@ struct DecimationResult
   std::size_t RefusedByError = 0;     ///< e_N beyond the tolerance
   std::size_t RefusedByEmbedding = 0; ///< a new triangle meets another improperly
   bool Aborted = false; ///< Progress asked to stop (the surface is still valid)
+  /// The surface given is not a closed, consistently oriented manifold (the
+  /// link condition, the pocket test and every certificate above assume
+  /// one): nothing was done.
+  bool NotAClosedManifold = false;
   std::size_t BatchDisagreements = 0; ///< with CheckBatches
   /// B: the two-sided Hausdorff distance between S and the decimated surface
   /// is at most this (with the cells' bound before it: the larger of the two).
@@ -221,7 +249,10 @@ struct ExactMesh
 };
 
 /// Decimates `mesh` (closed, oriented, manifold, embedded) in place; not at
-/// all when a triangle's bound already exceeds the tolerance.
+/// all when a triangle's bound already exceeds the tolerance, nor when the
+/// mesh is not a closed, consistently oriented manifold (checked on the
+/// mesh: NotAClosedManifold; whether it is embedded is the caller's exact
+/// check, SurfaceEmbedding.h).
 /// `bounds` holds e_t per triangle (header; TriangleErrorBounds.h), `labels`
 /// the solid each triangle lies on (edges between labels are features); both
 /// are compacted with the triangles, as is mesh.TriangleCell (each triangle

@@ -26,6 +26,36 @@ bool InClosedTetrahedron(const Vec3& p, const std::array<Vec3, 4>& t, int sign)
   return true;
 }
 
+/// Whether the star's component has a vertex outside `box`: a walk over its
+/// vertices inside the box, from From (most stars find one among the
+/// neighbours of their link).
+bool LeavesTheBox(const LiveSurface& surface, const Collapse& c, const Box3& box, VisitMarks& marks)
+{
+  marks.Start(surface.Around.size());
+  std::vector<std::uint32_t> pending{ c.From };
+  marks.First(c.From);
+  while (!pending.empty())
+  {
+    const std::uint32_t w = pending.back();
+    pending.pop_back();
+    for (const std::uint32_t t : surface.Around[w])
+    {
+      for (const std::uint32_t x : surface.Triangles[t])
+      {
+        if (!box.Contains(surface.P[x]))
+        {
+          return true;
+        }
+        if (marks.First(x))
+        {
+          pending.push_back(x);
+        }
+      }
+    }
+  }
+  return false;
+}
+
 } // namespace
 
 bool MeetsAnother(const LiveSurface& surface, const Collapse& c, VisitMarks& marks)
@@ -79,6 +109,12 @@ bool SweepsOverAnother(const LiveSurface& surface, const Collapse& c, VisitMarks
     return false;
   }
   const Box3 box = BoxOf(P, surface.StarOf(c)); // (N's vertices are O's)
+  // (The pocket lies in the box: it may hold all the rest of a component
+  // that does not leave it, unseen by the vertex test below.)
+  if (!LeavesTheBox(surface, c, box, marks))
+  {
+    return true;
+  }
   bool sweeps = false;
   surface.ForEachOther(c, box, marks, [&](std::uint32_t o) {
     for (const std::uint32_t v : surface.Triangles[o])

@@ -3,6 +3,8 @@
 // independent oracles (CGAL's certified Hausdorff distance and its exact
 // self-intersection test), not against the decimation's own bookkeeping.
 #include "CertifiedDecimation.h"
+#include "CollapseEmbedding.h"
+#include "LiveSurface.h"
 #include "CgalHausdorff.h"
 #include "ConvexPolygons.h"
 #include "CoreContour.h"
@@ -429,6 +431,152 @@ TEST(CertifiedDecimation, NoRoomLeftMeansNoCollapse)
       EXPECT_GT(d.RefusedByError, 0u);
     }
   }
+}
+
+TEST(CertifiedDecimation, OnlyAClosedOrientedManifoldIsDecimated)
+{
+  // The link condition and the certificates assume a closed, consistently
+  // oriented manifold: a torus with room to decimate loses most vertices;
+  // the same torus with one triangle gone (open), with one turned over (not
+  // oriented), or with a second torus glued on along one edge (an edge of
+  // four triangles) is left as it is, and says so.
+  const tpc::MeshSolid torus = tpctest::TorusMesh({ 0, 0, 0 }, 0.6, 0.25, 24, 12);
+  const auto decimate = [](const std::vector<Vec3>& points, const std::vector<tpc::Triangle>& triangles) {
+    tpc::TriangleMesh mesh;
+    for (const Vec3& q : points)
+    {
+      mesh.Points.push_back(q);
+    }
+    for (const tpc::Triangle& t : triangles)
+    {
+      mesh.Triangles.push_back(t);
+      mesh.TriangleCell.push_back(0);
+    }
+    std::vector<double> bounds(mesh.Triangles.size(), 0.0);
+    tpc::ReleasableArray<std::int32_t> labels;
+    tpc::DecimationParameters parameters;
+    parameters.Tolerance = 0.02;
+    const tpc::DecimationResult d = tpc::DecimateCertified(mesh, bounds, labels, parameters);
+    EXPECT_EQ(d.TrianglesAfter, mesh.Triangles.size());
+    return d;
+  };
+  const std::vector<Vec3> points = torus.Points();
+  const std::vector<tpc::Triangle> closed = torus.Triangles();
+  const tpc::DecimationResult whole = decimate(points, closed);
+  EXPECT_FALSE(whole.NotAClosedManifold);
+  EXPECT_GT(whole.Collapses, 0u);
+
+  std::vector<tpc::Triangle> open(closed.begin() + 1, closed.end());
+  std::vector<tpc::Triangle> turned = closed;
+  std::swap(turned[5][0], turned[5][1]);
+  // (The copy's points moved far away, its first triangle's first edge on
+  // the torus's: that edge then has four triangles.)
+  std::vector<Vec3> twoPoints = points;
+  std::vector<tpc::Triangle> glued = closed;
+  const auto n = static_cast<std::uint32_t>(points.size());
+  for (const Vec3& q : points)
+  {
+    twoPoints.push_back(q + Vec3{ 5, 0, 0 });
+  }
+  for (tpc::Triangle t : closed)
+  {
+    for (std::uint32_t& v : t)
+    {
+      v = v == closed[0][0] || v == closed[0][1] ? v : v + n;
+    }
+    glued.push_back(t);
+  }
+  using Case = std::pair<const std::vector<Vec3>*, const std::vector<tpc::Triangle>*>;
+  for (const auto& [p, t] : { Case{ &points, &open }, Case{ &points, &turned }, Case{ &twoPoints, &glued } })
+  {
+    const tpc::DecimationResult refused = decimate(*p, *t);
+    EXPECT_TRUE(refused.NotAClosedManifold);
+    EXPECT_EQ(refused.Collapses, 0u);
+    EXPECT_EQ(refused.TrianglesAfter, t->size());
+  }
+}
+
+TEST(CertifiedDecimation, ASmallComponentIsNotTurnedInsideOut)
+{
+  // A bipyramid of five vertices, reflex along the edge a1 a3: the
+  // tetrahedra (v, a1, a3, a2) and (v, a1, a3, a4) share the face v a1 a3,
+  // with a2 and a4 beyond the edge a1 a3 as seen from v. Moving v onto a2
+  // keeps the link condition, turns no triangle over, makes no improper
+  // pair, and leaves no vertex in the pocket (a1, a3 and a4 are corners of
+  // it) - yet its result, the tetrahedron a1 a2 a3 a4, lies on the other
+  // side of the faces a2 a1 a3 and a4 a3 a1 from v: inside out (the pocket
+  // holds all that is left of the component: CertifiedDecimation.h,
+  // Embedding). Moving a2 onto v instead leaves a4 outside the star's box:
+  // the pocket test does not refuse it.
+  tpc::TriangleMesh mesh;
+  const std::uint32_t v = 0, a1 = 1, a2 = 2, a3 = 3, a4 = 4;
+  for (const Vec3& p : { Vec3{ 0, 1, 0 }, Vec3{ -1, 0, 0 }, Vec3{ 0, -0.5, 0.3 }, Vec3{ 1, 0, 0 },
+         Vec3{ 0, -0.5, -0.3 } })
+  {
+    mesh.Points.push_back(p);
+  }
+  for (const tpc::Triangle& t : { tpc::Triangle{ v, a1, a2 }, tpc::Triangle{ v, a2, a3 }, tpc::Triangle{ a1, a3, a2 },
+         tpc::Triangle{ v, a4, a1 }, tpc::Triangle{ v, a3, a4 }, tpc::Triangle{ a1, a4, a3 } })
+  {
+    mesh.Triangles.push_back(t);
+    mesh.TriangleCell.push_back(0);
+  }
+  const auto volume = [](const tpc::TriangleMesh& m) {
+    double sum = 0.0;
+    for (const tpc::Triangle& t : m.Triangles)
+    {
+      sum += Dot(m.Points[t[0]], Cross(m.Points[t[1]], m.Points[t[2]])) / 6.0;
+    }
+    return sum;
+  };
+  ASSERT_TRUE(ClosedAndOriented(mesh));
+  ASSERT_GT(volume(mesh), 0.0) << "outward";
+  ASSERT_EQ(tpc::CountSelfIntersections(mesh.Points.ToVector(), mesh.Triangles.ToVector()), 0u);
+  const tpc::ReleasableArray<std::int32_t> labels;
+  const tpc::LiveSurface live(mesh, labels, 30.0, 1.0);
+  tpc::VisitMarks marks;
+  tpc::Collapse inward;
+  inward.From = v;
+  inward.To = a2;
+  ASSERT_TRUE(live.Describe(inward));
+  EXPECT_TRUE(live.LinkConditionHolds(inward));
+  EXPECT_TRUE(live.KeepsShape(inward));
+  EXPECT_FALSE(tpc::MeetsAnother(live, inward, marks));
+  // (What it would make: inside out.)
+  tpc::TriangleMesh after = mesh;
+  after.Triangles = {};
+  for (const tpc::Triangle& t : inward.Made)
+  {
+    after.Triangles.push_back(t);
+  }
+  for (std::uint32_t t = 0; t < mesh.Triangles.size(); ++t)
+  {
+    if (!tpc::Holds(mesh.Triangles[t], v))
+    {
+      after.Triangles.push_back(mesh.Triangles[t]);
+    }
+  }
+  ASSERT_EQ(after.Triangles.size(), 4u);
+  EXPECT_LT(volume(after), 0.0) << "inside out";
+  EXPECT_TRUE(tpc::SweepsOverAnother(live, inward, marks)) << "the only check left that can refuse it";
+
+  tpc::Collapse outward;
+  outward.From = a2;
+  outward.To = v;
+  ASSERT_TRUE(live.Describe(outward));
+  EXPECT_TRUE(live.LinkConditionHolds(outward));
+  EXPECT_FALSE(tpc::MeetsAnother(live, outward, marks));
+  EXPECT_FALSE(tpc::SweepsOverAnother(live, outward, marks)) << "a4 lies outside the star's box";
+
+  // And the whole decimation (through the bounds, with room) leaves a
+  // component that is still outward.
+  std::vector<double> bounds(mesh.Triangles.size(), 0.0);
+  tpc::ReleasableArray<std::int32_t> noLabels;
+  tpc::DecimationParameters parameters;
+  parameters.Tolerance = 10.0;
+  const tpc::DecimationResult d = tpc::DecimateCertified(mesh, bounds, noLabels, parameters);
+  EXPECT_TRUE(ClosedAndOriented(mesh));
+  EXPECT_GT(volume(mesh), 0.0) << d.Collapses << " collapses";
 }
 
 TEST(SharpCreases, StaysFollowedFindsACreaseLeftBehind)
