@@ -605,9 +605,13 @@ void DecideGuarantee(ContourResult& r, const ContourParameters& p, double tolera
   report.Closed = whole.Closed;
   report.Manifold = whole.Manifold;
   const bool empty = whole.Faces == 0;
+  // (A split run's pieces each hold part of the surface: there the outward
+  // orientation rests on the extraction's construction - SolidBoundary.h -
+  // and no collapse runs.)
+  const bool outward = empty || run.Piece.Pieces > 1 || (r.OutwardChecked && r.Outward.Outward());
   report.Guaranteed = r.AssumptionsMet && all.UnresolvedCells == 0 && inconsistent == 0 && report.Embedded &&
-    withinTolerance &&
-    (run.Piece.Pieces == 1 || run.Collective()) && (empty || (whole.Closed && whole.Manifold && whole.Oriented));
+    withinTolerance && (run.Piece.Pieces == 1 || run.Collective()) &&
+    (empty || (whole.Closed && whole.Manifold && whole.Oriented)) && outward;
   if (report.Guaranteed || (run.Collective() && run.Piece.Piece != 0)) // (one piece says it)
   {
     return;
@@ -647,6 +651,15 @@ void DecideGuarantee(ContourResult& r, const ContourParameters& p, double tolera
   if (inconsistent > 0)
   {
     why << " " << inconsistent << " cell(s) gave inconsistent loops.";
+  }
+  if (r.OutwardChecked && !r.Outward.Outward())
+  {
+    why << " the surface is not the boundary of a solid: " << r.Outward.InsideOut
+        << " of its components are inside out (oriented against the solids they lie in) and "
+        << r.Outward.Undecided << " enclose a volume too small to tell"
+        << (r.Decimation.Collapses > 0 ? " after decimating (a defect: please report it; turn Decimate off for the "
+                                         "surface as extracted)."
+                                       : " (a defect: please report it).");
   }
   if (!withinTolerance && all.UnresolvedCells == 0)
   {
@@ -730,6 +743,12 @@ ContourResult Contour(ContourScene scene, const ContourParameters& parameters, c
   if (run.Aborted())
   {
     return result;
+  }
+  const TopologyReport& surface = result.Topology;
+  if (piece.Pieces == 1 && surface.Closed && surface.Manifold && surface.Oriented)
+  {
+    result.Outward = CheckOutward(result.Extraction.Mesh, parallelFor);
+    result.OutwardChecked = true;
   }
   DecideGuarantee(result, parameters, tolerance, run);
   result.Status = ContourResult::Outcome::Contoured;

@@ -25,6 +25,7 @@
 #include "SurfaceExtraction.h"
 #include "BestLatticePlacement.h"
 #include "CertifiedDecimation.h"
+#include "SolidBoundary.h"
 #include "TopologyReport.h"
 
 #include <functional>
@@ -156,6 +157,11 @@ struct ContourResult
   EmbeddingReport Embedding;        ///< of this piece (as extracted, before any decimation)
   DecimationResult Decimation;      ///< what the decimation did (nothing unless Decimate)
   TopologyReport Topology;          ///< of the whole surface (all pieces)
+  /// Whether the surface bounds a solid with its normals pointing out
+  /// (SolidBoundary.h): checked on a closed, manifold, oriented surface in
+  /// a run of one piece (OutwardChecked).
+  OutwardReport Outward;
+  bool OutwardChecked = false;
   ContourReport Report;
   /// Per triangle of the surface: the Id of the input solid whose surface it
   /// lies on (where the field at its centroid is decided), -1 on a cap of

@@ -103,10 +103,15 @@
 // vertices, reflex along an edge, an equator vertex moved onto one apex: the
 // tetrahedron left lies beyond the faces it keeps;
 // `Core.CertifiedDecimation.ASmallComponentIsNotTurnedInsideOut` fails
-// without this): such a collapse is refused, after a walk over A's vertices
-// inside the box (most walks stop among the link's neighbours). (The vertex
-// test also refuses a collapse where a vertex of A lies in the pocket: more
-// than needed, never less.)
+// without this): then A is small - a walk over its vertices inside the box
+// finds them all (most walks stop among the link's neighbours) - and the
+// collapse is kept only when the volume A encloses keeps its sign, each
+// decided beyond its rounding bound (SolidBoundary.h, EnclosedVolume): A
+// bounds its region the same way round, and lies in the same components as
+// before (no other component meets the pocket, which A's vertices span).
+// (The vertex test also refuses a collapse where a vertex of A lies in the
+// pocket: more than needed, never less.) The report checks the whole
+// surface once more, every component against its nesting (SolidBoundary.h).
 //
 // Topology. A collapse of the edge uv in a closed 2-manifold preserves its
 // topological type when the link condition holds: Lk(u) and Lk(v) share

@@ -2,6 +2,7 @@
 
 #include "ExactPredicates.h"
 #include "SelfIntersection.h"
+#include "SolidBoundary.h"
 
 #include <array>
 
@@ -28,17 +29,16 @@ bool InClosedTetrahedron(const Vec3& p, const std::array<Vec3, 4>& t, int sign)
 
 /// Whether the star's component has a vertex outside `box`: a walk over its
 /// vertices inside the box, from From (most stars find one among the
-/// neighbours of their link).
-bool LeavesTheBox(const LiveSurface& surface, const Collapse& c, const Box3& box, VisitMarks& marks)
+/// neighbours of their link). When it has none, `inside` holds them all.
+bool LeavesTheBox(const LiveSurface& surface, const Collapse& c, const Box3& box, VisitMarks& marks,
+  std::vector<std::uint32_t>& inside)
 {
   marks.Start(surface.Around.size());
-  std::vector<std::uint32_t> pending{ c.From };
+  inside.assign(1, c.From);
   marks.First(c.From);
-  while (!pending.empty())
+  for (std::size_t next = 0; next < inside.size(); ++next)
   {
-    const std::uint32_t w = pending.back();
-    pending.pop_back();
-    for (const std::uint32_t t : surface.Around[w])
+    for (const std::uint32_t t : surface.Around[inside[next]])
     {
       for (const std::uint32_t x : surface.Triangles[t])
       {
@@ -48,12 +48,42 @@ bool LeavesTheBox(const LiveSurface& surface, const Collapse& c, const Box3& box
         }
         if (marks.First(x))
         {
-          pending.push_back(x);
+          inside.push_back(x);
         }
       }
     }
   }
   return false;
+}
+
+/// Whether the component whose vertices are `vertices` encloses a volume of
+/// the same sign after the collapse as before, both decided
+/// (SolidBoundary.h, EnclosedVolume).
+bool KeepsItsSide(const LiveSurface& surface, const Collapse& c, const std::vector<std::uint32_t>& vertices)
+{
+  EnclosedVolume before, after;
+  for (const std::uint32_t w : vertices)
+  {
+    for (const std::uint32_t t : surface.Around[w])
+    {
+      const Triangle& triangle = surface.Triangles[t];
+      // (Each triangle once: from its first corner.)
+      if (triangle[0] != w)
+      {
+        continue;
+      }
+      before.Add(surface.P, triangle);
+      if (!Holds(triangle, c.From))
+      {
+        after.Add(surface.P, triangle);
+      }
+    }
+  }
+  for (const Triangle& made : c.Made)
+  {
+    after.Add(surface.P, made);
+  }
+  return before.Sign() != 0 && before.Sign() == after.Sign();
 }
 
 } // namespace
@@ -110,8 +140,9 @@ bool SweepsOverAnother(const LiveSurface& surface, const Collapse& c, VisitMarks
   }
   const Box3 box = BoxOf(P, surface.StarOf(c)); // (N's vertices are O's)
   // (The pocket lies in the box: it may hold all the rest of a component
-  // that does not leave it, unseen by the vertex test below.)
-  if (!LeavesTheBox(surface, c, box, marks))
+  // that does not leave it, unseen by the vertex test below - header.)
+  std::vector<std::uint32_t> component;
+  if (!LeavesTheBox(surface, c, box, marks, component) && !KeepsItsSide(surface, c, component))
   {
     return true;
   }

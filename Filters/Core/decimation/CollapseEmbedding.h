@@ -16,8 +16,9 @@ bool MeetsAnother(const LiveSurface& surface, const Collapse& c, VisitMarks& mar
 /// Does the pocket between the star and the made triangles - the closed
 /// tetrahedra (From, To, a, b) over the made triangles' far edges ab -
 /// hold a vertex of another live triangle (a link vertex tested against
-/// the tetrahedra it is not a corner of), or may it hold all the rest of the
-/// star's component (which then has no vertex outside the star's box)?
+/// the tetrahedra it is not a corner of), or all the rest of the star's
+/// component - which then has no vertex outside the star's box - turned
+/// inside out (its enclosed volume changes sign, or cannot be told)?
 bool SweepsOverAnother(const LiveSurface& surface, const Collapse& c, VisitMarks& marks);
 
 } // namespace tpc

@@ -167,28 +167,16 @@ bool MeshSolid::Crosses(std::uint32_t t, const Vec3& a, const Vec3* b, int axis)
   return inner(a) != (b ? inner(*b) : o < 0);
 }
 
-bool MeshSolid::IsInside(const Vec3& p) const
+std::size_t MeshSolid::RayCell(const Vec3& p) const
 {
-  if (this->Faces.empty() || !(p[0] <= this->Box.hi[0]) || p[1] < this->Box.lo[1] || p[1] > this->Box.hi[1] ||
-    p[2] < this->Box.lo[2] || p[2] > this->Box.hi[2])
-  {
-    return false;
-  }
   const int y = std::clamp(static_cast<int>(std::floor((p[1] - this->GridOrigin[0]) / this->GridStep[0])), 0, this->GridSize[0] - 1);
   const int z = std::clamp(static_cast<int>(std::floor((p[2] - this->GridOrigin[1]) / this->GridStep[1])), 0, this->GridSize[1] - 1);
-  const std::size_t cell = static_cast<std::size_t>(y) * this->GridSize[1] + z;
-  int crossings = 0;
-  for (std::uint32_t i = this->GridStart[cell]; i < this->GridStart[cell + 1]; ++i)
-  {
-    const std::uint32_t t = this->GridTriangles[i];
-    const Box3& b = this->FaceBoxes[t];
-    if (b.hi[0] < p[0] || p[1] < b.lo[1] || p[1] > b.hi[1] || p[2] < b.lo[2] || p[2] > b.hi[2])
-    {
-      continue;
-    }
-    crossings += this->Crosses(t, p, nullptr, 0) ? 1 : 0;
-  }
-  return (crossings & 1) != 0;
+  return static_cast<std::size_t>(y) * this->GridSize[1] + z;
+}
+
+bool MeshSolid::IsInside(const Vec3& p) const
+{
+  return (this->CrossingsAlongX(p, [](std::uint32_t) { return true; }) & 1) != 0;
 }
 
 template <typename Crossed>

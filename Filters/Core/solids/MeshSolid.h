@@ -53,6 +53,11 @@ public:
 
   /// Exact: inside the (symbolically perturbed) solid.
   bool IsInside(const Vec3& p) const;
+  /// Exact: how many of the triangles t with counts(t) the ray from p along
+  /// +x crosses, p perturbed as in IsInside (so its parity over a closed
+  /// surface's triangles says whether p is inside that surface).
+  template <typename Counts>
+  int CrossingsAlongX(const Vec3& p, const Counts& counts) const;
 
   /// Exact number of crossings of the surface by the segment from `a` to `b`,
   /// which differ only along `axis` (a[axis] < b[axis]), among `triangles`
@@ -86,6 +91,8 @@ public:
 
 private:
   bool Crosses(std::uint32_t t, const Vec3& a, const Vec3* b, int axis) const;
+  /// The ray-casting grid's cell holding p's (y, z).
+  std::size_t RayCell(const Vec3& p) const;
   /// Calls `crossed(t)` for each triangle of `triangles` the segment crosses.
   template <typename Crossed>
   void ForEachCrossing(const Vec3& a, const Vec3& b, int axis, const TriangleList& triangles,
@@ -105,5 +112,28 @@ private:
   std::vector<std::uint32_t> GridStart;
   std::vector<std::uint32_t> GridTriangles;
 };
+
+template <typename Counts>
+int MeshSolid::CrossingsAlongX(const Vec3& p, const Counts& counts) const
+{
+  if (this->Faces.empty() || !(p[0] <= this->Box.hi[0]) || p[1] < this->Box.lo[1] || p[1] > this->Box.hi[1] ||
+    p[2] < this->Box.lo[2] || p[2] > this->Box.hi[2])
+  {
+    return 0;
+  }
+  const std::size_t cell = this->RayCell(p);
+  int crossings = 0;
+  for (std::uint32_t i = this->GridStart[cell]; i < this->GridStart[cell + 1]; ++i)
+  {
+    const std::uint32_t t = this->GridTriangles[i];
+    const Box3& b = this->FaceBoxes[t];
+    if (b.hi[0] < p[0] || p[1] < b.lo[1] || p[1] > b.hi[1] || p[2] < b.lo[2] || p[2] > b.hi[2] || !counts(t))
+    {
+      continue;
+    }
+    crossings += this->Crosses(t, p, nullptr, 0) ? 1 : 0;
+  }
+  return crossings;
+}
 
 } // namespace tpc

@@ -11,6 +11,7 @@
 #include "MeshBuilders.h"
 #include "SelfIntersection.h"
 #include "SharpCreases.h"
+#include "SolidBoundary.h"
 #include "TriangleErrorBounds.h"
 #include "TriangleGrid.h"
 
@@ -558,6 +559,7 @@ TEST(CertifiedDecimation, ASmallComponentIsNotTurnedInsideOut)
   }
   ASSERT_EQ(after.Triangles.size(), 4u);
   EXPECT_LT(volume(after), 0.0) << "inside out";
+  EXPECT_EQ(tpc::CheckOutward(after).InsideOut, 1) << "what the report's check would say";
   EXPECT_TRUE(tpc::SweepsOverAnother(live, inward, marks)) << "the only check left that can refuse it";
 
   tpc::Collapse outward;
