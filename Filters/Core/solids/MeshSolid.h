@@ -55,7 +55,10 @@ public:
   bool IsInside(const Vec3& p) const;
   /// Exact: how many of the triangles t with counts(t) the ray from p along
   /// +x crosses, p perturbed as in IsInside (so its parity over a closed
-  /// surface's triangles says whether p is inside that surface).
+  /// surface's triangles says whether p is inside that surface; the
+  /// triangles' orientation does not matter - turning one over turns every
+  /// sign its crossing test reads - so this holds for any closed triangles,
+  /// outward or not).
   template <typename Counts>
   int CrossingsAlongX(const Vec3& p, const Counts& counts) const;
 
@@ -91,6 +94,8 @@ public:
 
 private:
   bool Crosses(std::uint32_t t, const Vec3& a, const Vec3* b, int axis) const;
+  /// The ray-casting grid's column (0: along y, 1: along z) of a coordinate.
+  int GridColumn(int k, double coordinate) const;
   /// The ray-casting grid's cell holding p's (y, z).
   std::size_t RayCell(const Vec3& p) const;
   /// Calls `crossed(t)` for each triangle of `triangles` the segment crosses.
