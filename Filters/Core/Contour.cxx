@@ -745,7 +745,9 @@ ContourResult Contour(ContourScene scene, const ContourParameters& parameters, c
     return result;
   }
   const TopologyReport& surface = result.Topology;
-  if (piece.Pieces == 1 && surface.Closed && surface.Manifold && surface.Oriented)
+  // (Ray parity means nothing on a surface that is not embedded; the
+  // guarantee is withheld there anyway.)
+  if (piece.Pieces == 1 && surface.Closed && surface.Manifold && surface.Oriented && result.Embedding.Embedded())
   {
     result.Outward = CheckOutward(result.Extraction.Mesh, parallelFor);
     result.OutwardChecked = true;

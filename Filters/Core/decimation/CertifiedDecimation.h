@@ -71,21 +71,22 @@
 // triangles whose boxes overlap, from a grid that never misses one
 // (TriangleGrid.h). Vertices are never created or moved, so no two coincide.
 // Embedded before and no new improper pair: embedded after. That is not yet
-// the same solid's boundary. The points that change sides are those of odd
-// winding number about O followed by N reversed, a closed surface: the
+// the same solid's boundary. Let Z be O followed by N reversed, a closed
+// surface: for a point off the surfaces, the winding number about the
+// surface after is the one before minus w_Z, and w_Z is nonzero only in the
 // pocket, which lies in the union of the tetrahedra (v, u, a, b) over the
 // far edges ab of N's triangles (the chains of their boundaries sum to O
-// minus N, so a point of nonzero winding lies in one of nonzero volume), and
+// minus N, so a point of nonzero w_Z lies in one of nonzero volume) and
 // whose boundary lies in O and N. A component C of the surface other than
 // the star's shares no vertex with O or N; it meets O nowhere (embedded
-// before) and N only improperly (refused above), so it lies wholly inside
-// the pocket or wholly outside. Outside, it stays on the side of the star's
-// component it was on - only the pocket's points change sides - and nothing
-// changed for it. Inside (a small void just below the surface), it would end
-// on the other side: a void outside the solid, inside out. Then its vertices
-// lie in the closed tetrahedra, and a collapse is refused when a vertex of
-// another live triangle lies in one (exact Orient3D; a link vertex is tested
-// against the tetrahedra it is not a corner of).
+// before) and N only improperly (refused above), so w_Z is constant on it:
+// it lies wholly in the pocket or wholly out. Out, w_Z = 0 on it and near
+// it, so whatever lay inside it still does and it lies inside what it did -
+// nothing changed for it. In (a small void just below the surface), it
+// would end on the other side: a void outside the solid, inside out. Then
+// its vertices lie in the closed tetrahedra, and a collapse is refused when
+// a vertex of another live triangle lies in one (exact Orient3D; a link
+// vertex is tested against the tetrahedra it is not a corner of).
 // `Core.CertifiedDecimation.ASmallVoidBelowTheSurfaceStaysInside` fails
 // without this test (the void ends outside the solid, the report guaranteed).
 // The star's own component A: after the collapse it is a closed, connected,
@@ -93,25 +94,32 @@
 // orientation of every triangle it keeps), so it bounds one region
 // (Jordan-Brouwer) and its normals point out of that region everywhere or
 // nowhere (the set where they do is open and closed in a connected surface).
-// If A has a vertex outside the star's box, the triangles around it are not
-// made by the collapse and have points outside the pocket (which lies in the
-// box), where nothing changed sides: there the normals point as before, so
-// everywhere. Then a part of A folded into the pocket - even a triangle whose
-// vertices are all corners of the tetrahedra, which the vertex test cannot
-// see - does no harm. If A has none, all the rest of A may lie in the
-// pocket and the collapse may turn A inside out (a bipyramid of five
-// vertices, reflex along an edge, an equator vertex moved onto one apex: the
-// tetrahedron left lies beyond the faces it keeps;
+// If A has a vertex x outside the star's box, the triangles around x are
+// not made by the collapse, and near x - outside the box, so outside the
+// closed tetrahedra - w_Z = 0: on both sides of them the winding is as
+// before, and so is the way their normals point, hence everywhere. Then a
+// part of A folded into the pocket - even a triangle whose vertices are all
+// corners of the tetrahedra, which the vertex test cannot see - does no
+// harm. If A has none, all the rest of A may lie in the pocket and the
+// collapse may turn A inside out (a bipyramid of five vertices, reflex
+// along an edge, an equator vertex moved onto one apex: the tetrahedron left
+// lies beyond the faces it keeps;
 // `Core.CertifiedDecimation.ASmallComponentIsNotTurnedInsideOut` fails
-// without this): then A is small - a walk over its vertices inside the box
-// finds them all (most walks stop among the link's neighbours) - and the
-// collapse is kept only when the volume A encloses keeps its sign, each
-// decided beyond its rounding bound (SolidBoundary.h, EnclosedVolume): A
-// bounds its region the same way round, and lies in the same components as
-// before (no other component meets the pocket, which A's vertices span).
-// (The vertex test also refuses a collapse where a vertex of A lies in the
-// pocket: more than needed, never less.) The report checks the whole
-// surface once more, every component against its nesting (SolidBoundary.h).
+// without this). Such an A is found by a walk over its vertices inside the
+// box (a walk that meets a vertex outside stops there, most among the link's
+// neighbours), and the collapse is kept only when the volume A encloses
+// keeps its sign, each decided beyond its rounding bound (SolidBoundary.h,
+// EnclosedVolume): A bounds its region the same way round. And the nesting
+// stays: A keeps its triangles outside the star (there are always some),
+// which O and N meet only in shared edges and vertices, so A lies inside
+// another component exactly when it did; and another component, with
+// w_Z = 0 on it, lies inside A exactly when it did.
+// (`Core.CertifiedDecimation.SmallComponentsDecimateAndStayOutward`: a
+// tetrahedron, and a tetrahedral void in a box, down to four triangles
+// each, every component still outward.) (The vertex test also refuses a collapse where a vertex of
+// A lies in the pocket: more than needed, never less.) The report checks
+// the whole surface once more, every component against its nesting
+// (SolidBoundary.h).
 //
 // Topology. A collapse of the edge uv in a closed 2-manifold preserves its
 // topological type when the link condition holds: Lk(u) and Lk(v) share
@@ -154,7 +162,9 @@
 // grown by twice the tolerance (every box its checks query lies in X_i: (b)'s
 // targets, the crease check's, the embedding's), the lists around their
 // vertices and the triangles across their edges (link condition, dihedral
-// angles), and the witnesses of S's triangles in (b)'s region. Whatever of
+// angles; the walk over a small component's vertices, all inside the star's
+// box, and their triangles), and the witnesses of S's triangles in (b)'s
+// region. Whatever of
 // that j changes involves a triangle overlapping X_i (before j, or made by j)
 // with a vertex in j's star - itself, the list around that vertex, or the
 // triangle across one of its edges - so a triangle around a vertex of j's

@@ -30,6 +30,8 @@ bool InClosedTetrahedron(const Vec3& p, const std::array<Vec3, 4>& t, int sign)
 /// Whether the star's component has a vertex outside `box`: a walk over its
 /// vertices inside the box, from From (most stars find one among the
 /// neighbours of their link). When it has none, `inside` holds them all.
+/// (`marks` stamps vertices here: the triangle marks of the examination,
+/// free between its searches.)
 bool LeavesTheBox(const LiveSurface& surface, const Collapse& c, const Box3& box, VisitMarks& marks,
   std::vector<std::uint32_t>& inside)
 {

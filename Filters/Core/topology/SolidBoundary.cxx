@@ -5,6 +5,7 @@
 
 #include <cfloat>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace tpc
@@ -53,17 +54,25 @@ void EnclosedVolume::Add(const Vec3* points, const Triangle& t)
 
 int EnclosedVolume::Sign() const
 {
-  // Why the bound holds: with d = x - o rounded (relative error u, the unit
-  // roundoff), det(d_a, d_b, d_c) = d_a . (d_b x d_c) takes six products of
-  // three coordinates, a subtraction in each cross component, two additions
-  // in the dot: each term carries a relative error below 9u, so the
-  // determinant's error is below 9u times the sum M_t of its terms' absolute
-  // values. Summing n determinants adds at most (n - 1) u times the sum of
-  // their absolute values (at most M_t each, to first order). So
-  // |computed - exact| <= (n + 9) u sum M_t, taken here as (n + 16)
-  // DBL_EPSILON sum M_t (DBL_EPSILON = 2u), with room for the second-order
-  // terms and the rounding of sum M_t itself.
-  const double bound = (static_cast<double>(this->Count) + 16.0) * DBL_EPSILON * this->Magnitudes;
+  // Why the bound holds. Every rounding, underflow included, gives
+  // fl(x op y) = (x op y)(1 + d) + e with |d| <= u (the unit roundoff,
+  // DBL_EPSILON / 2) and |e| <= DBL_TRUE_MIN / 2. With d = x - o rounded,
+  // det(d_a, d_b, d_c) = d_a . (d_b x d_c) takes six products of three
+  // coordinates, a subtraction in each cross component, two additions in the
+  // dot: each term carries a relative error below 9u (three differences, two
+  // products, a subtraction, two additions, one more product), so the
+  // determinant's is below 9u times the sum M_t of its terms' absolute
+  // values, plus at most 11 absolute errors e. Summing n determinants adds
+  // at most (n - 1) u times the sum of their absolute values (at most M_t
+  // each, to first order) and n - 1 errors e. So |computed - exact| <=
+  // (n + 9) u sum M_t + 12 n DBL_TRUE_MIN / 2, taken here as (n + 16)
+  // DBL_EPSILON sum M_t + 16 (n + 1) DBL_TRUE_MIN: room for the second-order
+  // terms and the rounding of sum M_t itself. (Without the absolute term the
+  // bound would fail where the products underflow - differences of about
+  // 1e-106 - and call a sign it cannot know.)
+  const double n = static_cast<double>(this->Count);
+  const double bound =
+    (n + 16.0) * DBL_EPSILON * this->Magnitudes + 16.0 * (n + 1.0) * std::numeric_limits<double>::denorm_min();
   return std::fabs(this->Six) > bound ? (this->Six > 0.0 ? 1 : -1) : 0;
 }
 

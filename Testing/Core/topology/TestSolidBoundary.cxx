@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
+#include <random>
 #include <utility>
 
 using tpc::TriangleMesh;
@@ -76,6 +78,54 @@ TEST(SolidBoundary, EachComponentPointsOutOfTheSolid)
   }
 }
 
+TEST(SolidBoundary, RaysThroughAVertexOrAnEdgeCountRight)
+{
+  // An octahedral shell around a box-shaped void: the ray from the void's
+  // first vertex runs exactly through a vertex of the shell (the void's
+  // corner at y = z = 5), or through one of its edges (y = 5, z = 6), where
+  // the crossings are decided by the symbolic perturbation. Two components:
+  // the void at depth 1 must be turned inward, and only then is it outward.
+  const Vec3 c{ 5, 5, 5 };
+  const double r = 10;
+  const Vec3 tips[6] = { c + Vec3{ r, 0, 0 }, c - Vec3{ r, 0, 0 }, c + Vec3{ 0, r, 0 }, c - Vec3{ 0, r, 0 },
+    c + Vec3{ 0, 0, r }, c - Vec3{ 0, 0, r } };
+  for (const Vec3& corner : { Vec3{ 4, 5, 5 }, Vec3{ 4, 5, 6 } })
+  {
+    for (const bool voidTurnedIn : { true, false })
+    {
+      TriangleMesh mesh;
+      for (const Vec3& p : tips)
+      {
+        mesh.Points.push_back(p);
+      }
+      for (const std::uint32_t x : { 0u, 1u })
+      {
+        for (const std::uint32_t y : { 2u, 3u })
+        {
+          for (const std::uint32_t z : { 4u, 5u })
+          {
+            tpc::Triangle t{ x, y, z };
+            const Vec3 centroid = (tips[x] + tips[y] + tips[z]) * (1.0 / 3.0);
+            if (Dot(Cross(tips[y] - tips[x], tips[z] - tips[x]), centroid - c) < 0.0)
+            {
+              std::swap(t[1], t[2]);
+            }
+            mesh.Triangles.push_back(t);
+          }
+        }
+      }
+      AddBox(mesh, corner, corner + Vec3{ 2, 2, 2 }, voidTurnedIn);
+      const Vec3& start = mesh.Points[mesh.Triangles[8][0]];
+      ASSERT_TRUE(start[0] == corner[0] && start[1] == corner[1] && start[2] == corner[2])
+        << "the ray starts at the void's corner";
+      const tpc::OutwardReport report = tpc::CheckOutward(mesh);
+      EXPECT_EQ(report.Components, 2);
+      EXPECT_EQ(report.Outward(), voidTurnedIn) << corner[2];
+      EXPECT_EQ(report.InsideOut, voidTurnedIn ? 0 : 1) << corner[2];
+    }
+  }
+}
+
 TEST(SolidBoundary, OneComponentNeedsOnlyItsVolume)
 {
   const tpc::MeshSolid torus = tpctest::TorusMesh({ 0, 0, 0 }, 0.6, 0.25, 24, 12);
@@ -118,4 +168,42 @@ TEST(SolidBoundary, AVolumeWithinItsRoundingIsUndecided)
     EXPECT_EQ(r.Undecided, thickness < 1e-3 ? 1 : 0) << thickness;
     EXPECT_EQ(r.Outward(), thickness > 1e-3) << thickness;
   }
+}
+
+TEST(SolidBoundary, TinyCoordinatesNeverGiveTheWrongSign)
+{
+  // Thin tetrahedra, and the same scaled exactly by 2^-350: there the
+  // products underflow, and a bound relative to the terms alone called signs
+  // it could not know (about one in eight wrong). Decided at both scales,
+  // the signs must agree.
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  const tpc::Triangle faces[4] = { { 0, 2, 1 }, { 0, 1, 3 }, { 1, 2, 3 }, { 2, 0, 3 } };
+  int decidedTiny = 0;
+  for (int trial = 0; trial < 20000; ++trial)
+  {
+    Vec3 p[4];
+    for (int i = 0; i < 3; ++i)
+    {
+      p[i] = { uniform(random), uniform(random), uniform(random) };
+    }
+    p[3] = (p[0] + p[1] + p[2]) * (1.0 / 3.0) + Cross(p[1] - p[0], p[2] - p[0]) * std::ldexp(uniform(random), -40);
+    const auto sign = [&](int exponent) {
+      Vec3 q[4];
+      for (int i = 0; i < 4; ++i)
+      {
+        q[i] = { std::ldexp(p[i][0], exponent), std::ldexp(p[i][1], exponent), std::ldexp(p[i][2], exponent) };
+      }
+      tpc::EnclosedVolume volume;
+      for (const tpc::Triangle& t : faces)
+      {
+        volume.Add(q, t);
+      }
+      return volume.Sign();
+    };
+    const int unscaled = sign(0), tiny = sign(-350);
+    decidedTiny += tiny != 0 ? 1 : 0;
+    ASSERT_TRUE(tiny == 0 || unscaled == 0 || tiny == unscaled) << "trial " << trial;
+  }
+  std::cout << decidedTiny << " of 20000 decided at 2^-350\n";
 }
