@@ -60,6 +60,7 @@ void AddReport(vtkDataObject* output, const tpc::ContourReport& r)
   addInt("Closed", r.Closed);
   addInt("Manifold", r.Manifold);
   addInt("Embedded", r.Embedded);
+  addInt("Outward", r.Outward);
   addInt("PlanarCells", r.PlanarCells);
   addInt("ExactCells", r.ExactCells);
   vtkNew<vtkDoubleArray> h;

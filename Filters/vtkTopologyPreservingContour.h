@@ -57,6 +57,10 @@
  *   stopped by a limit), "Closed", "Manifold", "Embedded" (1 when the exact
  *   check found no two triangles meeting but in a shared edge or vertex, no
  *   two vertices at the same coordinates and no degenerate triangle),
+ *   "Outward" (1 when every component's normals point out of the solid:
+ *   each one's enclosed volume has the sign its nesting in the others asks,
+ *   checked on the whole surface; in a run split among processes, by the
+ *   patches' construction),
  *   "HausdorffBound" (the proven two-sided bound: the largest diagonal of a
  *   cell holding surface, except that cells where the surface is a plane
  *   section count the finest lattice cell's and cells with a CertifiedError

@@ -111,6 +111,7 @@ def run(name, algorithm, expected_genus):
         f"  Euler characteristic {int(field('EulerCharacteristic'))}",
         f"  closed / manifold    {int(field('Closed'))} / {int(field('Manifold'))}",
         f"  embedded             {int(field('Embedded'))}",
+        f"  outward              {int(field('Outward'))}",
         f"  TopologyGuaranteed   {int(field('TopologyGuaranteed'))}",
         f"  UnresolvedCells      {int(field('UnresolvedCells'))}",
         f"  Hausdorff bound      {field('HausdorffBound'):.5f}  (tolerance {field('AbsoluteTolerance'):.5f})",

@@ -66,6 +66,7 @@ void RunReport::ReadFieldData(vtkFieldData* field)
   this->Closed = value("Closed") == 1;
   this->Manifold = value("Manifold") == 1;
   this->Embedded = value("Embedded") == 1;
+  this->Outward = value("Outward") == 1;
   this->Guaranteed = value("TopologyGuaranteed") == 1;
 }
 
@@ -77,6 +78,7 @@ std::string TextReport(const RunReport& r)
     << "Euler characteristic " << r.EulerCharacteristic << "\n"
     << "closed / manifold    " << r.Closed << " / " << r.Manifold << "\n"
     << "embedded             " << r.Embedded << "\n"
+    << "outward              " << r.Outward << "\n"
     << "TopologyGuaranteed   " << r.Guaranteed << "\n"
     << "UnresolvedCells      " << r.UnresolvedCells << "\n"
     << "Hausdorff bound      " << Number(r.HausdorffBound, "not proven") << " (tolerance " << r.AbsoluteTolerance
@@ -104,7 +106,8 @@ std::string JsonReport(const RunReport& r)
     j << ",\n  \"absolute_tolerance\": " << r.AbsoluteTolerance << ",\n  \"components\": " << r.Components
       << ",\n  \"genus\": " << r.Genus << ",\n  \"euler_characteristic\": " << r.EulerCharacteristic
       << ",\n  \"closed\": " << Bool(r.Closed) << ",\n  \"manifold\": " << Bool(r.Manifold)
-      << ",\n  \"embedded\": " << Bool(r.Embedded) << ",\n  \"guaranteed\": " << Bool(r.Guaranteed)
+      << ",\n  \"embedded\": " << Bool(r.Embedded) << ",\n  \"outward\": " << Bool(r.Outward)
+      << ",\n  \"guaranteed\": " << Bool(r.Guaranteed)
       << ",\n  \"unresolved_cells\": " << r.UnresolvedCells
       << ",\n  \"hausdorff_bound\": " << Number(r.HausdorffBound, "null") << ",\n  \"triangles\": " << r.Triangles
       << ",\n  \"grid_cells\": " << r.GridCells << ",\n  \"seconds\": " << r.Seconds

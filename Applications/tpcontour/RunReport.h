@@ -23,7 +23,7 @@ struct RunReport
   double AbsoluteTolerance = 0, Components = 0, Genus = 0, EulerCharacteristic = 0, UnresolvedCells = 0;
   /// NaN: refinement stopped where surface may be missing, so no bound is proven.
   double HausdorffBound = std::numeric_limits<double>::quiet_NaN();
-  bool Closed = false, Manifold = false, Embedded = false, Guaranteed = false;
+  bool Closed = false, Manifold = false, Embedded = false, Outward = false, Guaranteed = false;
   long long Triangles = 0, GridCells = 0;
   double Seconds = 0;
   /// VTK's SMP backend and how many threads it ran the loops on.

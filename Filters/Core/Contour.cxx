@@ -609,6 +609,7 @@ void DecideGuarantee(ContourResult& r, const ContourParameters& p, double tolera
   // orientation rests on the extraction's construction - SolidBoundary.h -
   // and no collapse runs.)
   const bool outward = empty || run.Piece.Pieces > 1 || (r.OutwardChecked && r.Outward.Outward());
+  report.Outward = outward;
   report.Guaranteed = r.AssumptionsMet && all.UnresolvedCells == 0 && inconsistent == 0 && report.Embedded &&
     withinTolerance && (run.Piece.Pieces == 1 || run.Collective()) &&
     (empty || (whole.Closed && whole.Manifold && whole.Oriented)) && outward;

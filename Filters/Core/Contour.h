@@ -108,6 +108,9 @@ struct ContourReport
   bool Closed = false;
   bool Manifold = false;
   bool Embedded = false;
+  /// Every component's normals point out of the solid (SolidBoundary.h;
+  /// in a run split among processes, by the patches' construction).
+  bool Outward = false;
   long long PlanarCells = 0;
   long long ExactCells = 0;
   /// Proven two-sided Hausdorff bound; NaN when a limit left surface without

@@ -48,6 +48,7 @@ struct FilterResult
   int Guaranteed = -1;
   int Unresolved = -1;
   int Embedded = -1;
+  int Outward = -1;
   double HausdorffBound = 0.0;
   double Tolerance = 0.0;
 };
@@ -83,12 +84,17 @@ inline FilterResult Run(vtkTopologyPreservingContour* filter)
   r.Guaranteed = static_cast<int>(FieldValue(r.Surface, "TopologyGuaranteed"));
   r.Unresolved = static_cast<int>(FieldValue(r.Surface, "UnresolvedCells"));
   r.Embedded = static_cast<int>(FieldValue(r.Surface, "Embedded"));
+  r.Outward = static_cast<int>(FieldValue(r.Surface, "Outward"));
   if (r.Surface->GetNumberOfCells() > 0)
   {
     const tpcoracle::EmbeddingVerdict cgal = CgalVerdict(r.Surface);
     EXPECT_TRUE(!cgal.Checked || (r.Embedded == 1) == cgal.Embedded())
       << "CGAL: " << cgal.SelfIntersectingPairs << " self-intersecting pairs, " << cgal.CoincidentVertices
       << " coincident vertices";
+    // (Every component pointing out of the solid, against CGAL's verdict on
+    // the same surface.)
+    EXPECT_TRUE(!cgal.Checked || !cgal.VolumeChecked || (r.Outward == 1) == cgal.Outward)
+      << "Outward " << r.Outward << ", CGAL " << cgal.Outward;
   }
   r.HausdorffBound = FieldValue(r.Surface, "HausdorffBound");
   r.Tolerance = FieldValue(r.Surface, "AbsoluteTolerance");

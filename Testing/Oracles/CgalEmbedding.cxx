@@ -4,11 +4,14 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/intersections.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/repair.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
+#include <functional>
 #include <cstdlib>
 #include <iterator>
 
@@ -93,6 +96,24 @@ EmbeddingVerdict CheckEmbeddingWithCgal(
   std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> pairs;
   PMP::self_intersections(mesh, std::back_inserter(pairs));
   v.SelfIntersectingPairs = pairs.size();
+  if (v.PolygonMesh && pairs.empty() && !faces.empty() && CGAL::is_closed(mesh))
+  {
+    // (does_bound_a_volume also accepts an inward component at level 0, the
+    // boundary of the unbounded volume outside it: the orientation of each
+    // component is compared with its nesting level here instead.)
+    PMP::remove_isolated_vertices(mesh); // (points no triangle uses: CGAL's volume test crashes on them)
+    std::vector<std::size_t> levels;
+    std::vector<bool> outward;
+    auto volumeOf = mesh.add_property_map<Mesh::Face_index, std::size_t>("f:volume", 0).first;
+    PMP::volume_connected_components(mesh, volumeOf,
+      PMP::parameters::nesting_levels(std::ref(levels)).is_cc_outward_oriented(std::ref(outward)).do_orientation_tests(true));
+    v.Outward = !levels.empty() && levels.size() == outward.size();
+    for (std::size_t c = 0; c < levels.size() && v.Outward; ++c)
+    {
+      v.Outward = outward[c] == (levels[c] % 2 == 0);
+    }
+    v.VolumeChecked = true;
+  }
   return v;
 }
 

@@ -1,8 +1,8 @@
-// An oracle for the tests, independent of the core's own exact check
-// (SurfaceEmbedding.h): CGAL's self-intersection test on a triangle mesh with
-// its own vertex ids, and an exact count of vertices at the coordinates of
-// another. CGAL is GPL: it is linked into test programs only, never into the
-// product.
+// An oracle for the tests, independent of the core's own exact checks
+// (SurfaceEmbedding.h, SolidBoundary.h): CGAL's self-intersection test on a
+// triangle mesh with its own vertex ids, an exact count of vertices at the
+// coordinates of another, and whether the mesh bounds a volume. CGAL is
+// GPL: it is linked into test programs only, never into the product.
 #pragma once
 
 #include <array>
@@ -18,6 +18,12 @@ struct EmbeddingVerdict
   std::size_t SelfIntersectingPairs = 0; ///< CGAL::Polygon_mesh_processing::self_intersections
   std::size_t CoincidentVertices = 0;    ///< vertices with the coordinates of an earlier one
   bool PolygonMesh = true;               ///< CGAL took the triangles as one oriented manifold mesh
+  /// Every component oriented as its nesting asks - outward at an even
+  /// nesting level - by CGAL's volume_connected_components (its orientation
+  /// and nesting tests). Decided only for a closed polygon mesh free of
+  /// self-intersections (VolumeChecked).
+  bool Outward = false;
+  bool VolumeChecked = false;
   /// False when TPC_SKIP_CGAL_ORACLE is set: under valgrind, which does not
   /// emulate the rounding modes CGAL's interval filters switch to, CGAL's
   /// predicates give wrong answers.

@@ -188,7 +188,8 @@ for t in ("0.03125", "0.015625", "0.0078125"):
     code, out, err = run("sliver.stl", "-t", t, "--json", "-o", "sliver-out.vtp")
     report = json.loads(out) if code in (0, 2) else {}
     check(code == 0 and report.get("components") == 1 and report.get("genus") == 0
-          and report.get("embedded") is True and report.get("hausdorff_bound") is not None,
+          and report.get("embedded") is True and report.get("outward") is True
+          and report.get("hausdorff_bound") is not None,
           f"sliver tetrahedron at {t}: guaranteed, one component, genus 0, embedded ({code}, {err.strip()[:200]})")
     reader = vtkXMLPolyDataReader()
     reader.SetFileName("sliver-out.vtp")

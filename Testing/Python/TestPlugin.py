@@ -32,6 +32,7 @@ check(proxy.GetDataInformation(0).GetNumberOfCells() > 0, "surface has triangles
 surface = servermanager.Fetch(proxy)
 m = measure(surface)
 check(field(surface, "TopologyGuaranteed") == 1, "guarantee holds", failures)
+check(field(surface, "Outward") == 1, "every component points out of the solid", failures)
 check(field(surface, "Components") == 1 and m["components"] == 1, "one component", failures)
 check(field(surface, "Genus") == 0 and m["genus"] == 0, "genus 0", failures)
 check(m["boundary"] == 0 and m["nonmanifold"] == 0, "closed and manifold", failures)

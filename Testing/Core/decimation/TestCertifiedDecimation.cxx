@@ -142,6 +142,8 @@ TEST(CertifiedDecimation, MeshesKeepEveryGuaranteeWithFarFewerTriangles)
     EXPECT_TRUE(ClosedAndOriented(mesh)) << c.Name;
     const tpcoracle::EmbeddingVerdict cgal = tpctest::CgalVerdict(mesh);
     EXPECT_TRUE(!cgal.Checked || cgal.Embedded()) << c.Name << ": " << cgal.SelfIntersectingPairs << " pairs";
+    EXPECT_TRUE(!cgal.Checked || (cgal.VolumeChecked && cgal.Outward)) << c.Name << ": CGAL, outward";
+    EXPECT_TRUE(r.Report.Outward) << c.Name;
     EXPECT_EQ(r.Decimation.TrianglesAfter, mesh.Triangles.size()) << c.Name;
     EXPECT_EQ(r.Decimation.TrianglesBefore, plain.Surface().Triangles.size()) << c.Name;
     EXPECT_LT(mesh.Triangles.size() * c.Fewer, plain.Surface().Triangles.size()) << c.Name;
@@ -558,6 +560,8 @@ TEST(CertifiedDecimation, ASmallComponentIsNotTurnedInsideOut)
   ASSERT_EQ(after.Triangles.size(), 4u);
   EXPECT_LT(volume(after), 0.0) << "inside out";
   EXPECT_EQ(tpc::CheckOutward(after).InsideOut, 1) << "what the report's check would say";
+  const tpcoracle::EmbeddingVerdict cgal = tpctest::CgalVerdict(after);
+  EXPECT_TRUE(!cgal.Checked || (cgal.VolumeChecked && !cgal.Outward)) << "and CGAL";
   EXPECT_TRUE(tpc::SweepsOverAnother(live, inward, marks)) << "the only check left that can refuse it";
 
   tpc::Collapse outward;
