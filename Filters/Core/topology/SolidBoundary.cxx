@@ -49,6 +49,7 @@ void EnclosedVolume::Add(const Vec3* points, const Triangle& t)
   this->Magnitudes += std::fabs(a[0]) * (std::fabs(b[1] * c[2]) + std::fabs(b[2] * c[1])) +
     std::fabs(a[1]) * (std::fabs(b[2] * c[0]) + std::fabs(b[0] * c[2])) +
     std::fabs(a[2]) * (std::fabs(b[0] * c[1]) + std::fabs(b[1] * c[0]));
+  this->Reach += std::fabs(a[0]) + std::fabs(a[1]) + std::fabs(a[2]);
   ++this->Count;
 }
 
@@ -56,23 +57,28 @@ int EnclosedVolume::Sign() const
 {
   // Why the bound holds. Every rounding, underflow included, gives
   // fl(x op y) = (x op y)(1 + d) + e with |d| <= u (the unit roundoff,
-  // DBL_EPSILON / 2) and |e| <= DBL_TRUE_MIN / 2. With d = x - o rounded,
-  // det(d_a, d_b, d_c) = d_a . (d_b x d_c) takes six products of three
-  // coordinates, a subtraction in each cross component, two additions in the
-  // dot: each term carries a relative error below 9u (three differences, two
-  // products, a subtraction, two additions, one more product), so the
-  // determinant's is below 9u times the sum M_t of its terms' absolute
-  // values, plus at most 11 absolute errors e. Summing n determinants adds
-  // at most (n - 1) u times the sum of their absolute values (at most M_t
-  // each, to first order) and n - 1 errors e. So |computed - exact| <=
-  // (n + 9) u sum M_t + 12 n DBL_TRUE_MIN / 2, taken here as (n + 16)
-  // DBL_EPSILON sum M_t + 16 (n + 1) DBL_TRUE_MIN: room for the second-order
-  // terms and the rounding of sum M_t itself. (Without the absolute term the
-  // bound would fail where the products underflow - differences of about
-  // 1e-106 - and call a sign it cannot know.)
+  // DBL_EPSILON / 2) and |e| <= m / 2, m the smallest subnormal
+  // (denorm_min); a difference x - o that underflows is exact.
+  // Relative errors: det(d_a, d_b, d_c) = d_a . (d_b x d_c) takes six
+  // products of three coordinates, a subtraction in each cross component,
+  // two additions in the dot: each term carries a relative error below 9u
+  // (three differences, two products, a subtraction, two additions, one more
+  // product), so the determinant's is below 9u times the sum M_t of its
+  // terms' absolute values; summing n determinants adds at most (n - 1) u
+  // times the sum of their absolute values (at most M_t each, to first
+  // order). Absolute errors: a cross component carries at most 3m/2 (two
+  // products, a subtraction), multiplied by d_a's coordinate; the dot adds
+  // three products and two additions: at most m (3/2 |d_a|_1 + 5/2) per
+  // determinant, and n/2 m for the sum. So
+  //   |computed - exact| <= (n + 9) u sum M_t + m (3/2 sum |d_a|_1 + 3 n),
+  // taken here as (n + 16) DBL_EPSILON sum M_t + 4 m (sum |d_a|_1 + 2 n + 1):
+  // room for the second-order terms and the roundings of the sums
+  // themselves. (With the relative term alone the bound fails where products
+  // underflow - differences of about 1e-106 - and calls signs it cannot
+  // know; SolidBoundary.TinyCoordinatesNeverGiveTheWrongSign.)
   const double n = static_cast<double>(this->Count);
-  const double bound =
-    (n + 16.0) * DBL_EPSILON * this->Magnitudes + 16.0 * (n + 1.0) * std::numeric_limits<double>::denorm_min();
+  const double bound = (n + 16.0) * DBL_EPSILON * this->Magnitudes +
+    4.0 * std::numeric_limits<double>::denorm_min() * (this->Reach + 2.0 * n + 1.0);
   return std::fabs(this->Six) > bound ? (this->Six > 0.0 ? 1 : -1) : 0;
 }
 

@@ -54,6 +54,7 @@ private:
   bool Started = false;
   double Six = 0.0;
   double Magnitudes = 0.0; ///< sum of the determinants' terms' absolute values
+  double Reach = 0.0;      ///< sum of the first corners' |x - o|_1 (underflow errors scale with it)
   std::size_t Count = 0;
 };
 

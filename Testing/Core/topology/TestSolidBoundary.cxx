@@ -207,3 +207,40 @@ TEST(SolidBoundary, TinyCoordinatesNeverGiveTheWrongSign)
   }
   std::cout << decidedTiny << " of 20000 decided at 2^-350\n";
 }
+
+TEST(SolidBoundary, UnderflowTimesALongEdgeNeverGivesTheWrongSign)
+{
+  // A tetrahedron with two corners within 1e-160 of the first and the third
+  // 1e10 away, nearly in their plane: the cross products of the short edges
+  // underflow, and their errors come multiplied by the long edge. Against
+  // the same tetrahedra scaled by 2^600 (nothing underflows there), a sign
+  // decided at both scales must agree.
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  // (The face away from the first corner starts at the far one: its
+  // determinant is d_3 . (d_1 x d_2), the short edges' cross product first.)
+  const tpc::Triangle faces[4] = { { 0, 2, 1 }, { 0, 1, 3 }, { 3, 1, 2 }, { 2, 0, 3 } };
+  for (int trial = 0; trial < 20000; ++trial)
+  {
+    const Vec3 b{ uniform(random), uniform(random), uniform(random) };
+    const Vec3 c{ uniform(random), uniform(random), uniform(random) };
+    const Vec3 inPlane = b * uniform(random) + c * uniform(random);
+    Vec3 p[4] = { Vec3{ 0, 0, 0 }, b * std::ldexp(1.0, -530), c * std::ldexp(1.0, -530),
+      inPlane * std::ldexp(1.0, 33) + Cross(b, c) * uniform(random) };
+    const auto sign = [&](int exponent) {
+      Vec3 q[4];
+      for (int i = 0; i < 4; ++i)
+      {
+        q[i] = { std::ldexp(p[i][0], exponent), std::ldexp(p[i][1], exponent), std::ldexp(p[i][2], exponent) };
+      }
+      tpc::EnclosedVolume volume;
+      for (const tpc::Triangle& t : faces)
+      {
+        volume.Add(q, t);
+      }
+      return volume.Sign();
+    };
+    const int reference = sign(600), tiny = sign(0);
+    ASSERT_TRUE(tiny == 0 || reference == 0 || tiny == reference) << "trial " << trial;
+  }
+}
