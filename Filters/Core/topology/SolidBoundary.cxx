@@ -75,7 +75,8 @@ int EnclosedVolume::Sign() const
   // room for the second-order terms and the roundings of the sums
   // themselves. (With the relative term alone the bound fails where products
   // underflow - differences of about 1e-106 - and calls signs it cannot
-  // know; SolidBoundary.TinyCoordinatesNeverGiveTheWrongSign.)
+  // know; SolidBoundary.TinyCoordinatesNeverGiveTheWrongSign, and a constant
+  // absolute term fails UnderflowTimesALongEdgeNeverGivesTheWrongSign.)
   const double n = static_cast<double>(this->Count);
   const double bound = (n + 16.0) * DBL_EPSILON * this->Magnitudes +
     4.0 * std::numeric_limits<double>::denorm_min() * (this->Reach + 2.0 * n + 1.0);
