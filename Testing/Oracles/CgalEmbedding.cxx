@@ -11,8 +11,8 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
-#include <functional>
 #include <cstdlib>
+#include <functional>
 #include <iterator>
 
 namespace tpcoracle

@@ -38,6 +38,22 @@ void AddBox(TriangleMesh& mesh, const Vec3& lo, const Vec3& hi, bool inward)
     mesh.Triangles.push_back(t);
   }
 }
+/// The sign of the volume the tetrahedron `faces` of `p` encloses, every
+/// coordinate scaled exactly by 2^exponent.
+int ScaledSign(const Vec3 (&p)[4], const tpc::Triangle (&faces)[4], int exponent)
+{
+  Vec3 q[4];
+  for (int i = 0; i < 4; ++i)
+  {
+    q[i] = { std::ldexp(p[i][0], exponent), std::ldexp(p[i][1], exponent), std::ldexp(p[i][2], exponent) };
+  }
+  tpc::EnclosedVolume volume;
+  for (const tpc::Triangle& t : faces)
+  {
+    volume.Add(q, t);
+  }
+  return volume.Sign();
+}
 } // namespace
 
 TEST(SolidBoundary, EachComponentPointsOutOfTheSolid)
@@ -188,20 +204,7 @@ TEST(SolidBoundary, TinyCoordinatesNeverGiveTheWrongSign)
       p[i] = { uniform(random), uniform(random), uniform(random) };
     }
     p[3] = (p[0] + p[1] + p[2]) * (1.0 / 3.0) + Cross(p[1] - p[0], p[2] - p[0]) * std::ldexp(uniform(random), -40);
-    const auto sign = [&](int exponent) {
-      Vec3 q[4];
-      for (int i = 0; i < 4; ++i)
-      {
-        q[i] = { std::ldexp(p[i][0], exponent), std::ldexp(p[i][1], exponent), std::ldexp(p[i][2], exponent) };
-      }
-      tpc::EnclosedVolume volume;
-      for (const tpc::Triangle& t : faces)
-      {
-        volume.Add(q, t);
-      }
-      return volume.Sign();
-    };
-    const int unscaled = sign(0), tiny = sign(-350);
+    const int unscaled = ScaledSign(p, faces, 0), tiny = ScaledSign(p, faces, -350);
     decidedTiny += tiny != 0 ? 1 : 0;
     ASSERT_TRUE(tiny == 0 || unscaled == 0 || tiny == unscaled) << "trial " << trial;
   }
@@ -227,20 +230,7 @@ TEST(SolidBoundary, UnderflowTimesALongEdgeNeverGivesTheWrongSign)
     const Vec3 inPlane = b * uniform(random) + c * uniform(random);
     Vec3 p[4] = { Vec3{ 0, 0, 0 }, b * std::ldexp(1.0, -530), c * std::ldexp(1.0, -530),
       inPlane * std::ldexp(1.0, 33) + Cross(b, c) * uniform(random) };
-    const auto sign = [&](int exponent) {
-      Vec3 q[4];
-      for (int i = 0; i < 4; ++i)
-      {
-        q[i] = { std::ldexp(p[i][0], exponent), std::ldexp(p[i][1], exponent), std::ldexp(p[i][2], exponent) };
-      }
-      tpc::EnclosedVolume volume;
-      for (const tpc::Triangle& t : faces)
-      {
-        volume.Add(q, t);
-      }
-      return volume.Sign();
-    };
-    const int reference = sign(600), tiny = sign(0);
+    const int reference = ScaledSign(p, faces, 600), tiny = ScaledSign(p, faces, 0);
     ASSERT_TRUE(tiny == 0 || reference == 0 || tiny == reference) << "trial " << trial;
   }
 }
