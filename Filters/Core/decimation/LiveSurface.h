@@ -13,6 +13,7 @@
 #include "TriangleGrid.h"
 #include "TriangleMesh.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <utility>
@@ -48,7 +49,15 @@ struct VisitMarks
     {
       this->Stamp.resize(items, 0);
     }
-    ++this->Current;
+    // (After 2^32 searches the stamp comes round to values items still
+    // hold: in the search that reused 0 every item never visited (or added
+    // since) would look visited, and an item stamped k would again in the
+    // search k + 2^32. Cleared then, once.)
+    if (++this->Current == 0)
+    {
+      std::fill(this->Stamp.begin(), this->Stamp.end(), 0u);
+      this->Current = 1;
+    }
   }
   /// True the first time `i` is visited in this search.
   bool First(std::uint32_t i)

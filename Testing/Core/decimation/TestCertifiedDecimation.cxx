@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <random>
 #include <thread>
@@ -649,6 +650,30 @@ TEST(SharpCreases, StaysFollowedFindsACreaseLeftBehind)
   EXPECT_DOUBLE_EQ(b[0], 1.0);
   Vec3 c{ -1, 2, 0.5 }, d{ 2, 2, 0.5 };
   EXPECT_FALSE(tpc::ClipSegment(c, d, Box3{ { 0, 0, 0 }, { 1, 1, 1 } }));
+}
+
+TEST(VisitMarks, TheStampComingRoundForgetsEveryEarlierVisit)
+{
+  tpc::VisitMarks marks;
+  marks.Start(4);
+  EXPECT_TRUE(marks.First(2));
+  EXPECT_FALSE(marks.First(2));
+  EXPECT_TRUE(marks.Visited(2));
+  // The last stamp before it comes round: item 3 visited then...
+  marks.Current = std::numeric_limits<std::uint32_t>::max() - 1;
+  marks.Start(4);
+  EXPECT_TRUE(marks.First(3));
+  // ...then the search that would reuse stamp 0, which items 0 and 1 (never
+  // visited) still hold: none may look visited.
+  marks.Start(4);
+  for (std::uint32_t i = 0; i < 4; ++i)
+  {
+    EXPECT_FALSE(marks.Visited(i)) << i;
+  }
+  EXPECT_TRUE(marks.First(0));
+  EXPECT_TRUE(marks.First(1));
+  EXPECT_TRUE(marks.First(3));
+  EXPECT_FALSE(marks.First(0));
 }
 
 TEST(TriangleGrid, ListsEveryBoxThatOverlaps)
