@@ -4,6 +4,7 @@
 #include "ExactCellCriterion.h"
 #include "PieceTopology.h"
 #include "SelfIntersection.h"
+#include "TopologyGuarantee.h"
 #include "TriangleErrorBounds.h"
 
 #include <algorithm>
@@ -568,11 +569,9 @@ void DescribeUnresolvedCells(std::ostringstream& why, const SubdivisionResult& a
   }
 }
 
-/// TopologyGuaranteed, and the report: the guarantee holds when the inputs
-/// meet the paper's assumptions, every surface cell passed the tests, every
-/// cell's crossings closed into loops, the output is embedded (exact check),
-/// the pieces agreed, and the surface is closed, manifold and oriented (or
-/// empty). Says why, once, when it does not.
+/// TopologyGuaranteed, and the report: the conditions of
+/// TopologyGuarantee.h gathered over the pieces. Says why, once, when they
+/// do not all hold.
 void DecideGuarantee(ContourResult& r, const ContourParameters& p, double tolerance, const Run& run)
 {
   const SubdivisionResult all = SumSubdivision(r, run);
@@ -610,9 +609,16 @@ void DecideGuarantee(ContourResult& r, const ContourParameters& p, double tolera
   // and no collapse runs.)
   const bool outward = empty || run.Piece.Pieces > 1 || (r.OutwardChecked && r.Outward.Outward());
   report.Outward = outward;
-  report.Guaranteed = r.AssumptionsMet && all.UnresolvedCells == 0 && inconsistent == 0 && report.Embedded &&
-    withinTolerance && (run.Piece.Pieces == 1 || run.Collective()) &&
-    (empty || (whole.Closed && whole.Manifold && whole.Oriented)) && outward;
+  GuaranteeConditions conditions;
+  conditions.AssumptionsMet = r.AssumptionsMet;
+  conditions.EveryCellResolved = all.UnresolvedCells == 0;
+  conditions.LoopsConsistent = inconsistent == 0;
+  conditions.Embedded = report.Embedded;
+  conditions.WithinTolerance = withinTolerance;
+  conditions.WholeSurface = run.Piece.Pieces == 1 || run.Collective();
+  conditions.ClosedOrientedManifold = empty || (whole.Closed && whole.Manifold && whole.Oriented);
+  conditions.Outward = outward;
+  report.Guaranteed = TopologyGuaranteed(conditions);
   if (report.Guaranteed || (run.Collective() && run.Piece.Piece != 0)) // (one piece says it)
   {
     return;
@@ -652,6 +658,17 @@ void DecideGuarantee(ContourResult& r, const ContourParameters& p, double tolera
   if (inconsistent > 0)
   {
     why << " " << inconsistent << " cell(s) gave inconsistent loops.";
+  }
+  if (!conditions.ClosedOrientedManifold)
+  {
+    why << " the surface is not a closed, consistently oriented manifold (" << whole.BoundaryEdges
+        << " boundary edge(s), " << whole.NonManifoldEdges << " non-manifold edge(s), " << whole.NonManifoldVertices
+        << " non-manifold vertex(es)" << (whole.Oriented ? "" : ", inconsistently oriented") << ").";
+  }
+  if (!conditions.WholeSurface)
+  {
+    why << " this is piece " << run.Piece.Piece << " of " << run.Piece.Pieces
+        << " of a split run whose pieces do not agree through a controller: run them under MPI as one job.";
   }
   if (r.OutwardChecked && !r.Outward.Outward())
   {
