@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <utility>
 
 namespace tpc
@@ -36,6 +37,12 @@ struct Piece
   /// The target of the single-target bound (1), and that bound of g.
   std::uint32_t SingleTarget = SingleTargetWitness::None;
   double Single = HUGE_VAL;
+  /// g at its vertices where known (+inf where not yet): each is the
+  /// minimum over every target, whichever piece it was found in (Evaluate).
+  std::array<double, 3> Nearest{ HUGE_VAL, HUGE_VAL, HUGE_VAL };
+  /// The target each of those is attained at (None where not known).
+  std::array<std::uint32_t, 3> NearestTarget{ SingleTargetWitness::None, SingleTargetWitness::None,
+    SingleTargetWitness::None };
   bool operator<(const Piece& o) const { return this->Upper < o.Upper; }
 };
 
@@ -97,6 +104,101 @@ double CoveringRadius(const SourceTriangle& t)
 
 namespace
 {
+/// g at the corners of the sources evaluated so far in one branch and bound,
+/// with the target attaining it: the sources share corners (S_C's triangles
+/// a mesh vertex each with about six others, a fan its apex with all of its
+/// triangles), and g is a property of the point (Evaluate), so a corner is
+/// searched about once, and a source whose corners are all nearest to one
+/// target is often settled without a search (Evaluate). Armadillo at 1/64:
+/// 5.85 -> 5.66 G instructions, and the same surfaces and bounds on every
+/// scene compared (`run_benchmark.py --compare`); searching every new corner
+/// first, even against a fan's few triangles, cost more than it saved
+/// (5.75 G). Open addressing on the coordinates' bits, sized for every corner
+/// of every source, so never full; a corner whose slot another took first
+/// (an equal corner of the same piece, or a collision) is only searched
+/// again. NaN coordinates compare unequal to themselves: never found.
+class CornerDistances
+{
+public:
+  struct Slot
+  {
+    Vec3 Point;
+    double G = HUGE_VAL;
+    std::uint32_t Target = SingleTargetWitness::None;
+    std::uint32_t Stamp = 0; ///< the call it was filled in (else free)
+  };
+  /// Empty, with room for `corners` at most half full: the slots of earlier
+  /// calls are free by their stamp, not cleared (a call with few targets
+  /// settles its sources so fast that clearing a large table would cost more
+  /// than the searches it saves). The memory a large call took is given back
+  /// once calls are much smaller, as PolygonSet::Recycle does.
+  void Reset(std::size_t corners)
+  {
+    int bits = 4;
+    while ((std::size_t{ 1 } << bits) < 2 * corners)
+    {
+      ++bits;
+    }
+    const std::size_t size = std::size_t{ 1 } << bits;
+    if (this->Slots.capacity() > 16 * size + 4096)
+    {
+      std::vector<Slot>().swap(this->Slots);
+    }
+    if (this->Slots.size() < size)
+    {
+      this->Slots.resize(size);
+    }
+    this->Size = size;
+    this->Shift = 64 - bits;
+    if (++this->Current == 0) // (come round after 2^32 calls: cleared once)
+    {
+      for (Slot& slot : this->Slots)
+      {
+        slot.Stamp = 0;
+      }
+      this->Current = 1;
+    }
+  }
+  /// Fills `slot` (found free by At) for `p`.
+  void Fill(Slot& slot, const Vec3& p, double g, std::uint32_t target)
+  {
+    slot = { p, g, target, this->Current };
+  }
+  static bool Free(const Slot& slot, std::uint32_t current) { return slot.Stamp != current; }
+  bool IsFree(const Slot& slot) const { return Free(slot, this->Current); }
+  /// The slot of `p`: its entry, or the free slot it takes.
+  Slot& At(const Vec3& p)
+  {
+    std::uint64_t h = 0;
+    for (int a = 0; a < 3; ++a)
+    {
+      const double x = p[a];
+      std::uint64_t bits;
+      std::memcpy(&bits, &x, sizeof bits);
+      h = (h ^ bits) * 0x9E3779B97F4A7C15ull;
+    }
+    // The top bits: a multiplication carries every bit of the key up to
+    // them, while its low bits see only the keys' low bits - all zero for
+    // coordinates from floats, integers or k / 2^j (a box, a lattice), which
+    // would start every probe at a handful of slots.
+    const std::size_t mask = this->Size - 1;
+    for (std::size_t i = static_cast<std::size_t>(h >> this->Shift);; i = (i + 1) & mask)
+    {
+      Slot& slot = this->Slots[i];
+      if (this->IsFree(slot) || (slot.Point[0] == p[0] && slot.Point[1] == p[1] && slot.Point[2] == p[2]))
+      {
+        return slot;
+      }
+    }
+  }
+
+private:
+  std::vector<Slot> Slots; ///< the first Size in use
+  std::size_t Size = 0;
+  int Shift = 60;
+  std::uint32_t Current = 0;
+};
+
 /// What every piece of one branch and bound is evaluated against: the
 /// targets, their boxes side by side (the first loop reads only those), and
 /// the scratch reused across pieces.
@@ -108,6 +210,7 @@ struct Targets
   std::vector<std::pair<double, std::uint32_t>>& InReach;
   std::vector<std::uint32_t>& Arena;
   const std::vector<double>* Offsets; ///< per target; null for zeros
+  bool CommonNearestSettles; ///< Evaluate's shortcut allowed (no witnesses asked for)
   /// Target t's offset; the branch and bound without target offsets (the
   /// fan-to-surface direction, most of its work) is compiled with zeros.
   template <bool WithOffsets>
@@ -141,13 +244,47 @@ bool WithinOf(double distance2, double offset, double limit)
 /// first, then the others in any order, and a distance is computed only where
 /// it may lower a vertex's nearest distance or the single-target bound (box
 /// distances are lower bounds of distances), so both stay exact whatever the
-/// order. (`WithOffsets`: the targets have offsets; without, every offset
+/// order. A vertex whose g is known (piece.Nearest: found as a vertex of the
+/// parent, of a sibling, or of another source: CornerDistances) is not
+/// searched again: g is a property of the point, the minimum over every
+/// target - those left out of a piece's candidates are farther from all of
+/// its points than its parent's bound of g, hence never the nearest - so in
+/// exact arithmetic it is the value the search would find. (As computed, a
+/// comparison of a squared distance with (limit - offset)^2 may keep or drop
+/// a target an ulp from the limit depending on the order of the visits, so
+/// the value may differ by such an ulp: it is a computed distance to a
+/// target all the same, far inside the rounding slack - MeshCellError.h.)
+/// A split searches 3 new points instead of 12 (armadillo at 1/64, one
+/// thread: 5.92 -> 5.85 G instructions in all, the same surfaces and
+/// bounds). (`WithOffsets`: the targets have offsets; without, every offset
 /// is the constant 0.0, the same comparisons and sums bit for bit.) A piece
 /// whose bound is at most `settle` keeps no candidates: it is never split.
 template <bool WithOffsets>
 void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentUpperOfG, double settle,
   Targets& targets, double& lower)
 {
+  // Every corner known and nearest to one target t: the single-target bound
+  // (1) is then max_i g(v_i), attained at t, and nothing is below it (it
+  // is at least each g(v_i)) - what the search below finds, without it,
+  // where that settles the piece (no candidates to keep). Not where
+  // witnesses are asked for: among targets giving the same bound the
+  // search may name another.
+  if (targets.CommonNearestSettles)
+  {
+    const auto& near = piece.NearestTarget;
+    const double vertexMax = std::max({ piece.Nearest[0], piece.Nearest[1], piece.Nearest[2] });
+    if (near[0] != SingleTargetWitness::None && near[0] == near[1] && near[0] == near[2] &&
+      vertexMax + piece.Offset <= settle)
+    {
+      piece.UpperOfG = piece.Single = vertexMax;
+      piece.Upper = vertexMax + piece.Offset;
+      piece.SingleTarget = near[0];
+      lower = std::max(lower, vertexMax + piece.Offset);
+      piece.First = targets.Arena.size();
+      piece.Count = 0;
+      return;
+    }
+  }
   std::vector<std::pair<double, std::uint32_t>>& inReach = targets.InReach;
   std::vector<std::uint32_t>& arena = targets.Arena;
   // (Box distances are compared squared: no square root per target.)
@@ -163,7 +300,9 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
       inReach.emplace_back(d2, t);
     }
   }
-  double nearest[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL };
+  double nearest[3] = { piece.Nearest[0], piece.Nearest[1], piece.Nearest[2] };
+  const bool known[3] = { nearest[0] < HUGE_VAL, nearest[1] < HUGE_VAL, nearest[2] < HUGE_VAL };
+  std::array<std::uint32_t, 3> nearestTarget = piece.NearestTarget;
   double single = HUGE_VAL;
   std::uint32_t singleTarget = SingleTargetWitness::None;
   const auto largest = [&] { return std::max({ single, nearest[0], nearest[1], nearest[2] }); };
@@ -185,13 +324,17 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
     double farthest = 0.0;
     for (int i = 0; i < 3; ++i)
     {
-      const bool improvesNearest = CloserThan(boxDistance2Of[i], offset, nearest[i]);
+      const bool improvesNearest = !known[i] && CloserThan(boxDistance2Of[i], offset, nearest[i]);
       if (!improvesNearest && !improvesSingle)
       {
         continue;
       }
       const double d = targets.Polygons.Distance(piece.Vertices[i], t) + offset;
-      nearest[i] = std::min(nearest[i], d);
+      if (d < nearest[i])
+      {
+        nearest[i] = d;
+        nearestTarget[i] = t;
+      }
       farthest = std::max(farthest, d);
       improvesSingle = improvesSingle && farthest < single;
     }
@@ -245,7 +388,9 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
   for (int i = 0; i < 3; ++i)
   {
     vertexMax = std::max(vertexMax, nearest[i]);
+    piece.Nearest[i] = nearest[i];
   }
+  piece.NearestTarget = nearestTarget;
   const double upper = std::min(single, vertexMax + CoveringRadius(piece.Vertices)); // (of g)
   piece.UpperOfG = upper;
   piece.Upper = upper + piece.Offset;
@@ -295,7 +440,9 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
     arena[t] = t;
     boxes[t] = targets.Bounds(t);
   }
-  Targets context{ targets, boxes, inReach, arena, offsets.Targets };
+  Targets context{ targets, boxes, inReach, arena, offsets.Targets, witnesses == nullptr };
+  thread_local CornerDistances corners;
+  corners.Reset(3 * sources.size());
   const auto evaluate = offsets.Targets ? &Evaluate<true> : &Evaluate<false>;
   // Pieces at most `settle` are never split (the loop below stops before
   // the largest piece is one of them): they are kept out of the queue, their
@@ -317,7 +464,24 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
   for (std::size_t k = 0; k < sources.size(); ++k)
   {
     Piece piece{ sources[k], 0, 0, HUGE_VAL, HUGE_VAL, offsets.Sources ? (*offsets.Sources)[k] : 0.0 };
+    std::array<CornerDistances::Slot*, 3> slots;
+    for (int i = 0; i < 3; ++i)
+    {
+      slots[i] = &corners.At(piece.Vertices[i]);
+      const bool known = !corners.IsFree(*slots[i]);
+      piece.Nearest[i] = known ? slots[i]->G : HUGE_VAL;
+      piece.NearestTarget[i] = known ? slots[i]->Target : SingleTargetWitness::None;
+    }
     evaluate(piece, 0, targets.size(), HUGE_VAL, settle, context, estimate.Lower);
+    for (int i = 0; i < 3; ++i)
+    {
+      // (Where two corners of the piece found the same free slot - equal, or
+      // colliding - the first fills it and the second is searched again.)
+      if (piece.Nearest[i] < HUGE_VAL && corners.IsFree(*slots[i]))
+      {
+        corners.Fill(*slots[i], piece.Vertices[i], piece.Nearest[i], piece.NearestTarget[i]);
+      }
+    }
     if (witnesses && piece.Single + piece.Offset <= settle)
     {
       (*witnesses)[k] = { piece.SingleTarget, piece.Single + piece.Offset };
@@ -339,12 +503,27 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
     queue.pop_back();
     const SourceTriangle& v = parent.Vertices;
     const Vec3 m01 = (v[0] + v[1]) * 0.5, m12 = (v[1] + v[2]) * 0.5, m20 = (v[2] + v[0]) * 0.5;
-    for (const SourceTriangle& child :
-      { SourceTriangle{ v[0], m01, m20 }, SourceTriangle{ m01, v[1], m12 }, SourceTriangle{ m20, m12, v[2] },
-        SourceTriangle{ m01, m12, m20 } })
+    // g at the six points (the parent's corners known, the midpoints found
+    // by the first child holding each), and each child's corners among them.
+    std::array<double, 6> g{ parent.Nearest[0], parent.Nearest[1], parent.Nearest[2], HUGE_VAL, HUGE_VAL, HUGE_VAL };
+    std::array<std::uint32_t, 6> nearestTarget{ parent.NearestTarget[0], parent.NearestTarget[1],
+      parent.NearestTarget[2], SingleTargetWitness::None, SingleTargetWitness::None, SingleTargetWitness::None };
+    constexpr int C0 = 0, C1 = 1, C2 = 2, M01 = 3, M12 = 4, M20 = 5;
+    static constexpr std::array<std::array<int, 3>, 4> Children{ { { C0, M01, M20 }, { M01, C1, M12 },
+      { M20, M12, C2 }, { M01, M12, M20 } } };
+    const std::array<Vec3, 6> point{ v[0], v[1], v[2], m01, m12, m20 };
+    for (const std::array<int, 3>& child : Children)
     {
-      Piece piece{ child, 0, 0, HUGE_VAL, HUGE_VAL, parent.Offset };
+      Piece piece{ { point[child[0]], point[child[1]], point[child[2]] }, 0, 0, HUGE_VAL, HUGE_VAL,
+        parent.Offset };
+      piece.Nearest = { g[child[0]], g[child[1]], g[child[2]] };
+      piece.NearestTarget = { nearestTarget[child[0]], nearestTarget[child[1]], nearestTarget[child[2]] };
       evaluate(piece, parent.First, parent.Count, parent.UpperOfG, settle, context, estimate.Lower);
+      for (int i = 0; i < 3; ++i)
+      {
+        g[child[i]] = piece.Nearest[i];
+        nearestTarget[child[i]] = piece.NearestTarget[i];
+      }
       // (The child lies in its parent.)
       piece.UpperOfG = std::min(piece.UpperOfG, parent.UpperOfG);
       piece.Upper = std::min(piece.Upper, parent.Upper);
