@@ -1,6 +1,7 @@
 #include "ConvexPolygons.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <utility>
 
@@ -27,21 +28,77 @@ void PolygonSet::Recycle(std::size_t polygons)
   this->clear();
 }
 
+namespace
+{
+/// Whether the distance may measure the polygon by its plane - the plane
+/// distance inside its prism, the edges' outside - rather than by its edges
+/// alone, within the rounding slack the certificates add (MeshCellError.h:
+/// Rounding). The argument, with u the unit roundoff (eps / 2), m corners,
+/// the Newell vector N taken about corners[0] from the differences e_i =
+/// corners[i] - corners[0] (each within u of itself per component), L the
+/// largest |e_i| and M the largest coordinate of a corner:
+/// - each component of a cross product e_i x e_i+1 is within 5 u L^2 of the
+///   exact one's (two products, a subtraction, the inputs' own rounding),
+///   and with the m - 3 additions of terms at most L^2 each, the computed N
+///   is within dN = 2 m^2 eps L^2 of the exact one (generously). Where
+///   |N| <= 2 dN the corners may be collinear - a triangle clipped to a cell
+///   it only touches along an edge, a degenerate triangle - and the plane is
+///   rounding noise (with N from absolute coordinates, whose cross products
+///   need not cancel, a segment got a "plane" through its line, and a point
+///   on that line far beyond its ends measured 0 from it).
+/// - Else the computed normal is within an angle 2 dN / |N| of the exact
+///   one, and the plane distance |(p - c_0) . n| of a point whose projection
+///   lies in the polygon (in-plane offset at most L) is off by at most
+///   L 2 dN / |N| = 4 m^2 eps L^3 / |N| (plus a second-order term in the
+///   distance): at most 1024 eps M, a quarter of RoundingSlack's 4096 ulps
+///   of the mesh's largest coordinate, where |N| >= m^2 L^3 / (256 M). (From
+///   absolute coordinates the error grew as M^2 / |N|: a small polygon far
+///   from the origin was measured off by more than the slack.)
+/// - A polygon failing either is measured by its edges: never less than its
+///   distance, and more by at most its width, 2 |N| / L < m^2 L^2 / (128 M)
+///   - a thousandth of L for a cell's triangle, L = M / 64 - which keeps
+///   every upper bound (only the attained Lower may exceed a distance by
+///   as much).
+bool MeasuredByItsPlane(double twiceArea, double reach2, double magnitude, std::size_t m)
+{
+  const double mm = static_cast<double>(m) * static_cast<double>(m);
+  return m >= 3 && twiceArea > 4.0 * mm * DBL_EPSILON * reach2 &&
+    256.0 * magnitude * twiceArea >= mm * reach2 * std::sqrt(reach2);
+}
+} // namespace
+
 void PolygonSet::Add(const Vec3* corners, std::size_t m)
 {
   Header h;
   h.First = static_cast<std::uint32_t>(this->Corners.size());
   h.Count = static_cast<std::uint32_t>(m);
+  // The Newell vector about the first corner (header: MeasuredByItsPlane).
   Vec3 normal;
+  double reach2 = 0.0, magnitude = 0.0;
   for (std::size_t i = 0; i < m; ++i)
   {
-    normal += Cross(corners[i], corners[(i + 1) % m]);
+    for (int a = 0; a < 3; ++a)
+    {
+      magnitude = std::max(magnitude, std::fabs(corners[i][a]));
+    }
+  }
+  if (m >= 2)
+  {
+    Vec3 previous = corners[1] - corners[0];
+    reach2 = Dot(previous, previous);
+    for (std::size_t i = 2; i < m; ++i)
+    {
+      const Vec3 e = corners[i] - corners[0];
+      reach2 = std::max(reach2, Dot(e, e));
+      normal += Cross(previous, e);
+      previous = e;
+    }
   }
   const double length = Norm(normal);
   h.Normal = length > 0.0 ? normal * (1.0 / length) : Vec3();
   h.TwiceArea = length;
   h.Bounds = m ? BoundsOf(corners, m) : Box3{};
-  h.HasInward = m >= 3 && length > 0.0;
+  h.HasInward = MeasuredByItsPlane(length, reach2, magnitude, m);
   this->Corners.insert(this->Corners.end(), corners, corners + m);
   for (std::size_t i = 0; i < m; ++i)
   {

@@ -120,11 +120,13 @@ struct PointSpan
 struct ConvexPolygon
 {
   PointSpan Points;
-  Vec3 Normal; ///< unit, from the vertex order (Newell); zero when degenerate
+  Vec3 Normal; ///< unit, from the vertex order (Newell, about the first corner); zero when degenerate
   double TwiceArea = 0.0; ///< the Newell vector's length
   Box3 Bounds;
   /// Normal x (edge from Points[i] to Points[i + 1]): points into the polygon
-  /// within its plane (empty when degenerate).
+  /// within its plane (empty where the polygon is measured by its edges:
+  /// collinear corners, or a plane not known within the rounding slack,
+  /// ConvexPolygons.cxx: MeasuredByItsPlane).
   PointSpan Inward;
 };
 
@@ -199,7 +201,7 @@ private:
   };
   std::vector<Header> Headers;
   std::vector<Vec3> Corners;
-  std::vector<Vec3> Inward; ///< parallel to Corners (zeros for a degenerate polygon)
+  std::vector<Vec3> Inward; ///< parallel to Corners (zeros for a polygon measured by its edges)
 };
 
 inline ConvexPolygon PolygonSet::operator[](std::size_t i) const

@@ -395,6 +395,81 @@ TEST(PolygonHausdorff, BoundsTheSampledDistanceAndStaysCloseToIt)
   EXPECT_LT(giveUp, 1.1 * proven.Lower); // (within the 10 % that used to stop it)
 }
 
+TEST(PolygonHausdorff, SharedCornersOnALatticeBoundAsEachSearchWould)
+{
+  // Sources sharing their corners, on lattice coordinates (integers scaled by
+  // 2^-4: the corners' low bits all zero), over the bumps: every corner is
+  // searched about once (PolygonHausdorff.cxx, CornerDistances), and sources
+  // whose corners share their nearest target settle without a search. The
+  // bounds must hold against the sampled distance, and be the same with
+  // witnesses asked for (which turns the settling without a search off).
+  std::vector<SourceTriangle> bumps, fan;
+  BumpsUnderAFan(12, bumps, fan);
+  std::vector<SourceTriangle> lattice;
+  for (int i = 0; i < 16; ++i)
+  {
+    for (int j = 0; j < 16; ++j)
+    {
+      const Vec3 a(i / 16.0, j / 16.0, 0.0625), b((i + 1) / 16.0, j / 16.0, 0.0625),
+        c((i + 1) / 16.0, (j + 1) / 16.0, 0.0625), d(i / 16.0, (j + 1) / 16.0, 0.0625);
+      lattice.push_back({ a, b, c });
+      lattice.push_back({ a, c, d });
+    }
+  }
+  const double sampled = SampledHausdorff(lattice, bumps);
+  for (const double enough : { 0.0, 0.2 })
+  {
+    std::vector<tpc::SingleTargetWitness> witnesses;
+    const tpc::HausdorffEstimate plain = tpc::OneSidedHausdorff(lattice, AsPolygons(bumps), enough, HUGE_VAL, 200000);
+    const tpc::HausdorffEstimate witnessed =
+      tpc::OneSidedHausdorff(lattice, AsPolygons(bumps), enough, HUGE_VAL, 200000, {}, &witnesses);
+    EXPECT_GE(plain.Upper, sampled * (1 - 1e-12)) << enough;
+    EXPECT_LE(plain.Lower, sampled * (1 + 1e-12)) << enough;
+    EXPECT_EQ(plain.Upper, witnessed.Upper) << enough;
+    EXPECT_EQ(plain.Lower, witnessed.Lower) << enough;
+  }
+  // The other way, the bumps' many small triangles sharing corners over the
+  // lattice's few large ones: most settle at once.
+  const double back = SampledHausdorff(bumps, lattice);
+  const tpc::HausdorffEstimate e = tpc::OneSidedHausdorff(bumps, AsPolygons(lattice), 0.0, HUGE_VAL, 200000);
+  EXPECT_GE(e.Upper, back * (1 - 1e-12));
+  EXPECT_LE(e.Lower, back * (1 + 1e-12));
+  EXPECT_LE(e.Upper, 1.1 * e.Lower * (1 + 1e-12));
+}
+
+TEST(ConvexPolygons, CollinearCornersAreMeasuredAsASegment)
+{
+  // Three collinear corners whose coordinates are not binary fractions: the
+  // Newell vector from absolute coordinates is rounding noise, and the
+  // distance once took its "plane" for the polygon's: 0 for points on the
+  // line far beyond the segment (PolygonSet::Add, MeasuredByItsPlane).
+  tpc::PolygonSet s;
+  s.Add({ Vec3(0.75, 0.25, -0.25), Vec3(0.75, 0.25, -0.15), Vec3(0.75, 0.25, -0.5) });
+  s.Add({ Vec3(0.1, 0.2, 0.3), Vec3(0.2, 0.4, 0.6), Vec3(0.3, 0.6, 0.9) });
+  EXPECT_DOUBLE_EQ(s.Distance(Vec3(0.75, 0.25, -10), 0), 9.5);
+  EXPECT_DOUBLE_EQ(s.Distance(Vec3(1, 2, 3), 1), Norm(Vec3(0.7, 1.4, 2.1)));
+  // A triangle that spans a plane keeps measuring its inside by it; a
+  // sliver as long as the coordinates are large, 1 : 250, by its edges -
+  // more than its distance, by less than its width.
+  s.Add({ Vec3(0.1, 0.2, 0.3), Vec3(0.2, 0.4, 0.6), Vec3(0.4, 0.1, 0.2) });
+  const Vec3 above = (Vec3(0.1, 0.2, 0.3) + Vec3(0.2, 0.4, 0.6) + Vec3(0.4, 0.1, 0.2)) * (1.0 / 3.0) + s[2].Normal * 0.01;
+  EXPECT_NEAR(s.Distance(above, 2), 0.01, 1e-12);
+  s.Add({ Vec3(0.1, 0.2, 0.3), Vec3(0.2, 0.4, 0.6), Vec3(0.3, 0.6, 0.91) });
+  const Vec3 overSliver =
+    (Vec3(0.1, 0.2, 0.3) + Vec3(0.2, 0.4, 0.6) + Vec3(0.3, 0.6, 0.91)) * (1.0 / 3.0) + s[3].Normal * 0.01;
+  const double width = s[3].TwiceArea / Norm(Vec3(0.2, 0.4, 0.61));
+  EXPECT_GE(s.Distance(overSliver, 3), 0.01 * (1 - 1e-12));
+  EXPECT_LE(s.Distance(overSliver, 3), 0.01 + width);
+  // The branch and bound with the segment as the only target: no point of a
+  // source far along its line is near it.
+  tpc::PolygonSet segment;
+  segment.Add({ Vec3(0.75, 0.25, -0.25), Vec3(0.75, 0.25, -0.15), Vec3(0.75, 0.25, -0.5) });
+  const SourceTriangle far{ Vec3(0.75, 0.25, -6), Vec3(0.75, 0.25, -7), Vec3(0.75, 0.26, -6.5) };
+  const tpc::HausdorffEstimate e = tpc::OneSidedHausdorff({ far }, segment, 0.0, HUGE_VAL, 100000);
+  EXPECT_GE(e.Upper, 6.5 * (1 - 1e-12));
+  EXPECT_GE(e.Lower, 5.5 * (1 - 1e-12));
+}
+
 TEST(PolygonHausdorff, OffsetsBoundTheSampledOffsetDistance)
 {
   // The per-chord bound's branch and bound (MeshCellError.h): with an offset
