@@ -36,34 +36,40 @@ namespace
 /// Rounding). The argument, with u the unit roundoff (eps / 2), m corners,
 /// the Newell vector N taken about corners[0] from the differences e_i =
 /// corners[i] - corners[0] (each within u of itself per component), L the
-/// largest |e_i| and M the largest coordinate of a corner:
-/// - each component of a cross product e_i x e_i+1 is within 5 u L^2 of the
-///   exact one's (two products, a subtraction, the inputs' own rounding),
-///   and with the m - 3 additions of terms at most L^2 each, the computed N
-///   is within dN = 2 m^2 eps L^2 of the exact one (generously). Where
-///   |N| <= 2 dN the corners may be collinear - a triangle clipped to a cell
-///   it only touches along an edge, a degenerate triangle - and the plane is
-///   rounding noise (with N from absolute coordinates, whose cross products
-///   need not cancel, a segment got a "plane" through its line, and a point
-///   on that line far beyond its ends measured 0 from it).
-/// - Else the computed normal is within an angle 2 dN / |N| of the exact
-///   one, and the plane distance |(p - c_0) . n| of a point whose projection
-///   lies in the polygon (in-plane offset at most L) is off by at most
-///   L 2 dN / |N| = 4 m^2 eps L^3 / |N| (plus a second-order term in the
-///   distance): at most 1024 eps M, a quarter of RoundingSlack's 4096 ulps
-///   of the mesh's largest coordinate, where |N| >= m^2 L^3 / (256 M). (From
-///   absolute coordinates the error grew as M^2 / |N|: a small polygon far
-///   from the origin was measured off by more than the slack.)
-/// - A polygon failing either is measured by its edges: never less than its
-///   distance, and more by at most its width, 2 |N| / L < m^2 L^2 / (128 M)
-///   - a thousandth of L for a cell's triangle, L = M / 64 - which keeps
-///   every upper bound (only the attained Lower may exceed a distance by
-///   as much).
+/// largest |e_i| and M the largest coordinate the slack is taken of:
+/// - each cross product e_i x e_i+1 is within 4 sqrt(2) u L^2 of the exact
+///   one (two products, a subtraction, the inputs' own rounding), and the
+///   m - 3 additions add at most u m^2 L^2 / 2: the computed N is within
+///   dN = (3 m + m^2 / 4) eps L^2 of the exact Newell vector of the stored
+///   corners. Where |N| <= 2 dN the corners may be collinear - a triangle
+///   clipped to a cell that it only touches along an edge, a degenerate
+///   triangle - and the plane is rounding noise (with N from absolute
+///   coordinates, whose cross products need not cancel, a segment got a
+///   "plane" through its line, and a point on that line far beyond its ends
+///   measured 0 from it).
+/// - Else the computed normal is within an angle theta <= 2 dN / |N| of the
+///   exact one, and for any point p passing the prism test with it the plane
+///   distance is at least the true distance minus theta L, whatever p's
+///   distance (p's computed plane distance is h / cos(theta) + sin(theta)
+///   (q . t) for a point q of the polygon, |q - c_0| <= L, and the true one at
+///   most h / cos(theta)): at most 2 dN L / |N| below, which is at most
+///   1024 eps M - a quarter of RoundingSlack's 4096 ulps of M - where
+///   |N| >= (3 m + m^2 / 4) L^3 / (512 M). (From absolute coordinates the
+///   error grew as M^2 / |N|: a small polygon far from the origin was
+///   measured off by more than the slack.)
+/// - A polygon failing either is measured by its edges: the distance to its
+///   boundary, never less than its distance and more by at most its
+///   inradius, at most |N| / (2 L): for a triangle as long as a cell (L
+///   about M / 64) only slivers thinner than about 1 : 3000 are.
+/// - An N whose length overflows (coordinates beyond 1e77) or whose square
+///   would be subnormal is not trusted either (its "unit" normal would be
+///   zero, or not of unit length).
 bool MeasuredByItsPlane(double twiceArea, double reach2, double magnitude, std::size_t m)
 {
-  const double mm = static_cast<double>(m) * static_cast<double>(m);
-  return m >= 3 && twiceArea > 4.0 * mm * DBL_EPSILON * reach2 &&
-    256.0 * magnitude * twiceArea >= mm * reach2 * std::sqrt(reach2);
+  const double dm = static_cast<double>(m);
+  const double share = 3.0 * dm + 0.25 * dm * dm;
+  return m >= 3 && std::isfinite(twiceArea) && twiceArea > 1e-150 &&
+    twiceArea > 2.0 * share * DBL_EPSILON * reach2 && 512.0 * magnitude * twiceArea >= share * reach2 * std::sqrt(reach2);
 }
 } // namespace
 
@@ -98,7 +104,7 @@ void PolygonSet::Add(const Vec3* corners, std::size_t m)
   h.Normal = length > 0.0 ? normal * (1.0 / length) : Vec3();
   h.TwiceArea = length;
   h.Bounds = m ? BoundsOf(corners, m) : Box3{};
-  h.HasInward = MeasuredByItsPlane(length, reach2, magnitude, m);
+  h.HasInward = MeasuredByItsPlane(length, reach2, std::max(magnitude, this->SlackMagnitude), m);
   this->Corners.insert(this->Corners.end(), corners, corners + m);
   for (std::size_t i = 0; i < m; ++i)
   {

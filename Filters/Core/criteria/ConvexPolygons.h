@@ -152,6 +152,14 @@ public:
   /// its normal, area, box and edges' inward normals.
   void Add(const Vec3* corners, std::size_t count);
   void Add(std::initializer_list<Vec3> corners) { this->Add(corners.begin(), corners.size()); }
+  /// The largest coordinate M the caller's rounding slack is taken of
+  /// (MeshCellError.h: Rounding) - the polygons added after are measured by
+  /// their planes wherever that is within a quarter of the slack
+  /// (ConvexPolygons.cxx, MeasuredByItsPlane). Without it (0, and after
+  /// Recycle frees the memory) each polygon's own largest coordinate stands
+  /// in: never larger, so the test is only stricter.
+  void SetSlackMagnitude(double magnitude) { this->SlackMagnitude = magnitude; }
+  double GetSlackMagnitude() const { return this->SlackMagnitude; }
 
   std::size_t size() const { return this->Headers.size(); }
   bool empty() const { return this->Headers.empty(); }
@@ -202,6 +210,7 @@ private:
   std::vector<Header> Headers;
   std::vector<Vec3> Corners;
   std::vector<Vec3> Inward; ///< parallel to Corners (zeros for a polygon measured by its edges)
+  double SlackMagnitude = 0.0;
 };
 
 inline ConvexPolygon PolygonSet::operator[](std::size_t i) const

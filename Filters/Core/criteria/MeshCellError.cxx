@@ -138,6 +138,7 @@ void SurfaceInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Bo
 {
   const MeshSolid& mesh = primitives.Meshes[leaf.Primitive];
   surface.Recycle(leaf.Triangles->size());
+  surface.SetSlackMagnitude(SlackMagnitude(leaf, primitives, cell));
   // (Most triangles of a cell lie in it whole: three corners each.)
   surface.reserve(leaf.Triangles->size(), 3 * leaf.Triangles->size());
   for (const std::uint32_t t : *leaf.Triangles)
@@ -211,10 +212,14 @@ double ChordDeviation(const PolygonSet& surface, const Box3& tile, const Vec3& a
   return deviation;
 }
 
+double SlackMagnitude(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell)
+{
+  return std::max(primitives.Meshes[leaf.Primitive].Bounds().Magnitude(), cell.Magnitude());
+}
+
 double RoundingSlack(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell)
 {
-  const double magnitude = std::max(primitives.Meshes[leaf.Primitive].Bounds().Magnitude(), cell.Magnitude());
-  return 4096.0 * DBL_EPSILON * magnitude + 1e-12 * cell.Diagonal();
+  return 4096.0 * DBL_EPSILON * SlackMagnitude(leaf, primitives, cell) + 1e-12 * cell.Diagonal();
 }
 
 HausdorffEstimate CertifiedMeshPatchError(const PolygonSet& surface,
@@ -239,6 +244,7 @@ HausdorffEstimate CertifiedMeshPatchError(const PolygonSet& surface,
     AppendAsSources(q.Points.begin(), q.Points.size(), pieces);
   }
   PolygonSet targets;
+  targets.SetSlackMagnitude(surface.GetSlackMagnitude()); // (the patch lies in the same cell)
   targets.reserve(patch.size(), 3 * patch.size());
   for (const SourceTriangle& t : patch)
   {

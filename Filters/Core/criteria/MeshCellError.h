@@ -294,8 +294,10 @@ HausdorffEstimate CertifiedMeshPatchError(const PolygonSet& surface,
   const std::vector<SourceTriangle>& patch, double slack, double enough, double giveUp,
   std::size_t budget = 4096, const std::vector<double>* patchOffsets = nullptr);
 
-/// The slack for rounding in a cell of the mesh of `leaf` (header: Rounding).
+/// The slack for rounding in a cell of the mesh of `leaf` (header: Rounding),
+/// and the largest coordinate M it is taken of.
 double RoundingSlack(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell);
+double SlackMagnitude(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell);
 
 /// The fan around `apex` over `loop`: triangles (p_k, p_k+1, apex).
 std::vector<SourceTriangle> ApexFan(const std::vector<Vec3>& loop, const Vec3& apex);
