@@ -659,7 +659,7 @@ void DecideGuarantee(ContourResult& r, const ContourParameters& p, double tolera
   {
     why << " " << inconsistent << " cell(s) gave inconsistent loops.";
   }
-  if (!conditions.ClosedOrientedManifold)
+  if (!conditions.ClosedOrientedManifold && conditions.WholeSurface) // (a lone piece is open along its seams)
   {
     why << " the surface is not a closed, consistently oriented manifold (" << whole.BoundaryEdges
         << " boundary edge(s), " << whole.NonManifoldEdges << " non-manifold edge(s), " << whole.NonManifoldVertices
