@@ -219,7 +219,7 @@ double SlackMagnitude(const CsgLeaf& leaf, const PrimitiveSet& primitives, const
 
 double RoundingSlack(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell)
 {
-  return 4096.0 * DBL_EPSILON * SlackMagnitude(leaf, primitives, cell) + 1e-12 * cell.Diagonal();
+  return 16384.0 * DBL_EPSILON * SlackMagnitude(leaf, primitives, cell) + 1e-12 * cell.Diagonal();
 }
 
 HausdorffEstimate CertifiedMeshPatchError(const PolygonSet& surface,

@@ -205,10 +205,11 @@
 // floating point from the mesh's coordinates (clipped points interpolate
 // vertices that may lie far outside the cell): each is within a few hundred
 // units in the last place of the mesh's largest coordinate M - a distance
-// measured by a polygon's plane within 1024 of them, the polygon measured
+// measured by a polygon's plane within 4096 of them, the polygon measured
 // by its edges where that is not proven (ConvexPolygons.cxx,
-// MeasuredByItsPlane); RoundingSlack (4096 ulps of M, plus 1e-12 of the
-// cell's diagonal) is added to E(P), to delta and to the final certificate.
+// MeasuredByItsPlane); RoundingSlack (16384 ulps of M, plus 1e-12 of the
+// cell's diagonal; 4096 ulps until the plane's share was proven) is added
+// to E(P), to delta and to the final certificate.
 #pragma once
 
 #include "AdaptiveOctree.h"

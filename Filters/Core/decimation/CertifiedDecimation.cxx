@@ -122,7 +122,7 @@ private:
 /// slack as the cells' certificates (MeshCellError.cxx, RoundingSlack).
 double RoundingSlack(const Box3& box)
 {
-  return 4096.0 * DBL_EPSILON * box.Magnitude() + 1e-12 * box.Diagonal();
+  return 16384.0 * DBL_EPSILON * box.Magnitude() + 1e-12 * box.Diagonal();
 }
 
 Decimator::Decimator(TriangleMesh& mesh, std::vector<double>& bounds, ReleasableArray<std::int32_t>& labels,
@@ -135,7 +135,7 @@ Decimator::Decimator(TriangleMesh& mesh, std::vector<double>& bounds, Releasable
   , Live(mesh, labels, parameters.FeatureAngle, BucketWidth(PointsBox(mesh.Points), parameters.Tolerance))
   , Stamp(mesh.Points.size(), 0)
   , Error(this->Live, bounds, this->Parameters, surface, PointsBox(mesh.Points).lo,
-      BucketWidth(PointsBox(mesh.Points), parameters.Tolerance), this->Slack)
+      BucketWidth(PointsBox(mesh.Points), parameters.Tolerance), this->Slack, PointsBox(mesh.Points).Magnitude())
   , Creases(surface.Mesh ? SharpCreaseRule(*surface.Mesh, PointsBox(mesh.Points).lo,
                              BucketWidth(PointsBox(mesh.Points), parameters.Tolerance))
                          : SharpCreaseRule(PointsBox(mesh.Points).lo, 1.0))

@@ -10,13 +10,14 @@ namespace tpc
 
 ErrorCertificates::ErrorCertificates(const LiveSurface& live, const std::vector<double>& bounds,
   const DecimationParameters& parameters, const ExactMesh& surface, const Vec3& origin, double bucketWidth,
-  double slack)
+  double slack, double slackMagnitude)
   : Live(live)
   , Bounds(bounds)
   , Parameters(parameters)
   , Surface(surface)
   , SurfaceGrid(origin, bucketWidth)
   , Slack(slack)
+  , SlackMagnitude(slackMagnitude)
 {
   if (surface.Mesh)
   {
@@ -104,6 +105,8 @@ double ErrorCertificates::AgainstMesh(Collapse& c, CertificateMarks& marks) cons
   // again - at 1/128, 155 of 1 039 certificates ran out, 71 % of the pieces
   // evaluated, 3.4 s; one budget each, 0.75 s, 164 -> 162 triangles.)
   PolygonSet madeSet, nearMade;
+  madeSet.SetSlackMagnitude(this->SlackMagnitude);
+  nearMade.SetSlackMagnitude(this->SlackMagnitude);
   this->NearSurface(GrownBy(BoxOf(this->Live.P, c.Made), tolerance), nearMade, marks.Surface);
   double toSurface = 0.0;
   for (const Triangle& t : c.Made)
@@ -152,6 +155,8 @@ double ErrorCertificates::ThroughBounds(const Collapse& c) const
   std::vector<SourceTriangle> before, after;
   std::vector<double> offsets;
   PolygonSet beforeSet, afterSet;
+  beforeSet.SetSlackMagnitude(this->SlackMagnitude);
+  afterSet.SetSlackMagnitude(this->SlackMagnitude);
   double largest = 0.0;
   for (const std::vector<std::uint32_t>* part : { &c.Vanishing, &c.Kept })
   {

@@ -28,10 +28,12 @@ class ErrorCertificates
 public:
   /// `live`, `bounds` (e_t per triangle) and `parameters` are read as they
   /// are when Certify runs; `surface` is S where known. S's triangles are
-  /// listed in a grid of buckets `bucketWidth` wide from `origin`.
+  /// listed in a grid of buckets `bucketWidth` wide from `origin`. `slack`
+  /// covers the rounding of the distances, taken of coordinates up to
+  /// `slackMagnitude` (PolygonSet::SetSlackMagnitude).
   ErrorCertificates(const LiveSurface& live, const std::vector<double>& bounds,
     const DecimationParameters& parameters, const ExactMesh& surface, const Vec3& origin, double bucketWidth,
-    double slack);
+    double slack, double slackMagnitude);
 
   /// The bound of c's made triangles (rounding slack included), or +inf
   /// when it is not certified within the tolerance. Against the mesh it
@@ -62,6 +64,7 @@ private:
   /// or None.
   std::vector<std::uint32_t> Witness;
   double Slack;
+  double SlackMagnitude;
 };
 
 } // namespace tpc

@@ -462,14 +462,14 @@ TEST(ConvexPolygons, CollinearCornersAreMeasuredAsASegment)
   EXPECT_GE(s.Distance(overSliver, 3), 0.01 * (1 - 1e-12));
   EXPECT_LE(s.Distance(overSliver, 3), 0.01 + width);
   // A thin triangle about the origin (its own coordinates as small as it is
-  // long) keeps its plane: within a quarter of the slack's 4096 ulps.
+  // long) keeps its plane: within a quarter of the slack's 16384 ulps.
   s.Add({ Vec3(-1, 0, 0), Vec3(1, 0, 0), Vec3(0, 0.1, 0) });
-  EXPECT_NEAR(s.Distance(Vec3(0, 0.05, 0.001), 4), 0.001, 1024 * DBL_EPSILON);
+  EXPECT_NEAR(s.Distance(Vec3(0, 0.05, 0.001), 4), 0.001, 4096 * DBL_EPSILON);
   // Measured against a larger slack's coordinate, a thinner one keeps it too.
   tpc::PolygonSet wide;
   wide.SetSlackMagnitude(100.0);
-  wide.Add({ Vec3(-1, 0, 0), Vec3(1, 0, 0), Vec3(0, 0.002, 0) });
-  EXPECT_NEAR(wide.Distance(Vec3(0, 0.001, 0.0001), 0), 0.0001, 4096 * DBL_EPSILON * 100.0);
+  wide.Add({ Vec3(-1, 0, 0), Vec3(1, 0, 0), Vec3(0, 0.0005, 0) });
+  EXPECT_NEAR(wide.Distance(Vec3(0, 0.00025, 0.0001), 0), 0.0001, 4096 * DBL_EPSILON * 100.0);
   // The branch and bound with the segment as the only target: no point of a
   // source far along its line is near it.
   tpc::PolygonSet segment;
