@@ -83,14 +83,7 @@ void PolygonSet::Add(const Vec3* corners, std::size_t m)
   h.Count = static_cast<std::uint32_t>(m);
   // The Newell vector about the first corner (header: MeasuredByItsPlane).
   Vec3 normal;
-  double reach2 = 0.0, magnitude = 0.0;
-  for (std::size_t i = 0; i < m; ++i)
-  {
-    for (int a = 0; a < 3; ++a)
-    {
-      magnitude = std::max(magnitude, std::fabs(corners[i][a]));
-    }
-  }
+  double reach2 = 0.0;
   if (m >= 2)
   {
     Vec3 previous = corners[1] - corners[0];
@@ -107,7 +100,8 @@ void PolygonSet::Add(const Vec3* corners, std::size_t m)
   h.Normal = length > 0.0 ? normal * (1.0 / length) : Vec3();
   h.TwiceArea = length;
   h.Bounds = m ? BoundsOf(corners, m) : Box3{};
-  h.HasInward = MeasuredByItsPlane(length, reach2, std::max(magnitude, this->SlackMagnitude), m);
+  // (The box's magnitude is the corners' largest coordinate.)
+  h.HasInward = MeasuredByItsPlane(length, reach2, std::max(h.Bounds.Magnitude(), this->SlackMagnitude), m);
   this->Corners.insert(this->Corners.end(), corners, corners + m);
   for (std::size_t i = 0; i < m; ++i)
   {

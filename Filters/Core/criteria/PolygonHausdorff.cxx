@@ -164,8 +164,7 @@ public:
   {
     slot = { p, g, target, this->Current };
   }
-  static bool Free(const Slot& slot, std::uint32_t current) { return slot.Stamp != current; }
-  bool IsFree(const Slot& slot) const { return Free(slot, this->Current); }
+  bool IsFree(const Slot& slot) const { return slot.Stamp != this->Current; }
   /// The slot of `p`: its entry, or the free slot it takes.
   Slot& At(const Vec3& p)
   {

@@ -107,6 +107,7 @@ private:
   std::vector<double>& Bounds;
   ReleasableArray<std::int32_t>& Labels;
   DecimationParameters Parameters;
+  Box3 Extent; ///< the surface's points' box: the grids' origin and width, the slack's scale
   double Slack;
   LiveSurface Live;
   /// Bumped when a vertex's star changes: older candidates are stale.
@@ -131,14 +132,15 @@ Decimator::Decimator(TriangleMesh& mesh, std::vector<double>& bounds, Releasable
   , Bounds(bounds)
   , Labels(labels)
   , Parameters(parameters)
-  , Slack(RoundingSlack(PointsBox(mesh.Points)))
-  , Live(mesh, labels, parameters.FeatureAngle, BucketWidth(PointsBox(mesh.Points), parameters.Tolerance))
+  , Extent(PointsBox(mesh.Points))
+  , Slack(RoundingSlack(this->Extent))
+  , Live(mesh, labels, parameters.FeatureAngle, BucketWidth(this->Extent, parameters.Tolerance))
   , Stamp(mesh.Points.size(), 0)
-  , Error(this->Live, bounds, this->Parameters, surface, PointsBox(mesh.Points).lo,
-      BucketWidth(PointsBox(mesh.Points), parameters.Tolerance), this->Slack, PointsBox(mesh.Points).Magnitude())
-  , Creases(surface.Mesh ? SharpCreaseRule(*surface.Mesh, PointsBox(mesh.Points).lo,
-                             BucketWidth(PointsBox(mesh.Points), parameters.Tolerance))
-                         : SharpCreaseRule(PointsBox(mesh.Points).lo, 1.0))
+  , Error(this->Live, bounds, this->Parameters, surface, this->Extent.lo,
+      BucketWidth(this->Extent, parameters.Tolerance), this->Slack, this->Extent.Magnitude())
+  , Creases(surface.Mesh
+        ? SharpCreaseRule(*surface.Mesh, this->Extent.lo, BucketWidth(this->Extent, parameters.Tolerance))
+        : SharpCreaseRule(this->Extent.lo, 1.0))
 {
   this->Result.TrianglesBefore = this->Live.Triangles.size();
   for (const double e : bounds)
