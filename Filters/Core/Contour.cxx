@@ -345,6 +345,11 @@ SubdivisionParameters ChooseSubdivisionParameters(
   // Remeshing one valid closed mesh: where the tests cannot resolve a cell at
   // the tolerance's size, its patch is the mesh itself (ExactCell.h).
   params.ExactCells = run.Result.AssumptionsMet && IsOneMesh(*scene.Expression);
+  if (params.ExactCells)
+  {
+    const CsgExpression::Node& mesh = scene.Expression->NodeAt(scene.Expression->Root());
+    params.SurfaceDiagonal = scene.Primitives.Meshes[mesh.LeafData.Primitive].Bounds().Diagonal();
+  }
   if (!run.Result.AssumptionsMet)
   {
     // The guarantee is lost anyway, and self-intersections are complex at

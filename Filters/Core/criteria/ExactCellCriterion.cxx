@@ -1,5 +1,7 @@
 #include "ExactCellCriterion.h"
 
+#include <algorithm>
+
 namespace tpc
 {
 
@@ -16,6 +18,11 @@ bool KeepsTheMesh(const CsgExpression& expression, bool toleranceSize, bool hope
 {
   const CsgLeaf* leaf = LoneMeshLeaf(expression);
   return leaf && (hopeless || (toleranceSize && leaf->Triangles->size() <= ExactCellTriangles));
+}
+
+double ExactCellReferenceSize(double tolerance, double surfaceDiagonal)
+{
+  return surfaceDiagonal > 0.0 ? std::min(tolerance, surfaceDiagonal / 8.0) : tolerance;
 }
 
 bool IsOneMesh(const CsgExpression& expression)

@@ -38,7 +38,8 @@ struct LevelLimits
   /// Splitting every failing cell would exceed MaximumNumberOfCells.
   bool AtCellLimit = false;
   /// The level from which a failing cell of one mesh keeps the mesh
-  /// whatever it lists (ExactCellLevelsBelowTolerance below the tolerance's).
+  /// whatever it lists (ExactCellLevelsBelowTolerance below cells of
+  /// ExactCellReferenceSize).
   int ExactLevel = 0;
   /// The width of the finest cell MaximumDepth allows.
   double FinestWidth = 0.0;

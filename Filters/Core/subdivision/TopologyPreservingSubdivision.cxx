@@ -44,8 +44,8 @@ public:
     this->Result.Octree.Roles = parameters.TreeRoles;
     this->Limits.FinestWidth = std::ldexp(grid.RootSize, -std::min(parameters.MaximumDepth, grid.MaxDepth));
     this->Limits.ExactLevel = ExactCellLevelsBelowTolerance;
-    while (grid.CellDiagonal(this->Limits.ExactLevel - ExactCellLevelsBelowTolerance) >
-      parameters.HausdorffTolerance * (1.0 + 1e-9))
+    const double exactFrom = ExactCellReferenceSize(parameters.HausdorffTolerance, parameters.SurfaceDiagonal);
+    while (grid.CellDiagonal(this->Limits.ExactLevel - ExactCellLevelsBelowTolerance) > exactFrom * (1.0 + 1e-9))
     {
       ++this->Limits.ExactLevel;
     }

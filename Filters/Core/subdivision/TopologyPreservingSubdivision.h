@@ -44,6 +44,11 @@ struct SubdivisionParameters
   /// (ExactCell.h) instead of refining. For scenes of one closed mesh that
   /// meets the paper's assumptions (remeshing).
   bool ExactCells = false;
+  /// The diagonal of the mesh's box (with ExactCells): "levels below the
+  /// tolerance" are counted from at most an eighth of it
+  /// (ExactCellCriterion.h: ExactCellLevelsBelowTolerance). 0: from the
+  /// tolerance alone.
+  double SurfaceDiagonal = 0.0;
   /// Proven failures first: oversized cells of one mesh whose fans would
   /// stray beyond the tolerance split before their tests (MeshCellError.h:
   /// Spokes), and a prediction whose fan has a point too far from the mesh

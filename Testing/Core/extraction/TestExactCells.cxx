@@ -376,3 +376,28 @@ TEST(ExactCells, PatchIsTheMeshWithinRounding)
   }
   EXPECT_LT(farthest, 1e-12);
 }
+
+TEST(ExactCells, ATolerancePastTheSurfacesSizeStillRemeshes)
+{
+  // Exact cells count their levels from at most an eighth of the surface's
+  // diagonal (ExactCellReferenceSize). Counted from the tolerance, at 64
+  // diagonals three levels below its cells one cell held the whole torus and
+  // kept all its 9 216 triangles (and the run took 7x as long). A coarse
+  // tolerance is a coarse remesh: the tests resolve the torus with a
+  // fraction of its triangles, and the surface is guaranteed - at 64
+  // diagonals as at one and at a quarter.
+  const tpc::MeshSolid torus = tpctest::TorusMesh({ 0.013, -0.007, 0.004 }, 1.0, 0.35, 96, 48);
+  tpctest::SceneBuilder b;
+  b.Finish(b.Mesh(torus));
+  for (const double tolerance : { 64.0, 1.0, 0.25 })
+  {
+    SCOPED_TRACE("tolerance " + std::to_string(tolerance));
+    const tpctest::ContourRun r = tpctest::Contour(b.Scene, torus.Bounds(), tolerance);
+    EXPECT_TRUE(tpctest::Guaranteed(r));
+    EXPECT_EQ(r.Report.Components, 1);
+    EXPECT_EQ(r.Report.Genus, 1);
+    EXPECT_LT(r.Extraction.Mesh.Triangles.size(), torus.TriangleCount() / 8);
+    std::cout << "tolerance " << tolerance << ": " << r.Extraction.Mesh.Triangles.size() << " triangles of "
+              << torus.TriangleCount() << ", " << r.Subdivision.ExactCells << " exact cells\n";
+  }
+}
