@@ -73,6 +73,31 @@ struct Run
   bool Collective() const { return this->Piece.Pieces > 1 && this->Exchange.Agreed(); }
 };
 
+/// Meshes beyond the coordinates their geometry is trusted with
+/// (MeshSolid.h: WithinTrustedMeshRange) are refused, not contoured wrong.
+bool CheckMeshRanges(const ContourScene& scene, Run& run)
+{
+  for (const SceneInput& input : scene.Inputs)
+  {
+    if (input.Mesh < 0)
+    {
+      continue;
+    }
+    const Box3& box = scene.Primitives.Meshes[static_cast<std::size_t>(input.Mesh)].Bounds();
+    if (!WithinTrustedMeshRange(box))
+    {
+      std::ostringstream text;
+      text << input.Name << " has coordinates up to " << box.Magnitude() << " and is " << box.Diagonal()
+           << " across: the filter computes with meshes whose coordinates stay within " << LargestTrustedMeshCoordinate
+           << " and that are at least " << SmallestTrustedMeshDiagonal
+           << " across (their distances and normals take fourth powers of lengths). Scale the input (a "
+              "vtkTransformFilter, ParaView's Transform) and the result back.";
+      return run.Refuse(text.str());
+    }
+  }
+  return true;
+}
+
 /// Repair verdicts: a mesh that is not closed has no inside (refused); one
 /// violating the paper's assumptions is contoured without the guarantee.
 bool CheckRepairVerdicts(const ContourScene& scene, Run& run)
@@ -705,7 +730,7 @@ ContourResult Contour(ContourScene scene, const ContourParameters& parameters, c
                "(the solid is where it is negative).");
     return result;
   }
-  if (!CheckRepairVerdicts(scene, run) || !CheckCoincidentFaces(scene, parallelFor, run))
+  if (!CheckRepairVerdicts(scene, run) || !CheckMeshRanges(scene, run) || !CheckCoincidentFaces(scene, parallelFor, run))
   {
     return result;
   }

@@ -264,6 +264,29 @@ TEST(BadInputs, HugeAndTinyCoordinatesGiveTheSameAnswer)
   }
 }
 
+TEST(BadInputs, CoordinatesBeyondTheTrustedRangeAreRefused)
+{
+  // Beyond the coordinates a mesh's distances and normals are trusted with
+  // (MeshSolid.h: fourth powers of lengths overflow near 1e76 and become
+  // subnormal below about 1e-62 across), the answer would be the input
+  // itself or a broken surface: refused, with what to do. Just inside the
+  // range, the sphere as at its own scale.
+  for (const double scale : { 1e65, 1e-55 })
+  {
+    SCOPED_TRACE(scale);
+    const Outcome o = Contour(ScaledSphere(scale));
+    EXPECT_NE(o.Errors.find("Scale the input"), std::string::npos) << o.Errors;
+    EXPECT_TRUE(Empty(o));
+  }
+  for (const double scale : { 1e55, 1e-45 })
+  {
+    SCOPED_TRACE(scale);
+    const Outcome o = Contour(ScaledSphere(scale));
+    ExpectGuaranteedSphere(o);
+    EXPECT_LE(o.Result.HausdorffBound, o.Result.Tolerance);
+  }
+}
+
 TEST(BadInputs, ToleranceLargerThanTheDomainGivesACoarseClosedSurface)
 {
   // Five times the diagonal: no size test refines; the topology tests alone

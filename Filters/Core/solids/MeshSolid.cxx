@@ -9,6 +9,11 @@
 namespace tpc
 {
 
+bool WithinTrustedMeshRange(const Box3& bounds)
+{
+  return bounds.Magnitude() <= LargestTrustedMeshCoordinate && bounds.Diagonal() >= SmallestTrustedMeshDiagonal;
+}
+
 MeshSolid::MeshSolid(
   std::vector<Vec3> points, std::vector<std::array<std::uint32_t, 3>> triangles, const ParallelFor& parallelFor)
   : Vertices(std::move(points))
