@@ -120,7 +120,12 @@ struct PointSpan
 struct ConvexPolygon
 {
   PointSpan Points;
-  Vec3 Normal; ///< unit, from the vertex order (Newell, about the first corner); zero when degenerate
+  /// Unit, from the vertex order (Newell, about the first corner); zero
+  /// only where the Newell vector is exactly zero: collinear corners that
+  /// are not binary fractions give a unit normal of rounding noise, weighted
+  /// by TwiceArea (of rounding size) where it is read (MeshCellApex), and
+  /// never used to measure a distance (Inward is empty then).
+  Vec3 Normal;
   double TwiceArea = 0.0; ///< the Newell vector's length
   Box3 Bounds;
   /// Normal x (edge from Points[i] to Points[i + 1]): points into the polygon

@@ -119,13 +119,6 @@ private:
   SharpCreaseRule Creases;
 };
 
-/// Distances are computed in floating point (PolygonHausdorff.h): the same
-/// slack as the cells' certificates (MeshCellError.cxx, RoundingSlack).
-double RoundingSlack(const Box3& box)
-{
-  return 16384.0 * DBL_EPSILON * box.Magnitude() + 1e-12 * box.Diagonal();
-}
-
 Decimator::Decimator(TriangleMesh& mesh, std::vector<double>& bounds, ReleasableArray<std::int32_t>& labels,
   const DecimationParameters& parameters, const ExactMesh& surface)
   : Mesh(mesh)
@@ -133,11 +126,10 @@ Decimator::Decimator(TriangleMesh& mesh, std::vector<double>& bounds, Releasable
   , Labels(labels)
   , Parameters(parameters)
   , Extent(PointsBox(mesh.Points))
-  , Slack(RoundingSlack(this->Extent))
+  , Slack(DecimationRoundingSlack(this->Extent))
   , Live(mesh, labels, parameters.FeatureAngle, BucketWidth(this->Extent, parameters.Tolerance))
   , Stamp(mesh.Points.size(), 0)
-  , Error(this->Live, bounds, this->Parameters, surface, this->Extent.lo,
-      BucketWidth(this->Extent, parameters.Tolerance), this->Slack, this->Extent.Magnitude())
+  , Error(this->Live, bounds, this->Parameters, surface, this->Extent, BucketWidth(this->Extent, parameters.Tolerance))
   , Creases(surface.Mesh
         ? SharpCreaseRule(*surface.Mesh, this->Extent.lo, BucketWidth(this->Extent, parameters.Tolerance))
         : SharpCreaseRule(this->Extent.lo, 1.0))

@@ -3,21 +3,26 @@
 #include "ConvexPolygons.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 namespace tpc
 {
 
+double DecimationRoundingSlack(const Box3& extent)
+{
+  return 16384.0 * DBL_EPSILON * extent.Magnitude() + 1e-12 * extent.Diagonal();
+}
+
 ErrorCertificates::ErrorCertificates(const LiveSurface& live, const std::vector<double>& bounds,
-  const DecimationParameters& parameters, const ExactMesh& surface, const Vec3& origin, double bucketWidth,
-  double slack, double slackMagnitude)
+  const DecimationParameters& parameters, const ExactMesh& surface, const Box3& extent, double bucketWidth)
   : Live(live)
   , Bounds(bounds)
   , Parameters(parameters)
   , Surface(surface)
-  , SurfaceGrid(origin, bucketWidth)
-  , Slack(slack)
-  , SlackMagnitude(slackMagnitude)
+  , SurfaceGrid(extent.lo, bucketWidth)
+  , Slack(DecimationRoundingSlack(extent))
+  , SlackMagnitude(extent.Magnitude())
 {
   if (surface.Mesh)
   {

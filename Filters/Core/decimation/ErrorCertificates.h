@@ -23,17 +23,22 @@ struct CertificateMarks
   VisitMarks Surface;   ///< S's triangles
 };
 
+/// Distances are computed in floating point (PolygonHausdorff.h): the same
+/// slack as the cells' certificates (MeshCellError.cxx, RoundingSlack), for
+/// coordinates within `extent`.
+double DecimationRoundingSlack(const Box3& extent);
+
 class ErrorCertificates
 {
 public:
   /// `live`, `bounds` (e_t per triangle) and `parameters` are read as they
-  /// are when Certify runs; `surface` is S where known. S's triangles are
-  /// listed in a grid of buckets `bucketWidth` wide from `origin`. `slack`
-  /// covers the rounding of the distances, taken of coordinates up to
-  /// `slackMagnitude` (PolygonSet::SetSlackMagnitude).
+  /// are when Certify runs; `surface` is S where known. `extent` is the
+  /// surface's points' box: S's triangles are listed in a grid of buckets
+  /// `bucketWidth` wide from its corner, and the distances' rounding slack
+  /// is taken of its coordinates (DecimationRoundingSlack; the polygons'
+  /// PolygonSet::SetSlackMagnitude).
   ErrorCertificates(const LiveSurface& live, const std::vector<double>& bounds,
-    const DecimationParameters& parameters, const ExactMesh& surface, const Vec3& origin, double bucketWidth,
-    double slack, double slackMagnitude);
+    const DecimationParameters& parameters, const ExactMesh& surface, const Box3& extent, double bucketWidth);
 
   /// The bound of c's made triangles (rounding slack included), or +inf
   /// when it is not certified within the tolerance. Against the mesh it
