@@ -400,4 +400,20 @@ TEST(ExactCells, ATolerancePastTheSurfacesSizeStillRemeshes)
     std::cout << "tolerance " << tolerance << ": " << r.Extraction.Mesh.Triangles.size() << " triangles of "
               << torus.TriangleCount() << ", " << r.Subdivision.ExactCells << " exact cells\n";
   }
+  // A cell as small as the tolerance asks that lists at most
+  // ExactCellTriangles still keeps them (the reference size moves only the
+  // levels where a cell keeps the mesh whatever it lists): a tetrahedron's
+  // corners at half its diagonal stay a few triangles each (when that moved
+  // too, the tetrahedron came out as 570 triangles).
+  // (CGAL's tetrahedron.off, faces turned outward.)
+  const std::vector<Vec3> corners = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+  const tpc::MeshSolid tetrahedron(corners, { { 0, 2, 1 }, { 0, 1, 3 }, { 0, 3, 2 }, { 1, 2, 3 } });
+  tpctest::SceneBuilder t;
+  t.Finish(t.Mesh(tetrahedron));
+  const tpctest::ContourRun r = tpctest::Contour(t.Scene, tetrahedron.Bounds(), 0.5);
+  EXPECT_TRUE(tpctest::Guaranteed(r));
+  EXPECT_GT(r.Subdivision.ExactCells, 0u);
+  EXPECT_LT(r.Extraction.Mesh.Triangles.size(), 200u); // (118)
+  std::cout << "tetrahedron at 1/2: " << r.Extraction.Mesh.Triangles.size() << " triangles, "
+            << r.Subdivision.ExactCells << " exact cells\n";
 }
