@@ -52,10 +52,7 @@ class Quadric
 {
 public:
   Quadric() = default;
-  explicit Quadric(const std::array<double, 10>& coefficients)
-    : A(coefficients)
-  {
-  }
+  explicit Quadric(const std::array<double, 10>& coefficients);
 
   static Quadric Sphere(const Vec3& center, double radius);
   /// Half-space n.(x - origin) < 0 (outside is the side the normal points to).
@@ -106,6 +103,11 @@ private:
   IntervalQuadric AsInterval() const;
 
   std::array<double, 10> A{};
+  /// An ellipsoid's centre where f is proven negative there (ChangesSignOn:
+  /// a box holding it and a corner proven positive changes sign, though no
+  /// corner is negative - a box around a whole ellipsoid).
+  Vec3 Interior;
+  bool HasInterior = false;
 };
 
 } // namespace tpc

@@ -1,6 +1,7 @@
 // Quadric primitives: every enclosure (value, derivative, star condition)
 // contains sampled values over random boxes; exact signs agree with
 // quad-precision evaluation; composition with transforms and bounds are right.
+#include "ExactSum.h"
 #include "Quadric.h"
 
 #include <gtest/gtest.h>
@@ -165,6 +166,9 @@ TEST(Quadric, SignTestsAgreeWithTheEnclosureAndExactSigns)
           negative = negative || q.ExactSign(c) < 0;
           positive = positive || q.ExactSign(c) > 0;
         }
+        // (Or an ellipsoid's centre in the box, inside.)
+        Vec3 centre;
+        negative = negative || (q.EllipsoidCenter(centre) && box.Contains(centre) && q.ExactSign(centre) < 0);
         ASSERT_TRUE(negative && positive);
         ASSERT_TRUE(slow.ContainsZero());
       }
@@ -285,6 +289,81 @@ TEST(Quadric, ExactSignMatchesQuadPrecision)
     const int expected = v > 0 ? 1 : (v < 0 ? -1 : 0);
     ASSERT_EQ(q.ExactSign(p), expected);
   }
+}
+
+TEST(Quadric, ExactSignIsExactNextToTheSurface)
+{
+  // Points on the zero set as computed (a root along a random line), so f
+  // there is rounding noise of either sign, and points a little off it:
+  // ExactSign - its floating-point filter where that decides, its interval
+  // and exact forms elsewhere - must give the sign of f summed exactly.
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const std::vector<Quadric> quadrics = TestQuadrics(rng);
+  int nearZero = 0, filtered = 0;
+  for (const Quadric& q : quadrics)
+  {
+    for (int trial = 0; trial < 2000; ++trial)
+    {
+      const Vec3 p{ unit(rng), unit(rng), unit(rng) }, d{ unit(rng), unit(rng), unit(rng) };
+      const double C = q.Value(p), B = tpc::Dot(q.Gradient(p), d), A = q.Value(p + d) - B - C;
+      const double disc = B * B - 4.0 * A * C;
+      if (disc < 0.0 || std::fabs(A) < 1e-9)
+      {
+        continue;
+      }
+      const double t = (-B + std::sqrt(disc)) / (2.0 * A);
+      const double off = trial % 3 == 0 ? 0.0 : std::pow(10.0, -16.0 + 8.0 * (0.5 + 0.5 * unit(rng)));
+      const Vec3 x = p + d * (t + off);
+      const auto& a = q.Coefficients();
+      tpc::ExactSum exact;
+      exact.AddProduct(a[0], x[0], x[0]);
+      exact.AddProduct(a[1], x[1], x[1]);
+      exact.AddProduct(a[2], x[2], x[2]);
+      exact.AddProduct(a[3], x[0], x[1]);
+      exact.AddProduct(a[4], x[1], x[2]);
+      exact.AddProduct(a[5], x[0], x[2]);
+      exact.AddProduct(a[6], x[0]);
+      exact.AddProduct(a[7], x[1]);
+      exact.AddProduct(a[8], x[2]);
+      exact.Add(a[9]);
+      ASSERT_EQ(q.ExactSign(x), exact.Sign()) << trial;
+      const double f = std::fabs(q.Value(x));
+      nearZero += f < 1e-15 ? 1 : 0;
+      filtered += f > 1e-12 ? 1 : 0;
+    }
+  }
+  // Not vacuous: both paths decide many.
+  EXPECT_GT(nearZero, 1000);
+  EXPECT_GT(filtered, 1000);
+  std::cout << nearZero << " points within 1e-15 of zero, " << filtered << " beyond 1e-12\n";
+}
+
+TEST(Quadric, ABoxAroundAWholeEllipsoidChangesSign)
+{
+  // Every corner outside, the centre inside: ChangesSignOn says so without
+  // the interval forms (the pruning of large boxes around small ellipsoids),
+  // and EncloseForSign gives the whole line, as Enclose holds zero.
+  const Quadric ellipsoid = Quadric::Ellipsoid({ 0.31, -0.12, 0.07 }, { 0.05, 0.03, 0.25 });
+  const Box3 around{ { -1.0, -1.0, -1.0 }, { 1.0, 1.0, 1.0 } };
+  EXPECT_TRUE(ellipsoid.ChangesSignOn(around));
+  EXPECT_TRUE(ellipsoid.Enclose(around).ContainsZero());
+  EXPECT_EQ(ellipsoid.EncloseForSign(around).lo, -HUGE_VAL);
+  // Its complement (f negated: no inside point), a box beside it, and a
+  // hyperboloid (no centre inside) are left to the corners and intervals.
+  std::array<double, 10> negated = ellipsoid.Coefficients();
+  for (double& a : negated)
+  {
+    a = -a;
+  }
+  EXPECT_FALSE(Quadric(negated).ChangesSignOn(around));
+  EXPECT_TRUE(Quadric(negated).Enclose(around).ContainsZero());
+  const Box3 beside{ { 0.5, 0.5, 0.5 }, { 1.0, 1.0, 1.0 } };
+  EXPECT_FALSE(ellipsoid.ChangesSignOn(beside));
+  EXPECT_GT(ellipsoid.EncloseForSign(beside).lo, 0.0);
+  const Quadric hyperboloid({ 1, 1, -1, 0, 0, 0, 0, 0, 0, 0.01 });
+  const Box3 far{ { 0.5, 0.5, -0.1 }, { 0.6, 0.6, 0.1 } };
+  EXPECT_FALSE(hyperboloid.ChangesSignOn(far));
 }
 
 TEST(Quadric, ComposedEvaluatesAtTheMappedPoint)
