@@ -77,17 +77,18 @@ struct Run
 /// (MeshSolid.h: WithinTrustedMeshRange) are refused, not contoured wrong.
 bool CheckMeshRanges(const ContourScene& scene, Run& run)
 {
-  for (const SceneInput& input : scene.Inputs)
+  for (std::size_t m = 0; m < scene.Primitives.Meshes.size(); ++m)
   {
-    if (input.Mesh < 0)
-    {
-      continue;
-    }
-    const Box3& box = scene.Primitives.Meshes[static_cast<std::size_t>(input.Mesh)].Bounds();
+    const Box3& box = scene.Primitives.Meshes[m].Bounds();
     if (!WithinTrustedMeshRange(box))
     {
+      std::string name = "A mesh input";
+      for (const SceneInput& input : scene.Inputs)
+      {
+        name = input.Mesh == static_cast<int>(m) ? input.Name : name;
+      }
       std::ostringstream text;
-      text << input.Name << " has coordinates up to " << box.Magnitude() << " and is " << box.Diagonal()
+      text << name << " has coordinates up to " << box.Magnitude() << " and is " << box.Diagonal()
            << " across: the filter computes with meshes whose coordinates stay within " << LargestTrustedMeshCoordinate
            << " and that are at least " << SmallestTrustedMeshDiagonal
            << " across (their distances and normals take fourth powers of lengths). Scale the input (a "
@@ -730,7 +731,8 @@ ContourResult Contour(ContourScene scene, const ContourParameters& parameters, c
                "(the solid is where it is negative).");
     return result;
   }
-  if (!CheckRepairVerdicts(scene, run) || !CheckMeshRanges(scene, run) || !CheckCoincidentFaces(scene, parallelFor, run))
+  // (The range first: beyond it the repair's own findings mean nothing.)
+  if (!CheckMeshRanges(scene, run) || !CheckRepairVerdicts(scene, run) || !CheckCoincidentFaces(scene, parallelFor, run))
   {
     return result;
   }

@@ -18,8 +18,9 @@ namespace tpc
 /// as small as the tolerance asks: when it lists at most ExactCellTriangles
 /// triangles (the size of one more level's patches), or when refinement
 /// cannot help (`hopeless`: two sheets closer than the finest cell, a limit,
-/// or ExactCellLevelsBelowTolerance levels below the tolerance's cells - a
-/// wedge of a few degrees, a crease a hair from a lattice line).
+/// or ExactCellLevelsBelowTolerance levels below the cells of
+/// ExactCellReferenceSize - a wedge of a few degrees, a crease a hair from a
+/// lattice line).
 constexpr std::size_t ExactCellTriangles = 8;
 /// Face refinement levels a cell that would keep its mesh tries (instead of
 /// FaceRefinementLevels): a face that does not pass within them fails, and
@@ -37,12 +38,13 @@ constexpr int ExactCellLevelsBelowTolerance = 3;
 /// coarse remesh - the armadillo at a tolerance of half its diagonal came
 /// out as 9 152 triangles and at 1/8 as 4 214, and at 64 diagonals as the
 /// input's 52 000 after 30 s (one cell kept the whole mesh and checked it
-/// against itself). Counting from an eighth of the diagonal makes every
-/// tolerance above it refine as that one does for exact cells. (A cell as
-/// small as the tolerance asks that lists at most ExactCellTriangles keeps
-/// them as before: a small patch whatever refinement would find - counted
-/// from the reference too, CGAL's tetrahedron at half its diagonal came out
-/// as 570 triangles instead of 118; over CGAL's 84 valid demo meshes at 1/2,
+/// against itself). Counted from an eighth of the diagonal, the level where
+/// a failing cell keeps the mesh whatever it lists is the same at every
+/// tolerance above it. (A cell as small as the tolerance asks that lists at
+/// most ExactCellTriangles keeps them from the tolerance's own level, as
+/// before: a small patch whatever refinement would find - counted from the
+/// reference too, CGAL's tetrahedron at half its diagonal came out as 570
+/// triangles instead of 118; over CGAL's 84 valid demo meshes at 1/2,
 /// 104 624 triangles before, 88 834 now.)
 double ExactCellReferenceSize(double tolerance, double surfaceDiagonal);
 bool KeepsTheMesh(const CsgExpression& expression, bool toleranceSize, bool hopeless);

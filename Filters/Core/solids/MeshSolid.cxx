@@ -1,6 +1,7 @@
 #include "MeshSolid.h"
 
 #include "ExactPredicates.h"
+#include "GridIndex.h"
 #include "MeshEdges.h"
 
 #include <algorithm>
@@ -174,10 +175,9 @@ bool MeshSolid::Crosses(std::uint32_t t, const Vec3& a, const Vec3* b, int axis)
 
 int MeshSolid::GridColumn(int k, double coordinate) const
 {
-  // (Monotone in the coordinate: floating-point subtraction and division by
-  // a positive step, then floor, never reorder two coordinates.)
-  return std::clamp(static_cast<int>(std::floor((coordinate - this->GridOrigin[k]) / this->GridStep[k])), 0,
-    this->GridSize[k] - 1);
+  // (Monotone in the coordinate: floating-point subtraction, then
+  // ClampedGridIndex, never reorder two coordinates.)
+  return ClampedGridIndex(coordinate - this->GridOrigin[k], this->GridStep[k], this->GridSize[k]);
 }
 
 std::size_t MeshSolid::RayCell(const Vec3& p) const

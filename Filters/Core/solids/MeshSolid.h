@@ -36,19 +36,24 @@ namespace tpc
 using TriangleList = std::vector<std::uint32_t>;
 
 /// The coordinates a mesh's floating-point geometry is trusted with. Its
-/// exact predicates hold for any doubles short of overflow, but the
-/// distances, normals and certificates built on them (ConvexPolygons.cxx,
-/// PolygonHausdorff.cxx, MeshCellError.cxx) take up to fourth powers of
-/// lengths: |N|^2 of a Newell vector is a sum of fourth powers of
-/// coordinate differences, which overflows once coordinates reach about
-/// 1e76, and lengths as short as the lattice's finest spacing (2^-41 of the
-/// domain) raised to the fourth power become subnormal - losing the relative
-/// rounding bound every certificate rests on - once the mesh is below about
-/// 1e-62 across. Measured (CGAL's fandisk scaled, 1/32): the same surface
-/// from 1e-70 to 1e77, the input itself at 1e-80 and 1e100 (every cell
-/// exact), a broken one at 1e150 and none at 1e-150. A mesh is refused with
-/// a margin of 1e16 on either side: coordinates up to 1e60 in magnitude,
-/// a box at least 1e-50 across.
+/// exact predicates hold for doubles whose products neither overflow nor
+/// underflow (ExactSum.h), and the distances, normals and certificates
+/// built on them (ConvexPolygons.cxx, PolygonHausdorff.cxx,
+/// MeshCellError.cxx) take up to fourth powers of lengths: |N|^2 of a
+/// Newell vector is a sum of fourth powers of coordinate differences, which
+/// overflows once coordinates reach about 1e76, and lengths as short as the
+/// lattice's finest spacing (2^-41 of the domain) raised to the fourth
+/// power become subnormal - losing the relative rounding bound every
+/// certificate rests on - once the mesh is below about 1e-62 across.
+/// Measured (CGAL's fandisk scaled, 1/32): the same surface from 1e-70 to
+/// 1e77, the input itself at 1e-80 and 1e100 (every cell exact), a broken
+/// one at 1e150 (flagged) and none at 1e-150, where the repair also found
+/// self-intersections that are not there. A mesh is refused with a margin
+/// of 1e16 above (coordinates up to 1e60 in magnitude) and 1e12 below (a
+/// box at least 1e-50 across). (The box bounds coordinates, not their
+/// differences: a triangle whose Newell vector falls below 1e-150 is
+/// measured by its edges, squares of lengths - ConvexPolygons.cxx,
+/// MeasuredByItsPlane.)
 constexpr double LargestTrustedMeshCoordinate = 1e60;
 constexpr double SmallestTrustedMeshDiagonal = 1e-50;
 /// Whether a mesh with this box is within the trusted range.

@@ -1,6 +1,7 @@
 #include "SelfIntersection.h"
 
 #include "ExactPredicates.h"
+#include "GridIndex.h"
 #include "TriangleMesh.h"
 
 #include <algorithm>
@@ -372,7 +373,7 @@ struct BinGrid
   }
   int Index(int a, double x) const
   {
-    return std::clamp(static_cast<int>(std::floor((x - this->All.lo[a]) / this->Cell)), 0, this->Dims[a] - 1);
+    return ClampedGridIndex(x - this->All.lo[a], this->Cell, this->Dims[a]);
   }
   std::uint64_t Key(int x, int y, int z) const
   {

@@ -82,7 +82,7 @@ bool DecideCell(AdaptiveOctree& tree, std::uint32_t n, const CellTests& tests, c
   }
   const bool stopped = limits.AtDepthLimit || limits.AtCellLimit || tests.Facing;
   if (parameters.ExactCells &&
-    KeepsTheMesh(*tree.Expressions[n], limits.ToleranceSize, level >= limits.ExactLevel || stopped))
+    KeepsTheMesh(*tree.Expressions[n], level >= limits.ExactToleranceLevel, level >= limits.ExactLevel || stopped))
   {
     // One mesh's surface that the tests cannot resolve: its patch is the mesh
     // itself (ExactCell.h).

@@ -39,8 +39,11 @@ struct LevelLimits
   bool AtCellLimit = false;
   /// The level from which a failing cell of one mesh keeps the mesh
   /// whatever it lists (ExactCellLevelsBelowTolerance below cells of
-  /// ExactCellReferenceSize).
+  /// ExactCellReferenceSize), and the first whose cells are at most the
+  /// tolerance across, with a relative slack of 1e-9 (from which it keeps a
+  /// mesh listing at most ExactCellTriangles).
   int ExactLevel = 0;
+  int ExactToleranceLevel = 0;
   /// The width of the finest cell MaximumDepth allows.
   double FinestWidth = 0.0;
 };

@@ -25,6 +25,19 @@ CellState StateOf(RegionSign s)
   return s == RegionSign::Inside ? CellState::Inside : CellState::Outside;
 }
 
+/// The first level whose cells' diagonal is at most `size` (with a relative
+/// slack of 1e-9: a diagonal an ulp above a tolerance it was sized to meets
+/// it).
+int FirstLevelWithin(const RootGrid& grid, double size)
+{
+  int level = 0;
+  while (grid.CellDiagonal(level) > size * (1.0 + 1e-9))
+  {
+    ++level;
+  }
+  return level;
+}
+
 /// One run of the subdivision: the octree being built and the cells of the
 /// current level that still meet the surface.
 class LevelByLevel
@@ -43,12 +56,10 @@ public:
     this->Result.Octree.SceneExpression = scene.Expression;
     this->Result.Octree.Roles = parameters.TreeRoles;
     this->Limits.FinestWidth = std::ldexp(grid.RootSize, -std::min(parameters.MaximumDepth, grid.MaxDepth));
-    this->Limits.ExactLevel = ExactCellLevelsBelowTolerance;
-    const double exactFrom = ExactCellReferenceSize(parameters.HausdorffTolerance, parameters.SurfaceDiagonal);
-    while (grid.CellDiagonal(this->Limits.ExactLevel - ExactCellLevelsBelowTolerance) > exactFrom * (1.0 + 1e-9))
-    {
-      ++this->Limits.ExactLevel;
-    }
+    this->Limits.ExactToleranceLevel = FirstLevelWithin(grid, parameters.HausdorffTolerance);
+    this->Limits.ExactLevel = FirstLevelWithin(grid,
+                                ExactCellReferenceSize(parameters.HausdorffTolerance, parameters.SurfaceDiagonal)) +
+      ExactCellLevelsBelowTolerance;
     this->ExpectedLevels = std::max(1,
       static_cast<int>(std::ceil(std::log2(grid.RootSize * std::sqrt(3.0) / parameters.HausdorffTolerance))) + 3);
   }

@@ -279,6 +279,34 @@ TEST(MeshSolid, TriangleBoxOverlapNeverMissesAContact)
   EXPECT_GT(negatives, 100000); // and it does reject
 }
 
+TEST(MeshSolid, ABoxFarBeyondTheMeshListsEveryTriangle)
+{
+  // The ray-casting grid's columns under a box billions of steps wide: the
+  // column of its far side once overflowed the int conversion to the first
+  // column, so a box around the whole mesh listed no triangle - and a run
+  // whose Bounds were that large took its root cell as empty and returned
+  // an empty surface, guaranteed (GridIndex.h).
+  const tpc::MeshSolid torus = tpctest::TorusMesh({ 0.013, -0.007, 0.004 }, 1.0, 0.35, 96, 48);
+  for (const double b : { 1e3, 1e8, 1e12, 1e300 })
+  {
+    EXPECT_EQ(torus.Overlapping(tpc::Box3{ { -b, -b, -b }, { b, b, b } }).size(), torus.TriangleCount()) << b;
+  }
+  for (const double b : { 1e8, 1e9 })
+  {
+    tpctest::SceneBuilder s;
+    s.Finish(s.Mesh(torus));
+    tpc::ContourParameters p;
+    p.Bounds = tpc::Box3{ { -b, -b, -b }, { b, b, b } };
+    p.ToleranceIsRelative = false;
+    p.Tolerance = 0.05;
+    const tpc::ContourResult r = tpc::Contour(tpctest::ContourSceneOf(s.Scene), p);
+    EXPECT_TRUE(r.Report.Guaranteed) << b;
+    EXPECT_EQ(r.Topology.Components, 1) << b;
+    EXPECT_EQ(r.Topology.Genus, 1) << b;
+    EXPECT_GT(r.Extraction.Mesh.Triangles.size(), 100u) << b;
+  }
+}
+
 TEST(MeshSolid, KnowsEachEdgesOtherTriangleAndEachUnitNormal)
 {
   // Brute force: the other triangle holding both ends of each edge, and the
