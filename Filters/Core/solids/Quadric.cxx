@@ -567,7 +567,8 @@ Interval Quadric::EncloseStarCondition(
     absH[9] = std::fabs(a[6]) * p0 + std::fabs(a[7]) * p1 + std::fabs(a[8]) * p2;
     double lo = 0.0, hi = 0.0;
     if ((sigma == 1 || sigma == -1) && (W == 0.0 || W == 1.0) &&
-      std::max({ p0, p1, p2 }) <= LargestTrustedCoordinate && CentredFormDecides(h, absH, box, lo, hi) && lo > 0.0)
+      p0 <= LargestTrustedCoordinate && p1 <= LargestTrustedCoordinate && p2 <= LargestTrustedCoordinate &&
+      CentredFormDecides(h, absH, box, lo, hi) && lo > 0.0)
     {
       return { lo, hi };
     }

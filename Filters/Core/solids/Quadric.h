@@ -72,20 +72,23 @@ public:
 
   double Value(const Vec3& p) const;
   Vec3 Gradient(const Vec3& p) const;
-  /// Exact sign of f at p (-1, 0, +1).
+  /// Exact sign of f at p (-1, 0, +1). (Exact while no product of two or
+  /// three of its numbers underflows, ExactSum.h: at subnormal coordinates
+  /// a value of about 1e-324 may read as 0.)
   int ExactSign(const Vec3& p) const;
 
   Interval Enclose(const Box3& box) const;
   /// An enclosure of f on the closed box for deciding its sign: the whole
-  /// line where f changes sign between corners (ChangesSignOn); the centred
+  /// line where f provably changes sign on it (ChangesSignOn); the centred
   /// form in floating point, with a bound of its rounding errors, where that
   /// excludes zero (most other boxes, at a fraction of the interval
   /// arithmetic's cost); else Enclose. So it excludes zero wherever Enclose
   /// does.
   Interval EncloseForSign(const Box3& box) const;
-  /// Whether f is provably negative at one corner of the closed box and
-  /// positive at another (floating point with a bound of its rounding
-  /// errors): then no enclosure can give it one sign there.
+  /// Whether f is provably positive at one corner of the closed box and
+  /// negative at another corner or at an ellipsoid's centre inside it
+  /// (floating point with a bound of its rounding errors): then no
+  /// enclosure can give it one sign there.
   bool ChangesSignOn(const Box3& box) const;
   /// Enclosure of df/dx_axis over the box.
   Interval EncloseDerivative(const Box3& box, int axis) const;

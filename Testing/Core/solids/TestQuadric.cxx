@@ -465,6 +465,34 @@ TEST(Quadric, StarConditionIsPositiveWhereItsEnclosureSaysSo)
   std::cout << proven << " boxes proven, " << nearZero << " at a zero of h refused\n";
 }
 
+TEST(Quadric, FastPathsRefuseWhatTheirBoundsDoNotCover)
+{
+  // A reviewer's counterexamples to plausible slips in the floating-point
+  // paths' bounds; each claims a wrong sign with the slip.
+  // (1) The star condition's constant coefficient bounded by |h_9| instead
+  // of the sum it came from: at the point 0, h = -3.5e-18 exactly, while
+  // the computed h_9 is +3.5e-18.
+  const Quadric q({ 1, 1, 1, 0, 0, 0, 0.098964636407128825, 0.75980721538414708, -0.28969193266167059, -1 });
+  const tpc::StarWitness direction{ Vec3(0.76454996211689452, -0.11101716783084785, -0.029991294730169007), 0.0 };
+  const Box3 origin{ { 0, 0, 0 }, { 0, 0, 0 } };
+  ASSERT_LT(ExactStarSign(q, direction, 1, { 0, 0, 0 }), 0);
+  EXPECT_FALSE(q.EncloseStarCondition(origin, direction, 1).lo > 0.0);
+  // (2) An empty ellipsoid (its least value 2.73) whose centre computes as
+  // -128: the centre is not proven inside, so no sign change.
+  const Vec3 centre{ -0.8101016160095259, -0.33413405530010454, 0.7480346181305042 };
+  const Quadric empty = Quadric::Ellipsoid(centre, { 1e-9, 2e-9, 3e-9 });
+  EXPECT_FALSE(empty.ChangesSignOn(Box3{ centre - Vec3(10, 10, 10), centre + Vec3(10, 10, 10) }));
+  // (3) f = 1.5 x y - 1.8 * 2^-975 at (2^99, 2^-1074, 0): negative, though
+  // 1.5 y rounds to a subnormal whose error x scales past any relative
+  // bound (the magnitude guard).
+  const Quadric tiny({ 0, 0, 0, 1.5, 0, 0, 0, 0, 0, -1.8 * std::ldexp(1.0, -975) });
+  EXPECT_EQ(tiny.ExactSign({ std::ldexp(1.0, 99), std::ldexp(1.0, -1074), 0.0 }), -1);
+  // (4) A box inside an ellipsoid, its centre too: no corner outside, no
+  // sign change.
+  const Quadric ellipsoid = Quadric::Ellipsoid({ 0.31, -0.12, 0.07 }, { 0.5, 0.3, 0.8 });
+  EXPECT_FALSE(ellipsoid.ChangesSignOn(Box3{ { 0.3, -0.13, 0.06 }, { 0.32, -0.11, 0.08 } }));
+}
+
 TEST(Quadric, ComposedEvaluatesAtTheMappedPoint)
 {
   std::mt19937_64 rng(9);
