@@ -318,48 +318,59 @@ namespace
 constexpr double LargestTrustedCoordinate = 1e30;
 constexpr double SmallestTrustedMagnitude = 1e-200;
 
-/// f(x, y, z) in floating point, and in `magnitude` the same form over the
-/// absolute values of the coefficients and coordinates: the computed f is
-/// within gamma_12 < 1.4e-15 times it of the exact value (at most 12
-/// roundings along any path; Higham, Accuracy and Stability of Numerical
-/// Algorithms, 3.1), while no rounding is subnormal.
-double ValueAndMagnitude(const std::array<double, 10>& a, double x, double y, double z, double& magnitude)
+/// The form with coefficients `a` at (x, y, z), in floating point. Over the
+/// coefficients' and coordinates' absolute values it gives the magnitude
+/// M: the computed f is within gamma_12 < 1.4e-15 M of the exact value (at
+/// most 12 roundings along any path; Higham, Accuracy and Stability of
+/// Numerical Algorithms, 3.1), while no rounding is subnormal.
+double EvaluateForm(const std::array<double, 10>& a, double x, double y, double z)
 {
-  const double ax = std::fabs(x), ay = std::fabs(y), az = std::fabs(z);
-  magnitude = (std::fabs(a[0]) * ax + std::fabs(a[3]) * ay + std::fabs(a[5]) * az + std::fabs(a[6])) * ax +
-    (std::fabs(a[1]) * ay + std::fabs(a[4]) * az + std::fabs(a[7])) * ay +
-    (std::fabs(a[2]) * az + std::fabs(a[8])) * az + std::fabs(a[9]);
   return (a[0] * x + a[3] * y + a[5] * z + a[6]) * x + (a[1] * y + a[4] * z + a[7]) * y + (a[2] * z + a[8]) * z +
     a[9];
+}
+
+std::array<double, 10> AbsoluteValues(const std::array<double, 10>& a)
+{
+  std::array<double, 10> absolute;
+  for (int i = 0; i < 10; ++i)
+  {
+    absolute[i] = std::fabs(a[i]);
+  }
+  return absolute;
+}
+
+/// The sign of the form at p where floating point proves it: f beyond 4e-14
+/// of its magnitude (ample over gamma_12, EvaluateForm), in the trusted
+/// range; 0 where it proves nothing.
+int ProvenSign(const std::array<double, 10>& a, const Vec3& p)
+{
+  const double ax = std::fabs(p[0]), ay = std::fabs(p[1]), az = std::fabs(p[2]);
+  if (!(ax <= LargestTrustedCoordinate && ay <= LargestTrustedCoordinate && az <= LargestTrustedCoordinate))
+  {
+    return 0;
+  }
+  const double f = EvaluateForm(a, p[0], p[1], p[2]);
+  const double magnitude = EvaluateForm(AbsoluteValues(a), ax, ay, az);
+  const double error = 4e-14 * magnitude;
+  if (!std::isfinite(f) || !(magnitude > SmallestTrustedMagnitude))
+  {
+    return 0;
+  }
+  return f > error ? 1 : (f < -error ? -1 : 0);
 }
 } // namespace
 
 int Quadric::ExactSign(const Vec3& p) const
 {
-  // First f in floating point against its rounding bound (ValueAndMagnitude:
-  // 4e-14 of the magnitude is ample over gamma_12), where that bound holds:
-  // a proven sign is the exact sign. Most points are far from the surface
+  // First f in floating point against its rounding bound (ProvenSign): a
+  // proven sign is the exact sign. Most points are far from the surface
   // relative to the rounding, and this is a few dozen flops where the
   // interval form below is ten interval products (the loops' separation
   // tests sign every crossing this way: a third of the plate of 100
   // ellipsoids' run at a tolerance of one diagonal).
-  if (std::fabs(p[0]) <= LargestTrustedCoordinate && std::fabs(p[1]) <= LargestTrustedCoordinate &&
-    std::fabs(p[2]) <= LargestTrustedCoordinate)
+  if (const int proven = ProvenSign(this->A, p))
   {
-    double magnitude = 0.0;
-    const double f = ValueAndMagnitude(this->A, p[0], p[1], p[2], magnitude);
-    const double error = 4e-14 * magnitude;
-    if (std::isfinite(f) && magnitude > SmallestTrustedMagnitude)
-    {
-      if (f > error)
-      {
-        return 1;
-      }
-      if (f < -error)
-      {
-        return -1;
-      }
-    }
+    return proven;
   }
   const Interval v = this->AsInterval().EncloseAt(p);
   if (v.lo > 0.0)
@@ -398,7 +409,6 @@ Interval Quadric::Enclose(const Box3& box) const
 
 bool Quadric::ChangesSignOn(const Box3& box) const
 {
-  // (4e-14 of the magnitude is ample over gamma_12, ValueAndMagnitude.)
   for (int i = 0; i < 3; ++i)
   {
     if (!(std::fabs(box.lo[i]) <= LargestTrustedCoordinate && std::fabs(box.hi[i]) <= LargestTrustedCoordinate))
@@ -409,16 +419,11 @@ bool Quadric::ChangesSignOn(const Box3& box) const
   bool negative = false, positive = false;
   for (int corner = 0; corner < 8; ++corner)
   {
-    double magnitude = 0.0;
-    const double f = ValueAndMagnitude(this->A, corner & 1 ? box.hi[0] : box.lo[0],
-      corner & 2 ? box.hi[1] : box.lo[1], corner & 4 ? box.hi[2] : box.lo[2], magnitude);
-    const double error = 4e-14 * magnitude;
-    if (!std::isfinite(f) || !(magnitude > SmallestTrustedMagnitude))
-    {
-      continue; // (this corner's sign is not proven: near underflow)
-    }
-    negative = negative || f < -error;
-    positive = positive || f > error;
+    // (0 where the corner's sign is not proven: near underflow.)
+    const int sign = ProvenSign(this->A,
+      { corner & 1 ? box.hi[0] : box.lo[0], corner & 2 ? box.hi[1] : box.lo[1], corner & 4 ? box.hi[2] : box.lo[2] });
+    negative = negative || sign < 0;
+    positive = positive || sign > 0;
     if (negative && positive)
     {
       return true;
@@ -465,10 +470,7 @@ bool CentredFormDecides(
   }
   const double x = c[0], y = c[1], z = c[2];
   const double ax = std::fabs(x), ay = std::fabs(y), az = std::fabs(z);
-  double unused = 0.0;
-  const double F = ValueAndMagnitude(a, x, y, z, unused);
-  const double absF = (absA[0] * ax + absA[3] * ay + absA[5] * az + absA[6]) * ax +
-    (absA[1] * ay + absA[4] * az + absA[7]) * ay + (absA[2] * az + absA[8]) * az + absA[9];
+  const double F = EvaluateForm(a, x, y, z), absF = EvaluateForm(absA, ax, ay, az);
   const double g[3] = { 2.0 * a[0] * x + a[3] * y + a[5] * z + a[6], a[3] * x + 2.0 * a[1] * y + a[4] * z + a[7],
     a[5] * x + a[4] * y + 2.0 * a[2] * z + a[8] };
   const double absG[3] = { 2.0 * absA[0] * ax + absA[3] * ay + absA[5] * az + absA[6],
@@ -504,13 +506,8 @@ Interval Quadric::EncloseForSign(const Box3& box) const
   // interval form. (It is the form Enclose tries first, whose outward
   // roundings stay within gamma_20 M: a box decided here is decided alike
   // there, and outputs do not change.)
-  std::array<double, 10> absA;
-  for (int i = 0; i < 10; ++i)
-  {
-    absA[i] = std::fabs(this->A[i]);
-  }
   double lo = 0.0, hi = 0.0;
-  if (CentredFormDecides(this->A, absA, box, lo, hi))
+  if (CentredFormDecides(this->A, AbsoluteValues(this->A), box, lo, hi))
   {
     return { lo, hi };
   }
@@ -664,12 +661,9 @@ Quadric::Quadric(const std::array<double, 10>& coefficients)
   : A(coefficients)
 {
   Vec3 center;
-  if (this->EllipsoidCenter(center) && std::fabs(center[0]) <= LargestTrustedCoordinate &&
-    std::fabs(center[1]) <= LargestTrustedCoordinate && std::fabs(center[2]) <= LargestTrustedCoordinate)
+  if (this->EllipsoidCenter(center))
   {
-    double magnitude = 0.0;
-    const double f = ValueAndMagnitude(this->A, center[0], center[1], center[2], magnitude);
-    this->HasInterior = std::isfinite(f) && magnitude > SmallestTrustedMagnitude && f < -4e-14 * magnitude;
+    this->HasInterior = ProvenSign(this->A, center) < 0;
     this->Interior = center;
   }
 }
