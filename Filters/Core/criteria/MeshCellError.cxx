@@ -217,9 +217,14 @@ double SlackMagnitude(const CsgLeaf& leaf, const PrimitiveSet& primitives, const
   return std::max(primitives.Meshes[leaf.Primitive].Bounds().Magnitude(), cell.Magnitude());
 }
 
+double RoundingSlackFor(double magnitude, double size)
+{
+  return 16384.0 * DBL_EPSILON * magnitude + 1e-12 * size;
+}
+
 double RoundingSlack(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell)
 {
-  return 16384.0 * DBL_EPSILON * SlackMagnitude(leaf, primitives, cell) + 1e-12 * cell.Diagonal();
+  return RoundingSlackFor(SlackMagnitude(leaf, primitives, cell), cell.Diagonal());
 }
 
 HausdorffEstimate CertifiedMeshPatchError(const PolygonSet& surface,

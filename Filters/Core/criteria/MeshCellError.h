@@ -299,6 +299,10 @@ HausdorffEstimate CertifiedMeshPatchError(const PolygonSet& surface,
 /// and the largest coordinate M it is taken of.
 double RoundingSlack(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell);
 double SlackMagnitude(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell);
+/// That slack for coordinates up to `magnitude` in a region `size` across:
+/// 16384 ulps of the magnitude plus 1e-12 of the size (header: Rounding) -
+/// the cells' and the certified decimation's (ErrorCertificates.h) alike.
+double RoundingSlackFor(double magnitude, double size);
 
 /// The fan around `apex` over `loop`: triangles (p_k, p_k+1, apex).
 std::vector<SourceTriangle> ApexFan(const std::vector<Vec3>& loop, const Vec3& apex);

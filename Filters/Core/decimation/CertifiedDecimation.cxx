@@ -4,6 +4,7 @@
 #include "ErrorCertificates.h"
 #include "FeatureRules.h"
 #include "LiveSurface.h"
+#include "MeshCellError.h"
 #include "ScratchPool.h"
 #include "TopologyReport.h"
 
@@ -126,7 +127,7 @@ Decimator::Decimator(TriangleMesh& mesh, std::vector<double>& bounds, Releasable
   , Labels(labels)
   , Parameters(parameters)
   , Extent(PointsBox(mesh.Points))
-  , Slack(DecimationRoundingSlack(this->Extent))
+  , Slack(RoundingSlackFor(this->Extent.Magnitude(), this->Extent.Diagonal()))
   , Live(mesh, labels, parameters.FeatureAngle, BucketWidth(this->Extent, parameters.Tolerance))
   , Stamp(mesh.Points.size(), 0)
   , Error(this->Live, bounds, this->Parameters, surface, this->Extent, BucketWidth(this->Extent, parameters.Tolerance))

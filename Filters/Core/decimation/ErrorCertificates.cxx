@@ -1,18 +1,13 @@
 #include "ErrorCertificates.h"
 
 #include "ConvexPolygons.h"
+#include "MeshCellError.h"
 
 #include <algorithm>
-#include <cfloat>
 #include <cmath>
 
 namespace tpc
 {
-
-double DecimationRoundingSlack(const Box3& extent)
-{
-  return 16384.0 * DBL_EPSILON * extent.Magnitude() + 1e-12 * extent.Diagonal();
-}
 
 ErrorCertificates::ErrorCertificates(const LiveSurface& live, const std::vector<double>& bounds,
   const DecimationParameters& parameters, const ExactMesh& surface, const Box3& extent, double bucketWidth)
@@ -21,7 +16,7 @@ ErrorCertificates::ErrorCertificates(const LiveSurface& live, const std::vector<
   , Parameters(parameters)
   , Surface(surface)
   , SurfaceGrid(extent.lo, bucketWidth)
-  , Slack(DecimationRoundingSlack(extent))
+  , Slack(RoundingSlackFor(extent.Magnitude(), extent.Diagonal()))
   , SlackMagnitude(extent.Magnitude())
 {
   if (surface.Mesh)

@@ -23,11 +23,6 @@ struct CertificateMarks
   VisitMarks Surface;   ///< S's triangles
 };
 
-/// Distances are computed in floating point (PolygonHausdorff.h): the same
-/// slack as the cells' certificates (MeshCellError.cxx, RoundingSlack), for
-/// coordinates within `extent`.
-double DecimationRoundingSlack(const Box3& extent);
-
 class ErrorCertificates
 {
 public:
@@ -35,7 +30,7 @@ public:
   /// are when Certify runs; `surface` is S where known. `extent` is the
   /// surface's points' box: S's triangles are listed in a grid of buckets
   /// `bucketWidth` wide from its corner, and the distances' rounding slack
-  /// is taken of its coordinates (DecimationRoundingSlack; the polygons'
+  /// is taken of its coordinates (MeshCellError.h: RoundingSlackFor; the polygons'
   /// PolygonSet::SetSlackMagnitude).
   ErrorCertificates(const LiveSurface& live, const std::vector<double>& bounds,
     const DecimationParameters& parameters, const ExactMesh& surface, const Box3& extent, double bucketWidth);
