@@ -8,6 +8,7 @@
 #include "ConvexPolygons.h"
 
 #include <cmath>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -31,10 +32,10 @@ struct McCompatibility
   /// section (PlanarCell.h), so its patch is exact whatever its size.
   bool Planar = false;
   /// One quadric is the surface in the cell and the certified error of any
-  /// patch of it (QuadricCellError.h), or one mesh and the certified error of
-  /// its final fan (MeshCellError.h), PredictedError, is within the
-  /// tolerance: the cell may pass at any size, and its error is certified on
-  /// its final patch (CellPatches.h).
+  /// patch of it, or of the fan over its own loop (QuadricCellError.h), or
+  /// one mesh and the certified error of its final fan (MeshCellError.h),
+  /// PredictedError, is within the tolerance: the cell may pass at any size,
+  /// and its error is certified on its final patch (CellPatches.h).
   bool ErrorBounded = false;
   double PredictedError = HUGE_VAL;
   /// ErrorBounded where one mesh is the surface in a cell larger than the
@@ -50,6 +51,13 @@ struct McCompatibility
   /// the tolerance (QuadricCellError.h): its patch is the fan around its
   /// crease apex, over a loop drawn through the crease on its tiles.
   bool CreaseFan = false;
+  /// Set where one quadric (or several, no crease) is the surface in a cell
+  /// larger than the tolerance whose bound for any patch failed, but whose
+  /// fan around this apex over its own loop, refined as crack patching
+  /// refines it, is within the tolerance (QuadricCellError.h: Predicted on
+  /// the cell's own loop): ErrorBounded then, the apex kept for the
+  /// extraction.
+  std::optional<Vec3> QuadricFanApex;
   /// Larger than the tolerance (the Hausdorff size test's own comparison).
   bool Oversized = false;
   /// Split for its size before the other tests: a spoke of every fan its
@@ -76,8 +84,9 @@ constexpr int FaceRefinementLevels = 10;
 /// - it is no larger than the tolerance (Hausdorff, 5.3.4), or the surface in
 ///   it is a plane section (PlanarCell.h: the patch is then exact), or one
 ///   quadric or one mesh whose certified error is within the tolerance
-///   (QuadricCellError.h, MeshCellError.h: for a mesh, decided last, on the
-///   loop the other tests traced);
+///   (QuadricCellError.h, MeshCellError.h: for a mesh, and for a quadric
+///   whose bound for any patch fails, decided last, on the loop the other
+///   tests traced);
 /// - each face can be tiled by MC-compatible tiles (complex face and edge,
 ///   face ambiguity, star-shaped w.r.t. the face; Lemma 1 per tile);
 /// - the surface draws at least one loop on the cell boundary (none while the

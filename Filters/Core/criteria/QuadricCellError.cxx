@@ -421,6 +421,57 @@ double PredictedCellError(const QuadricCellError& bound)
   return error * RoundingAllowance;
 }
 
+std::vector<PredictedChordTerms> PredictFanTerms(
+  const QuadricCellError& bound, const std::vector<Vec3>& loop, const Vec3& apex)
+{
+  const unsigned all = (1u << bound.Fields.size()) - 1;
+  // The final loop's points are crossings placed as the own loop's are: |F|
+  // there is about as small; the largest of the own loop's stands for theirs.
+  double pointTerm = 0.0;
+  for (const Vec3& p : loop)
+  {
+    pointTerm = std::max(pointTerm, CombinedMagnitude(bound, all, &p, 1, 0.0));
+  }
+  std::vector<PredictedChordTerms> terms;
+  const std::size_t m = loop.size();
+  for (std::size_t k = 0; k < m; ++k)
+  {
+    const Vec3 &a = loop[k], &b = loop[(k + 1) % m];
+    int face = -1;
+    for (int f = 0; f < 6 && face < 0; ++f)
+    {
+      const double plane = (f % 2 ? bound.Cell.hi : bound.Cell.lo)[f / 2];
+      face = a[f / 2] == plane && b[f / 2] == plane ? f : -1;
+    }
+    if (face < 0 || !(bound.FaceRise[face] > 0.0) || bound.FaceRise[face] == HUGE_VAL)
+    {
+      terms.push_back({ HUGE_VAL, HUGE_VAL });
+      continue;
+    }
+    const Vec3 ends[2] = { a, b };
+    const double chord2 = SquaredNorm(b - a);
+    const double onChord = CombinedMagnitude(bound, bound.FaceFields[face], ends, 2, 0.25 * chord2);
+    const double arc = onChord / bound.FaceRise[face] * RoundingAllowance; // delta_ab
+    const double ball = std::sqrt(SmallestBallRadiusSquared(a, b, apex)) + arc;
+    const double halfChord = 0.5 * std::sqrt(chord2) + arc;
+    const Vec3 v[3] = { a, b, apex };
+    terms.push_back({ (CombinedMagnitude(bound, all, v, 3, ball * ball) + pointTerm) / bound.Rise * RoundingAllowance,
+      (CombinedMagnitude(bound, bound.FaceFields[face], ends, 2, halfChord * halfChord) + pointTerm) *
+        (1.0 / bound.Rise + 1.0 / bound.FaceRise[face]) * RoundingAllowance });
+  }
+  return terms;
+}
+
+double PredictedFanError(const QuadricCellError& bound, const std::vector<Vec3>& loop, const Vec3& apex)
+{
+  double error = 0.0;
+  for (const PredictedChordTerms& t : PredictFanTerms(bound, loop, apex))
+  {
+    error = std::max({ error, t.Triangles, t.Chords });
+  }
+  return error;
+}
+
 double TriangleError(const QuadricCellError& bound, const Vec3& a, const Vec3& b, const Vec3& c)
 {
   const Vec3 v[3] = { a, b, c };

@@ -59,6 +59,45 @@
 // whose vertices lie on S in C: R <= D/2 (every triangle in C lies in C's
 // circumscribed ball, D the diagonal), L <= the face's diagonal.
 //
+// Predicted on the cell's own loop. The bound for any patch takes R = D/2
+// and chords as long as a face's diagonal, where a cell's own fan has far
+// smaller triangles: a sphere of radius 18 tolerances came out as 1 894
+// triangles on it alone, 906 with what follows. A cell larger than the
+// tolerance whose bound for any patch fails (by at most FanPredictionReach
+// times, McCompatibility.cxx) goes through the topology tests, and passes
+// if the fan around a fixed
+// apex c over its own loop L - one chord ab per face tile, its points on S -
+// is bounded within the tolerance for every loop crack patching can make of
+// L (PredictFanTerms): the final loop L' replaces each chord ab of a tile t
+// by points a = q_0, .., q_r = b of S's arc in t (its tiles refine t's, and
+// t, which passed the face tests, holds one arc of S from a to b). Then:
+// - The arc is within delta_ab = F_ab / g_phi of [a, b]: F rises at rate
+//   >= g_phi along m_phi on the face (g_phi > 0), so each line along m_phi
+//   meets S at most once in t, and the arc, connected from a to b, is a
+//   graph over the axis u across m_phi spanning a's u to b's - as does the
+//   chord. An arc point y and the chord point z at its u lie on one line
+//   along m_phi, inside t (convex), F(y) = 0 and |F(z)| <= F_ab (the
+//   chord's enclosure, (2)): |y - z| <= F_ab / g_phi.
+// - A triangle (c, q_i, q_i+1) lies within delta_ab of (c, a, b) - its
+//   vertices do - so in that triangle's smallest ball grown by delta_ab: its
+//   R is at most R_abc + delta_ab. A sub-chord (q_i, q_i+1) is at most
+//   |ab| + 2 delta_ab long (each end is a point of [a, b] moved by at most
+//   delta_ab).
+// So the certificate's terms (the formulas above, on L') are at most those
+// of (c, a, b) and ab with these lengths, plus the vertices' |F|, where the
+// own loop's largest |F| stands for the final points' (placed alike, by root
+// finding on sub-edges, to the last bits: the prediction only decides; the
+// guarantee rests on the certificate of the final patch). The apex c is the
+// point of S along n from L's centroid (or C's centre), 1/32 of C's width
+// inside it: strictly inside, so the fan over any simple loop is embedded
+// (LoopTriangulation.h, case 1). The extraction draws its usual patch and
+// certifies it; where that is not within the tolerance it draws the fan
+// around c (AdaptiveOctree::QuadricFanApexes) over the final loop and
+// certifies that. Tested: Core.QuadricCellError.FanPredictionBoundsTheFan
+// OverEveryRefinedLoop, chord by chord on a sphere, a saddle and a
+// hyperboloid (the conic arcs there stay within the triangles' own balls:
+// the delta allowance is for the argument, not attained).
+//
 // A plane (A = 0) gives zero: the patch is then the plane section
 // (PlanarCell.h says the same for several planes and flat meshes).
 //
@@ -192,6 +231,26 @@ double EdgeChordError(const QuadricCellError& bound, const Vec3& a, const Vec3& 
 /// the cell's faces): its triangles' terms and its chords' on the faces they
 /// lie in; +inf beyond the margin.
 double FanError(const QuadricCellError& bound, const std::vector<Vec3>& loop, const Vec3& apex);
+
+/// E_C of the fan around `apex` over any loop that refines `loop`, the
+/// cell's own (one chord per face tile, its points on S): each chord ab
+/// replaced by points of the arc of S in its tile from a to b, as crack
+/// patching does (header: Predicted on the cell's own loop); up to the
+/// rounding of the final points, for which the own points' stand. +inf
+/// where a chord lies on no face or on one without a rise.
+double PredictedFanError(const QuadricCellError& bound, const std::vector<Vec3>& loop, const Vec3& apex);
+
+/// PredictedFanError's terms for the part of the fan over one chord of
+/// `loop` (chord k from loop[k] to loop[k + 1]): at least TriangleError of
+/// every triangle around `apex` over a refinement of the chord, and
+/// EdgeChordError of every sub-chord of it.
+struct PredictedChordTerms
+{
+  double Triangles = HUGE_VAL;
+  double Chords = HUGE_VAL;
+};
+std::vector<PredictedChordTerms> PredictFanTerms(
+  const QuadricCellError& bound, const std::vector<Vec3>& loop, const Vec3& apex);
 
 /// An upper bound of E_C for any patch whose vertices lie on S in the cell
 /// (the subdivision's acceptance test); +inf when a face that may meet S has

@@ -357,6 +357,20 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
   TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches, quadric ? &*quadric : nullptr,
     creaseApex ? &*creaseApex : nullptr);
   certificate.Error = !bounded ? 0.0 : quadric ? CertifiedPatchError(*quadric, patches, mesh) : HUGE_VAL;
+  const auto fan = tree.QuadricFanApexes.find(n);
+  if (quadric && certificate.Error == HUGE_VAL && fan != tree.QuadricFanApexes.end())
+  {
+    // The fan the cell was accepted with, over the final loop
+    // (QuadricCellError.h: Predicted on the cell's own loop).
+    CellPatches predicted;
+    TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, predicted, nullptr, &fan->second);
+    const double error = CertifiedPatchError(*quadric, predicted, mesh);
+    if (error < HUGE_VAL)
+    {
+      patches = std::move(predicted);
+      certificate.Error = error;
+    }
+  }
   return certificate;
 }
 

@@ -149,6 +149,13 @@ public:
   };
   std::unordered_map<std::uint32_t, MeshCellPrediction> MeshCellPredictions;
 
+  /// The apex of each error-bounded leaf larger than the tolerance accepted
+  /// on the fan over its own loop where a quadric is the surface
+  /// (QuadricCellError.h: Predicted on the cell's own loop). The extraction
+  /// draws that fan where its usual patch is not certified within the
+  /// tolerance.
+  std::unordered_map<std::uint32_t, Vec3> QuadricFanApexes;
+
   /// Tiles of faces that were refined (FaceRefinement.h), for leaves that
   /// passed the tests; faces not listed are a single tile.
   std::unordered_map<FaceKey, std::vector<FaceTile>, FaceKeyHash> FaceRefinements;

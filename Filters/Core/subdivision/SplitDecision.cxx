@@ -58,6 +58,10 @@ bool DecideCell(AdaptiveOctree& tree, std::uint32_t n, const CellTests& tests, c
     {
       tree.MeshCellPredictions[n] = v.MeshPrediction;
     }
+    if (v.QuadricFanApex)
+    {
+      tree.QuadricFanApexes[n] = *v.QuadricFanApex;
+    }
     result.SurfaceCells += mine;
     result.ChordRefinedCells += v.ChordsRefined ? mine : 0;
     result.PlanarSurfaceCells += v.Planar ? mine : 0;
