@@ -98,14 +98,14 @@ public:
   std::vector<OctreeNode> Nodes;
   /// Pruned expression of each node that meets the surface (null elsewhere).
   std::vector<CsgExpressionPtr> Expressions;
-  /// Where the scene has no mesh leaf: the scene's expression pruned to each
-  /// such node's cell grown by the tolerance (GrownByMargin,
-  /// QuadricCellError.h), each from its parent's (a child's grown cell lies
-  /// in its parent's); empty for scenes with meshes, whose bounds look no
-  /// further than the cell's own expression. It equals the scene's on the
-  /// grown cell, but may hold fewer leaves than pruning the scene there
-  /// directly: an enclosure on a parent's box may prove a sign that one on
-  /// the child's does not.
+  /// For each node whose own expression has no mesh leaf: the scene's
+  /// expression pruned to its cell grown by the tolerance (GrownByMargin,
+  /// QuadricCellError.h), from its parent's where that has one (a child's
+  /// grown cell lies in its parent's), else from the scene's; null for nodes
+  /// holding a mesh, whose bounds look no further than the cell's own
+  /// expression. It equals the scene's on the grown cell, but may hold fewer
+  /// leaves than pruning the scene there directly: an enclosure on a
+  /// parent's box may prove a sign that one on the child's does not.
   std::vector<CsgExpressionPtr> NearExpressions;
   /// An expression equal to the scene's on node n's cell grown by `margin`:
   /// its NearExpressions entry for a margin up to the tolerance, else the

@@ -163,10 +163,10 @@ void LevelByLevel::MakeRoots()
       this->Active.push_back(static_cast<std::uint32_t>(t));
     }
   }
-  if (!this->Scene.Expression->HasMeshLeaves())
+  tree.NearExpressions.resize(static_cast<std::size_t>(treeCount));
+  for (const std::uint32_t t : this->Active)
   {
-    tree.NearExpressions.resize(static_cast<std::size_t>(treeCount));
-    for (const std::uint32_t t : this->Active)
+    if (!tree.Expressions[t]->HasMeshLeaves())
     {
       tree.NearExpressions[t] = this->NearExpressionOf(this->Scene.Expression, 0, tree.Nodes[t].Ijk);
     }
@@ -376,11 +376,7 @@ bool LevelByLevel::MakeChildren(const std::vector<std::uint32_t>& parents)
   const std::size_t first = tree.Nodes.size();
   tree.Nodes.resize(first + 8 * parents.size());
   tree.Expressions.resize(tree.Nodes.size());
-  const bool near = !tree.NearExpressions.empty();
-  if (near)
-  {
-    tree.NearExpressions.resize(tree.Nodes.size());
-  }
+  tree.NearExpressions.resize(tree.Nodes.size());
   for (std::size_t i = 0; i < parents.size(); ++i)
   {
     tree.Nodes[parents[i]].FirstChild = static_cast<std::int32_t>(first + 8 * i);
@@ -404,7 +400,9 @@ bool LevelByLevel::MakeChildren(const std::vector<std::uint32_t>& parents)
             if (pruned.Sign == RegionSign::Mixed)
             {
               tree.Expressions[ci] = pruned.Expression;
-              if (near)
+              // (From the parent's where it has one; else from the scene,
+              // once per cell that first holds no mesh.)
+              if (tree.NearExpressions[parents[i]] || !pruned.Expression->HasMeshLeaves())
               {
                 tree.NearExpressions[ci] =
                   this->NearExpressionOf(tree.NearExpression(parents[i], this->Parameters.HausdorffTolerance),
@@ -421,10 +419,7 @@ bool LevelByLevel::MakeChildren(const std::vector<std::uint32_t>& parents)
   for (std::size_t i = 0; i < parents.size(); ++i)
   {
     tree.Expressions[parents[i]].reset();
-    if (near)
-    {
-      tree.NearExpressions[parents[i]].reset();
-    }
+    tree.NearExpressions[parents[i]].reset();
     for (std::size_t ci = first + 8 * i; ci < first + 8 * i + 8; ++ci)
     {
       if (tree.Nodes[ci].State == CellState::Surface)

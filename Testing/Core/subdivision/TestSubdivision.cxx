@@ -340,15 +340,61 @@ TEST(Subdivision, NearExpressionsAreTheScenesOnEveryGrownCell)
   EXPECT_LE(largest, 5u);
 }
 
-TEST(Subdivision, NoNearExpressionsWhereTheSceneHasAMesh)
+TEST(Subdivision, NearExpressionsWhereACellHoldsNoMesh)
 {
+  // A cube mesh minus eight spheres inside it: cells of a sphere alone keep
+  // the scene pruned to their grown cell (the quadric bound looks there, not
+  // at the whole scene with its mesh), cells holding the mesh none.
   SceneBuilder b;
-  b.Finish(SceneBuilder::Difference(
-    { b.Mesh(tpctest::CubeMesh({ -0.5, -0.5, -0.5 }, { 0.5, 0.5, 0.5 })), b.Sphere({ 0.5, 0.5, 0.5 }, 0.3) }));
-  const ContourRun r = Contour(b.Scene, { { -0.5, -0.5, -0.5 }, { 0.5, 0.5, 0.5 } }, 1.0 / 16);
-  EXPECT_TRUE(r.Contoured);
-  EXPECT_TRUE(r.Subdivision.Octree.NearExpressions.empty());
-  EXPECT_EQ(r.Subdivision.Octree.NearExpression(0, r.Tolerance), r.Subdivision.Octree.SceneExpression);
+  std::vector<tpc::CsgTerm> parts{ b.Mesh(tpctest::CubeMesh({ -0.5, -0.5, -0.5 }, { 0.5, 0.5, 0.5 })) };
+  for (int k = 0; k < 8; ++k)
+  {
+    parts.push_back(b.Sphere({ k & 1 ? 0.21 : -0.2, k & 2 ? 0.22 : -0.19, k & 4 ? 0.2 : -0.23 }, 0.12));
+  }
+  b.Finish(SceneBuilder::Difference(parts));
+  const ContourRun r = Contour(b.Scene, { { -0.5, -0.5, -0.5 }, { 0.5, 0.5, 0.5 } }, 1.0 / 64);
+  EXPECT_TRUE(r.Guaranteed);
+  EXPECT_EQ(r.Report.Components, 9);
+  const tpc::AdaptiveOctree& tree = r.Subdivision.Octree;
+  ASSERT_EQ(tree.NearExpressions.size(), tree.Nodes.size());
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::size_t withMesh = 0, without = 0, largest = 0;
+  for (std::uint32_t n = 0; n < tree.Nodes.size(); ++n)
+  {
+    const tpc::OctreeNode& node = tree.Nodes[n];
+    if (!node.IsLeaf() || node.State != tpc::CellState::Surface)
+    {
+      continue;
+    }
+    if (tree.Expressions[n]->HasMeshLeaves())
+    {
+      ++withMesh;
+      EXPECT_FALSE(tree.NearExpressions[n]) << "leaf " << n;
+      EXPECT_EQ(tree.NearExpression(n, r.Tolerance), tree.SceneExpression);
+      continue;
+    }
+    ++without;
+    ASSERT_TRUE(tree.NearExpressions[n]) << "leaf " << n;
+    const tpc::CsgExpression& near = *tree.NearExpressions[n];
+    largest = std::max(largest, near.Leaves().size());
+    const Box3 grown = tpc::GrownByMargin(tree.Grid.CellBox(node.Level, node.Ijk), tree.HausdorffTolerance);
+    for (int s = 0; s < 40; ++s)
+    {
+      Vec3 p;
+      for (int a = 0; a < 3; ++a)
+      {
+        p[a] = grown.lo[a] + u(rng) * (grown.hi[a] - grown.lo[a]);
+      }
+      ASSERT_EQ(near.IsInside(p, b.Scene.Primitives), b.Scene.Expression->IsInside(p, b.Scene.Primitives))
+        << "leaf " << n << " at " << p[0] << " " << p[1] << " " << p[2];
+    }
+  }
+  EXPECT_GT(withMesh, 20u);
+  EXPECT_GT(without, 100u);
+  // Not the scene again (the mesh and eight spheres): one sphere.
+  EXPECT_EQ(b.Scene.Expression->Leaves().size(), 9u);
+  EXPECT_EQ(largest, 1u);
 }
 
 TEST(Subdivision, LatticePlacementsDifferAndAllCoverTheDomain)
