@@ -29,26 +29,12 @@ Quadric SignedQuadric(const Quadric& q, int sigma)
   return Quadric(a);
 }
 
-/// Encloses grad f(p) . d (interval arithmetic on exact inputs).
-Interval EncloseDirectionalDerivative(const Quadric& q, const Vec3& p, const Vec3& d)
-{
-  const Box3 point{ p, p };
-  return q.EncloseDerivative(point, 0) * Interval(d[0]) + q.EncloseDerivative(point, 1) * Interval(d[1]) +
-    q.EncloseDerivative(point, 2) * Interval(d[2]);
-}
-
-/// A proven lower bound of grad f . d over the box (affine: its minimum is at
-/// a corner). A flat box (a face) repeats corners, harmlessly.
+/// A proven lower bound of grad f . d over the box (Quadric::
+/// EncloseDirectionalDerivative: affine, its natural extension is exact up
+/// to rounding). A flat box (a face) is a rectangle.
 double MinimumRise(const Quadric& q, const Box3& box, const Vec3& d)
 {
-  double lowest = HUGE_VAL;
-  for (int c = 0; c < 8; ++c)
-  {
-    const Vec3 corner{ (c & 1) ? box.hi[0] : box.lo[0], (c & 2) ? box.hi[1] : box.lo[1],
-      (c & 4) ? box.hi[2] : box.lo[2] };
-    lowest = std::min(lowest, EncloseDirectionalDerivative(q, corner, d).lo);
-  }
-  return lowest;
+  return q.EncloseDirectionalDerivative(box, d).lo;
 }
 
 /// An upper bound of the spectral norm of A (half the Hessian): the smaller
@@ -255,6 +241,78 @@ Box3 FaceBox(const Box3& cell, int face)
   (face % 2 ? f.lo : f.hi)[axis] = (face % 2 ? cell.hi : cell.lo)[axis];
   return f;
 }
+
+/// `box` grown by `reach` on every side (rounded outward), within `limit`.
+Box3 GrownWithin(const Box3& box, double reach, const Box3& limit)
+{
+  Box3 grown = GrownByMargin(box, reach);
+  for (int a = 0; a < 3; ++a)
+  {
+    grown.lo[a] = std::max(grown.lo[a], limit.lo[a]);
+    grown.hi[a] = std::min(grown.hi[a], limit.hi[a]);
+  }
+  return grown;
+}
+
+/// The bounding box of `count` points.
+Box3 BoxAround(const Vec3* points, int count)
+{
+  Box3 box{ points[0], points[0] };
+  for (int k = 1; k < count; ++k)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      box.lo[a] = std::min(box.lo[a], points[k][a]);
+      box.hi[a] = std::max(box.hi[a], points[k][a]);
+    }
+  }
+  return box;
+}
+
+/// The term F / g_T of a patch triangle with |F| <= `magnitude` on it, or of
+/// the triangles refining one, lying in `around` (header: Local rises).
+double LocalTriangleTerm(const QuadricCellError& bound, double magnitude, const Box3& around)
+{
+  const double reach = magnitude / bound.Rise;
+  if (!(reach <= bound.Margin))
+  {
+    return reach; // (beyond the margin, failed: no local rise outside C+)
+  }
+  const unsigned all = (1u << bound.Fields.size()) - 1;
+  const Box3 region = GrownWithin(around, reach, GrownByMargin(bound.Cell, bound.Margin));
+  return magnitude / std::max(bound.Rise, MinimumRiseOfAll(bound, all, region, bound.Direction));
+}
+
+/// g_phi over the stretch of face `face` between a chord with |F| <=
+/// `magnitude` on it, lying in `around`, and its arc (header: Local rises);
+/// 0 or +inf as FaceRise where the face has no rise or misses S.
+double LocalFaceRise(const QuadricCellError& bound, int face, double magnitude, const Box3& around)
+{
+  const double rise = bound.FaceRise[face];
+  if (!(rise > 0.0) || rise == HUGE_VAL)
+  {
+    return rise;
+  }
+  const Box3 stretch = GrownWithin(around, magnitude / rise, FaceBox(bound.Cell, face));
+  return std::max(rise, MinimumRiseOfAll(bound, bound.FaceFields[face], stretch, bound.FaceDirection[face]));
+}
+
+/// The term F (1/g + 1/g_phi) of a chord on face `face` with |F| <=
+/// `magnitude` on it, or of the sub-chords refining one, lying in `around`
+/// (header: Local rises); +inf where the face has no rise or misses S.
+double LocalChordTerm(const QuadricCellError& bound, int face, double magnitude, const Box3& around)
+{
+  const double rise = LocalFaceRise(bound, face, magnitude, around);
+  if (!(rise > 0.0) || rise == HUGE_VAL) // (no chord was expected on a face missing S)
+  {
+    return HUGE_VAL;
+  }
+  const unsigned all = (1u << bound.Fields.size()) - 1;
+  const Box3 stretch = GrownWithin(around, magnitude / bound.FaceRise[face], FaceBox(bound.Cell, face));
+  const Box3 inward = GrownWithin(stretch, magnitude / bound.Rise, bound.Cell);
+  const double normalRise = std::max(bound.Rise, MinimumRiseOfAll(bound, all, inward, bound.Direction));
+  return magnitude * (1.0 / normalRise + 1.0 / rise);
+}
 } // namespace
 
 Box3 GrownByMargin(const Box3& cell, double margin)
@@ -451,13 +509,16 @@ std::vector<PredictedChordTerms> PredictFanTerms(
     const Vec3 ends[2] = { a, b };
     const double chord2 = SquaredNorm(b - a);
     const double onChord = CombinedMagnitude(bound, bound.FaceFields[face], ends, 2, 0.25 * chord2);
-    const double arc = onChord / bound.FaceRise[face] * RoundingAllowance; // delta_ab
+    const Box3 chordBox = BoxAround(ends, 2);
+    // delta_ab (header: Predicted on the cell's own loop; Local rises).
+    const double arc = onChord / LocalFaceRise(bound, face, onChord, chordBox) * RoundingAllowance;
     const double ball = std::sqrt(SmallestBallRadiusSquared(a, b, apex)) + arc;
     const double halfChord = 0.5 * std::sqrt(chord2) + arc;
     const Vec3 v[3] = { a, b, apex };
-    terms.push_back({ (CombinedMagnitude(bound, all, v, 3, ball * ball) + pointTerm) / bound.Rise * RoundingAllowance,
-      (CombinedMagnitude(bound, bound.FaceFields[face], ends, 2, halfChord * halfChord) + pointTerm) *
-        (1.0 / bound.Rise + 1.0 / bound.FaceRise[face]) * RoundingAllowance });
+    const double onTriangles = CombinedMagnitude(bound, all, v, 3, ball * ball) + pointTerm;
+    const double onSubChords = CombinedMagnitude(bound, bound.FaceFields[face], ends, 2, halfChord * halfChord) + pointTerm;
+    terms.push_back({ LocalTriangleTerm(bound, onTriangles, GrownByMargin(BoxAround(v, 3), arc)) * RoundingAllowance,
+      LocalChordTerm(bound, face, onSubChords, GrownByMargin(chordBox, arc)) * RoundingAllowance });
   }
   return terms;
 }
@@ -476,7 +537,8 @@ double TriangleError(const QuadricCellError& bound, const Vec3& a, const Vec3& b
 {
   const Vec3 v[3] = { a, b, c };
   const unsigned all = (1u << bound.Fields.size()) - 1;
-  return CombinedMagnitude(bound, all, v, 3, SmallestBallRadiusSquared(a, b, c)) / bound.Rise * RoundingAllowance;
+  const double magnitude = CombinedMagnitude(bound, all, v, 3, SmallestBallRadiusSquared(a, b, c));
+  return LocalTriangleTerm(bound, magnitude, BoxAround(v, 3)) * RoundingAllowance;
 }
 
 double ChordError(const QuadricCellError& bound, int face, const Vec3& a, const Vec3& b)
@@ -488,7 +550,7 @@ double ChordError(const QuadricCellError& bound, int face, const Vec3& a, const 
   }
   const Vec3 v[2] = { a, b };
   const double ends = CombinedMagnitude(bound, bound.FaceFields[face], v, 2, 0.25 * SquaredNorm(b - a));
-  return ends * (1.0 / bound.Rise + 1.0 / rise) * RoundingAllowance;
+  return LocalChordTerm(bound, face, ends, BoxAround(v, 2)) * RoundingAllowance;
 }
 
 int ExactSign(const QuadricCellError& bound, const Vec3& p)

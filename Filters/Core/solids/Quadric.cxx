@@ -532,6 +532,18 @@ Interval Quadric::EncloseDerivative(const Box3& box, int axis) const
   }
 }
 
+Interval Quadric::EncloseDirectionalDerivative(const Box3& box, const Vec3& d) const
+{
+  const auto& a = this->A;
+  const Interval dx(d[0]), dy(d[1]), dz(d[2]);
+  const Interval gx = Interval(2 * a[0]) * dx + Interval(a[3]) * dy + Interval(a[5]) * dz;
+  const Interval gy = Interval(a[3]) * dx + Interval(2 * a[1]) * dy + Interval(a[4]) * dz;
+  const Interval gz = Interval(a[5]) * dx + Interval(a[4]) * dy + Interval(2 * a[2]) * dz;
+  const Interval h = Interval(a[6]) * dx + Interval(a[7]) * dy + Interval(a[8]) * dz;
+  return gx * Interval(box.lo[0], box.hi[0]) + gy * Interval(box.lo[1], box.hi[1]) +
+    gz * Interval(box.lo[2], box.hi[2]) + h;
+}
+
 Interval Quadric::EncloseStarCondition(
   const Box3& box, const StarWitness& witness, int sigma) const
 {

@@ -92,6 +92,11 @@ public:
   bool ChangesSignOn(const Box3& box) const;
   /// Enclosure of df/dx_axis over the box.
   Interval EncloseDerivative(const Box3& box, int axis) const;
+  /// Encloses grad f . d over the box: an affine function of x, written
+  /// G . x + h with G = 2 A d (A half the Hessian) and h = b . d, so its
+  /// natural extension uses each coordinate once and is exact up to
+  /// rounding, in one evaluation where its corners took eight.
+  Interval EncloseDirectionalDerivative(const Box3& box, const Vec3& d) const;
   /// Enclosure of sigma * grad f(x) . (w x - p) over the box.
   Interval EncloseStarCondition(const Box3& box, const StarWitness& witness, int sigma) const;
 
