@@ -111,9 +111,12 @@ bool PredictOverFinerChords(const AdaptiveOctree& tree, std::uint32_t n, const P
 /// crease, CsgCreaseCrossing.h), is one loop whose fan around CreaseApex is
 /// certified within the tolerance. (The extraction draws the same fan over
 /// the final loop, which only adds points on the same traces, and certifies
-/// that again.)
+/// that again.) `ownLoop`: the bound for any patch failed, so the fan's
+/// error over every loop refining this one must be predicted within it too
+/// (QuadricCellError.h: Predicted on the cell's own loop, with the crease's
+/// crossings among the loop's points).
 bool CreaseFanWithinTolerance(const QuadricCellError& bound, const Vec3& apex, const CellBoundary& boundary,
-  const CsgExpressionPtr& expression, const PrimitiveSet& prims, const RootGrid& grid, double tolerance)
+  const CsgExpressionPtr& expression, const PrimitiveSet& prims, const RootGrid& grid, double tolerance, bool ownLoop)
 {
   CellBoundary bent = boundary;
   MarkCsgCreaseTiles(bent, prims, grid, [&](int, std::size_t) { return &expression; });
@@ -143,20 +146,22 @@ bool CreaseFanWithinTolerance(const QuadricCellError& bound, const Vec3& apex, c
       return false;
     }
   }
-  return FanError(bound, loop, apex) <= tolerance;
+  return FanError(bound, loop, apex) <= tolerance && (!ownLoop || PredictedFanError(bound, loop, apex) <= tolerance);
 }
 
 /// How far beyond the tolerance the bound for any patch of a quadric cell may
 /// be for the fan over its own loop to be tried (after the topology tests,
-/// which cost more than a split). Measured on spheres of radius 3 to 40
-/// tolerances: of the 241 cells where the fan was within the margin, 5 had
-/// the bound for any patch beyond 4 margins; of the 451 where it was not,
-/// 168.
+/// which cost more than a split). Measured (with local rises) on spheres of
+/// radius 3 to 40 tolerances and the benchmark's sphere, demo CSG and plate
+/// at 1/64 to 1/256, trying up to 16 times: of the 3 583 cells whose fan was
+/// within the tolerance, 43 had the bound for any patch beyond 4 times it;
+/// of the 5 397 whose fan was not, 1 815.
 constexpr double FanPredictionReach = 4.0;
 
 /// The fan a quadric cell larger than the tolerance may be accepted with
 /// (QuadricCellError.h: Predicted on the cell's own loop): over its one
-/// loop, its points placed as the extraction places them, around the point
+/// loop, its points placed by PlaceSubEdgeCrossing as the extraction places
+/// a crossing (where a neighbour placed it first, up to rounding), around the point
 /// of S along n from the loop's centroid (or the cell's centre), 1/32 of
 /// the cell's width inside it. The apex where PredictedFanError, set in
 /// `error`, is within the tolerance (the bound's margin); nothing otherwise.
@@ -236,15 +241,20 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     v.PredictedError = quadric ? PredictedCellError(*quadric) : HUGE_VAL;
     // (A crease cell without a crease point well inside has no fan to
     // check: it splits before the costlier tests.)
-    creaseApex = v.PredictedError <= tolerance && quadric->Crease ? CreaseApex(*quadric, prims) : std::nullopt;
+    creaseApex = quadric && quadric->Crease && v.PredictedError <= FanPredictionReach * tolerance
+      ? CreaseApex(*quadric, prims)
+      : std::nullopt;
     v.ErrorBounded = v.PredictedError <= tolerance && (!quadric->Crease || creaseApex);
   }
+  // (A crease cell whose bound for any patch fails: perhaps its fan over its
+  // own loop, as for one quadric below.)
+  const bool creaseFanOwnLoop = !v.ErrorBounded && creaseApex.has_value();
   const bool meshBounded = v.Oversized && !uniform && !planar && !v.ErrorBounded && LoneMeshLeaf(*expression);
   // (Bounded, but not for any patch: perhaps for the fan over its own loop,
   // once the tests traced it.)
   const bool quadricFan = v.Oversized && !uniform && !planar && !v.ErrorBounded && quadric && !quadric->Crease &&
     v.PredictedError <= FanPredictionReach * tolerance;
-  if (v.Oversized && !planar && !v.ErrorBounded && !meshBounded && !quadricFan)
+  if (v.Oversized && !planar && !v.ErrorBounded && !meshBounded && !quadricFan && !creaseFanOwnLoop)
   {
     v.Reason = uniform ? SplitReason::ComplexVoxel : SplitReason::HausdorffSize;
     return v;
@@ -348,15 +358,16 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
       }
     }
   }
-  else if (v.ErrorBounded && quadric->Crease)
+  else if ((v.ErrorBounded && quadric->Crease) || creaseFanOwnLoop)
   {
-    if (!CreaseFanWithinTolerance(*quadric, *creaseApex, boundary, expression, prims, grid, tolerance))
+    if (!CreaseFanWithinTolerance(
+          *quadric, *creaseApex, boundary, expression, prims, grid, tolerance, creaseFanOwnLoop))
     {
       v.ErrorBounded = false;
       v.Reason = SplitReason::HausdorffSize;
       return v;
     }
-    v.CreaseFan = true;
+    v.ErrorBounded = v.CreaseFan = true;
   }
   else if (quadricFan)
   {

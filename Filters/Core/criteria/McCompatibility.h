@@ -49,7 +49,8 @@ struct McCompatibility
   AdaptiveOctree::MeshCellPrediction MeshPrediction;
   /// ErrorBounded where a crease of two quadrics crosses a cell larger than
   /// the tolerance (QuadricCellError.h): its patch is the fan around its
-  /// crease apex, over a loop drawn through the crease on its tiles.
+  /// crease apex, over a loop drawn through the crease on its tiles (bounded
+  /// for any patch, or predicted over that loop).
   bool CreaseFan = false;
   /// Set where one quadric (or several, no crease) is the surface in a cell
   /// larger than the tolerance whose bound for any patch failed, but whose

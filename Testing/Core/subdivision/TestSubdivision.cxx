@@ -286,6 +286,29 @@ TEST(Subdivision, SpheresOverlappingByAHairFormOneSolid)
   EXPECT_FALSE(old.Guaranteed);
 }
 
+namespace
+{
+/// `near` says what `scene` says at random points of leaf n's cell grown by
+/// the tolerance.
+void ExpectSameOnGrownCell(const tpc::AdaptiveOctree& tree, std::uint32_t n, const tpc::CsgExpression& near,
+  const tpc::CsgExpression& scene, const tpc::PrimitiveSet& primitives, std::mt19937_64& rng)
+{
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const tpc::OctreeNode& node = tree.Nodes[n];
+  const Box3 grown = tpc::GrownByMargin(tree.Grid.CellBox(node.Level, node.Ijk), tree.HausdorffTolerance);
+  for (int s = 0; s < 40; ++s)
+  {
+    Vec3 p;
+    for (int a = 0; a < 3; ++a)
+    {
+      p[a] = grown.lo[a] + u(rng) * (grown.hi[a] - grown.lo[a]);
+    }
+    ASSERT_EQ(near.IsInside(p, primitives), scene.IsInside(p, primitives))
+      << "leaf " << n << " at " << p[0] << " " << p[1] << " " << p[2];
+  }
+}
+} // namespace
+
 TEST(Subdivision, NearExpressionsAreTheScenesOnEveryGrownCell)
 {
   // A plate with a row of holes: many primitives, few near any one cell.
@@ -308,7 +331,6 @@ TEST(Subdivision, NearExpressionsAreTheScenesOnEveryGrownCell)
   ASSERT_EQ(tree.NearExpressions.size(), tree.Nodes.size());
   const std::size_t sceneLeaves = b.Scene.Expression->Leaves().size();
   std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
   std::size_t checked = 0, largest = 0;
   for (std::uint32_t n = 0; n < tree.Nodes.size(); ++n)
   {
@@ -320,17 +342,7 @@ TEST(Subdivision, NearExpressionsAreTheScenesOnEveryGrownCell)
     ASSERT_TRUE(tree.NearExpressions[n]) << "surface leaf " << n;
     const tpc::CsgExpression& near = *tree.NearExpressions[n];
     largest = std::max(largest, near.Leaves().size());
-    const Box3 grown = tpc::GrownByMargin(tree.Grid.CellBox(node.Level, node.Ijk), tree.HausdorffTolerance);
-    for (int s = 0; s < 40; ++s)
-    {
-      Vec3 p;
-      for (int a = 0; a < 3; ++a)
-      {
-        p[a] = grown.lo[a] + u(rng) * (grown.hi[a] - grown.lo[a]);
-      }
-      ASSERT_EQ(near.IsInside(p, b.Scene.Primitives), b.Scene.Expression->IsInside(p, b.Scene.Primitives))
-        << "leaf " << n << " at " << p[0] << " " << p[1] << " " << p[2];
-    }
+    ExpectSameOnGrownCell(tree, n, near, *b.Scene.Expression, b.Scene.Primitives, rng);
     ++checked;
   }
   EXPECT_GT(checked, 100u);
@@ -358,7 +370,6 @@ TEST(Subdivision, NearExpressionsWhereACellHoldsNoMesh)
   const tpc::AdaptiveOctree& tree = r.Subdivision.Octree;
   ASSERT_EQ(tree.NearExpressions.size(), tree.Nodes.size());
   std::mt19937_64 rng(9);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
   std::size_t withMesh = 0, without = 0, largest = 0;
   for (std::uint32_t n = 0; n < tree.Nodes.size(); ++n)
   {
@@ -378,17 +389,7 @@ TEST(Subdivision, NearExpressionsWhereACellHoldsNoMesh)
     ASSERT_TRUE(tree.NearExpressions[n]) << "leaf " << n;
     const tpc::CsgExpression& near = *tree.NearExpressions[n];
     largest = std::max(largest, near.Leaves().size());
-    const Box3 grown = tpc::GrownByMargin(tree.Grid.CellBox(node.Level, node.Ijk), tree.HausdorffTolerance);
-    for (int s = 0; s < 40; ++s)
-    {
-      Vec3 p;
-      for (int a = 0; a < 3; ++a)
-      {
-        p[a] = grown.lo[a] + u(rng) * (grown.hi[a] - grown.lo[a]);
-      }
-      ASSERT_EQ(near.IsInside(p, b.Scene.Primitives), b.Scene.Expression->IsInside(p, b.Scene.Primitives))
-        << "leaf " << n << " at " << p[0] << " " << p[1] << " " << p[2];
-    }
+    ExpectSameOnGrownCell(tree, n, near, *b.Scene.Expression, b.Scene.Primitives, rng);
   }
   EXPECT_GT(withMesh, 20u);
   EXPECT_GT(without, 100u);
