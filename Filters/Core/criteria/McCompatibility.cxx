@@ -110,13 +110,15 @@ bool PredictOverFinerChords(const AdaptiveOctree& tree, std::uint32_t n, const P
 /// loop, drawn as the extraction draws it (CSG crease tiles through the
 /// crease, CsgCreaseCrossing.h), is one loop whose fan around CreaseApex is
 /// certified within the tolerance. (The extraction draws the same fan over
-/// the final loop, which only adds points on the same traces, and certifies
-/// that again.) `ownLoop`: the bound for any patch failed, so the fan's
-/// error over every loop refining this one must be predicted within it too
-/// (QuadricCellError.h: Predicted on the cell's own loop, with the crease's
-/// crossings among the loop's points).
+/// the final loop, which adds points on the same traces where its tiles nest
+/// in the cell's own, and certifies that again.) `ownLoop`: the bound for
+/// any patch failed, so the fan's error over every loop refining this one
+/// must be predicted within it too (QuadricCellError.h: Predicted on the
+/// cell's own loop, with the crease's crossings among the loop's points);
+/// that prediction is then set in `predicted`.
 bool CreaseFanWithinTolerance(const QuadricCellError& bound, const Vec3& apex, const CellBoundary& boundary,
-  const CsgExpressionPtr& expression, const PrimitiveSet& prims, const RootGrid& grid, double tolerance, bool ownLoop)
+  const CsgExpressionPtr& expression, const PrimitiveSet& prims, const RootGrid& grid, double tolerance, bool ownLoop,
+  double& predicted)
 {
   CellBoundary bent = boundary;
   MarkCsgCreaseTiles(bent, prims, grid, [&](int, std::size_t) { return &expression; });
@@ -146,7 +148,11 @@ bool CreaseFanWithinTolerance(const QuadricCellError& bound, const Vec3& apex, c
       return false;
     }
   }
-  return FanError(bound, loop, apex) <= tolerance && (!ownLoop || PredictedFanError(bound, loop, apex) <= tolerance);
+  if (ownLoop)
+  {
+    predicted = PredictedFanError(bound, loop, apex);
+  }
+  return FanError(bound, loop, apex) <= tolerance && (!ownLoop || predicted <= tolerance);
 }
 
 /// How far beyond the tolerance the bound for any patch of a quadric cell may
@@ -161,10 +167,11 @@ constexpr double FanPredictionReach = 4.0;
 /// The fan a quadric cell larger than the tolerance may be accepted with
 /// (QuadricCellError.h: Predicted on the cell's own loop): over its one
 /// loop, its points placed by PlaceSubEdgeCrossing as the extraction places
-/// a crossing (where a neighbour placed it first, up to rounding), around the point
-/// of S along n from the loop's centroid (or the cell's centre), 1/32 of
-/// the cell's width inside it. The apex where PredictedFanError, set in
-/// `error`, is within the tolerance (the bound's margin); nothing otherwise.
+/// them (up to rounding where a neighbour placed a shared one first), around
+/// the point of S along n from the loop's centroid (or the cell's centre),
+/// 1/32 of the cell's width inside it. The apex where PredictedFanError, set
+/// in `error`, is within the tolerance (the bound's margin); nothing
+/// otherwise.
 std::optional<Vec3> PredictQuadricFan(const QuadricCellError& bound, const BoundaryLoopSet& loops,
   const CsgExpression& expression, const PrimitiveSet& prims, const RootGrid& grid, double& error)
 {
@@ -360,8 +367,8 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   }
   else if ((v.ErrorBounded && quadric->Crease) || creaseFanOwnLoop)
   {
-    if (!CreaseFanWithinTolerance(
-          *quadric, *creaseApex, boundary, expression, prims, grid, tolerance, creaseFanOwnLoop))
+    if (!CreaseFanWithinTolerance(*quadric, *creaseApex, boundary, expression, prims, grid, tolerance,
+          creaseFanOwnLoop, v.PredictedError))
     {
       v.ErrorBounded = false;
       v.Reason = SplitReason::HausdorffSize;
