@@ -242,6 +242,19 @@ Box3 FaceBox(const Box3& cell, int face)
   return f;
 }
 
+/// Every leaf of the bound (bit i: Fields[i]).
+unsigned AllFields(const QuadricCellError& bound)
+{
+  return (1u << bound.Fields.size()) - 1;
+}
+
+/// Both ends lie exactly on the plane of the cell's face `face`.
+bool OnFacePlane(const Box3& cell, int face, const Vec3& a, const Vec3& b)
+{
+  const double plane = (face % 2 ? cell.hi : cell.lo)[face / 2];
+  return a[face / 2] == plane && b[face / 2] == plane;
+}
+
 /// `box` grown by `reach` on every side (rounded outward), within `limit`.
 Box3 GrownWithin(const Box3& box, double reach, const Box3& limit)
 {
@@ -278,40 +291,42 @@ double LocalTriangleTerm(const QuadricCellError& bound, double magnitude, const 
   {
     return reach; // (beyond the margin, failed: no local rise outside C+)
   }
-  const unsigned all = (1u << bound.Fields.size()) - 1;
+  const unsigned all = AllFields(bound);
   const Box3 region = GrownWithin(around, reach, GrownByMargin(bound.Cell, bound.Margin));
   return magnitude / std::max(bound.Rise, MinimumRiseOfAll(bound, all, region, bound.Direction));
 }
 
-/// g_phi over the stretch of face `face` between a chord with |F| <=
-/// `magnitude` on it, lying in `around`, and its arc (header: Local rises);
-/// 0 or +inf as FaceRise where the face has no rise or misses S.
-double LocalFaceRise(const QuadricCellError& bound, int face, double magnitude, const Box3& around)
+/// Whether face `face` carries chords: F rises along m_phi on it (FaceRise
+/// is 0 where it does not, +inf where the face misses S).
+bool FaceRises(const QuadricCellError& bound, int face)
 {
-  const double rise = bound.FaceRise[face];
-  if (!(rise > 0.0) || rise == HUGE_VAL)
-  {
-    return rise;
-  }
-  const Box3 stretch = GrownWithin(around, magnitude / rise, FaceBox(bound.Cell, face));
-  return std::max(rise, MinimumRiseOfAll(bound, bound.FaceFields[face], stretch, bound.FaceDirection[face]));
+  return bound.FaceRise[face] > 0.0 && bound.FaceRise[face] != HUGE_VAL;
+}
+
+/// The stretch of face `face` between a chord with |F| <= `magnitude` on it,
+/// lying in `around`, and its arc: within F / g_phi of the chord, in the face
+/// (header: Local rises). The face must rise (FaceRises).
+Box3 ChordStretch(const QuadricCellError& bound, int face, double magnitude, const Box3& around)
+{
+  return GrownWithin(around, magnitude / bound.FaceRise[face], FaceBox(bound.Cell, face));
+}
+
+/// g_phi over a chord's `stretch` (ChordStretch), at least the face's.
+double LocalFaceRise(const QuadricCellError& bound, int face, const Box3& stretch)
+{
+  return std::max(
+    bound.FaceRise[face], MinimumRiseOfAll(bound, bound.FaceFields[face], stretch, bound.FaceDirection[face]));
 }
 
 /// The term F (1/g + 1/g_phi) of a chord on face `face` with |F| <=
 /// `magnitude` on it, or of the sub-chords refining one, lying in `around`
-/// (header: Local rises); +inf where the face has no rise or misses S.
+/// (header: Local rises). The face must rise (FaceRises).
 double LocalChordTerm(const QuadricCellError& bound, int face, double magnitude, const Box3& around)
 {
-  const double rise = LocalFaceRise(bound, face, magnitude, around);
-  if (!(rise > 0.0) || rise == HUGE_VAL) // (no chord was expected on a face missing S)
-  {
-    return HUGE_VAL;
-  }
-  const unsigned all = (1u << bound.Fields.size()) - 1;
-  const Box3 stretch = GrownWithin(around, magnitude / bound.FaceRise[face], FaceBox(bound.Cell, face));
+  const Box3 stretch = ChordStretch(bound, face, magnitude, around);
   const Box3 inward = GrownWithin(stretch, magnitude / bound.Rise, bound.Cell);
-  const double normalRise = std::max(bound.Rise, MinimumRiseOfAll(bound, all, inward, bound.Direction));
-  return magnitude * (1.0 / normalRise + 1.0 / rise);
+  const double normalRise = std::max(bound.Rise, MinimumRiseOfAll(bound, AllFields(bound), inward, bound.Direction));
+  return magnitude * (1.0 / normalRise + 1.0 / LocalFaceRise(bound, face, stretch));
 }
 } // namespace
 
@@ -385,7 +400,7 @@ std::optional<QuadricCellError> BoundQuadricCell(const CsgExpressionPtr& cellExp
     bound.Fields.push_back(SignedQuadric(primitives.Quadrics[leaf.Primitive], leaf.Sigma));
     bound.Curvature = std::max(bound.Curvature, CurvatureBound(bound.Fields.back()));
   }
-  const unsigned all = (1u << bound.Fields.size()) - 1;
+  const unsigned all = AllFields(bound);
   // n: the normal of one of the cell's own leaves, the bisector of its own
   // leaves' (a crease in it) or of all the leaves' (a crease within the
   // margin), whichever rises fastest.
@@ -482,7 +497,7 @@ double PredictedCellError(const QuadricCellError& bound)
 std::vector<PredictedChordTerms> PredictFanTerms(
   const QuadricCellError& bound, const std::vector<Vec3>& loop, const Vec3& apex)
 {
-  const unsigned all = (1u << bound.Fields.size()) - 1;
+  const unsigned all = AllFields(bound);
   // The final loop's points are crossings placed as the own loop's are: |F|
   // there is about as small; the largest of the own loop's stands for theirs.
   double pointTerm = 0.0;
@@ -495,13 +510,12 @@ std::vector<PredictedChordTerms> PredictFanTerms(
   for (std::size_t k = 0; k < m; ++k)
   {
     const Vec3 &a = loop[k], &b = loop[(k + 1) % m];
-    int face = -1;
-    for (int f = 0; f < 6 && face < 0; ++f)
+    int face = 0;
+    while (face < 6 && !OnFacePlane(bound.Cell, face, a, b))
     {
-      const double plane = (f % 2 ? bound.Cell.hi : bound.Cell.lo)[f / 2];
-      face = a[f / 2] == plane && b[f / 2] == plane ? f : -1;
+      ++face;
     }
-    if (face < 0 || !(bound.FaceRise[face] > 0.0) || bound.FaceRise[face] == HUGE_VAL)
+    if (face == 6 || !FaceRises(bound, face))
     {
       terms.push_back({ HUGE_VAL, HUGE_VAL });
       continue;
@@ -511,7 +525,8 @@ std::vector<PredictedChordTerms> PredictFanTerms(
     const double onChord = CombinedMagnitude(bound, bound.FaceFields[face], ends, 2, 0.25 * chord2);
     const Box3 chordBox = BoxAround(ends, 2);
     // delta_ab (header: Predicted on the cell's own loop; Local rises).
-    const double arc = onChord / LocalFaceRise(bound, face, onChord, chordBox) * RoundingAllowance;
+    const double arc =
+      onChord / LocalFaceRise(bound, face, ChordStretch(bound, face, onChord, chordBox)) * RoundingAllowance;
     const double ball = std::sqrt(SmallestBallRadiusSquared(a, b, apex)) + arc;
     const double halfChord = 0.5 * std::sqrt(chord2) + arc;
     const Vec3 v[3] = { a, b, apex };
@@ -536,15 +551,14 @@ double PredictedFanError(const QuadricCellError& bound, const std::vector<Vec3>&
 double TriangleError(const QuadricCellError& bound, const Vec3& a, const Vec3& b, const Vec3& c)
 {
   const Vec3 v[3] = { a, b, c };
-  const unsigned all = (1u << bound.Fields.size()) - 1;
+  const unsigned all = AllFields(bound);
   const double magnitude = CombinedMagnitude(bound, all, v, 3, SmallestBallRadiusSquared(a, b, c));
   return LocalTriangleTerm(bound, magnitude, BoxAround(v, 3)) * RoundingAllowance;
 }
 
 double ChordError(const QuadricCellError& bound, int face, const Vec3& a, const Vec3& b)
 {
-  const double rise = bound.FaceRise[face];
-  if (!(rise > 0.0) || rise == HUGE_VAL) // (no chord was expected on a face missing S)
+  if (!FaceRises(bound, face)) // (no chord was expected on a face missing S)
   {
     return HUGE_VAL;
   }
@@ -589,8 +603,7 @@ double EdgeChordError(const QuadricCellError& bound, const Vec3& a, const Vec3& 
   double error = 0.0;
   for (int face = 0; face < 6; ++face)
   {
-    const double plane = (face % 2 ? bound.Cell.hi : bound.Cell.lo)[face / 2];
-    if (a[face / 2] == plane && b[face / 2] == plane)
+    if (OnFacePlane(bound.Cell, face, a, b))
     {
       error = std::max(error, ChordError(bound, face, a, b));
     }
