@@ -42,7 +42,8 @@
  *   leaves), "SizeReason" (the parent's SplitReason: why the cell is as small
  *   as it is; the active scalars, as renderers draw leaves), "CellState"
  *   (0 inside, 1 outside, 2 surface cell that passed every test, 3 surface cell
- *   stopped by a limit or whose patch failed the embedding check, 4 refined,
+ *   stopped by a limit or whose patch failed the embedding check after the
+ *   repair rounds, 4 refined,
  *   5 exact: a cell of one input mesh the tests could not resolve, whose patch
  *   is that mesh clipped to it), "FailedTest" (for states 3 and 5, the
  *   test that failed, as a SplitReasons value) and "CertifiedError" (on
@@ -70,6 +71,12 @@
  *   a plane, a box face or coplanar mesh triangles - so their patch is exact),
  *   "ExactCells" (cells whose patch is the input mesh clipped to them)
  *   and "AbsoluteTolerance" (epsilon in world units).
+ *
+ * A cell whose final patch (drawn after crack patching, over its neighbours'
+ * samples) is not certified within epsilon, or fails the embedding check, is
+ * split and the subdivision runs again on the same lattice, up to three
+ * rounds (SplitReason PATCH_NOT_CERTIFIED, PATCH_NOT_EMBEDDED); the
+ * guarantee is decided on the last surface.
  *
  * When the guarantee cannot be reached (tangential contact, depth or cell
  * limit) the filter still outputs a closed manifold surface, sets
@@ -131,7 +138,8 @@ public:
     LIMIT_REACHED = 9,
     SURFACES_TOO_CLOSE = 10,
     PATCH_NOT_EMBEDDED = 11,
-    CREASE_NOT_FOLLOWED = 12
+    CREASE_NOT_FOLLOWED = 12,
+    PATCH_NOT_CERTIFIED = 13
   };
 
   ///@{

@@ -394,20 +394,12 @@ SubdivisionParameters ChooseSubdivisionParameters(
   return params;
 }
 
-/// Subdivision on the best lattice placement, extraction and the exact
-/// embedding check, whose failing cells are marked in the octree.
-bool SubdivideAndExtract(const ImplicitScene& scene, const Box3& rootDomain, int placements,
-  const ParallelFor& parallelFor, Run& run)
+/// The extraction of the kept subdivision and the exact embedding check of
+/// its surface.
+bool ExtractAndCheck(const ImplicitScene& scene, const ParallelFor& parallelFor, Run& run)
 {
   ContourResult& r = run.Result;
-  r.Placed = RunOnBestLatticePlacement(scene, rootDomain, r.Parameters, placements, parallelFor,
-    run.Stage(ChecksEnd, SubdivisionEnd, true), run.Piece);
-  if (r.Placed.Result.Aborted)
-  {
-    r.Status = ContourResult::Outcome::Aborted;
-    return false;
-  }
-  AdaptiveOctree& octree = r.Placed.Result.Octree;
+  const AdaptiveOctree& octree = r.Placed.Result.Octree;
   r.Extraction = ExtractSurface(octree, scene, parallelFor, run.Stage(SubdivisionEnd, ExtractionEnd));
   if (r.Extraction.Aborted || run.Aborted())
   {
@@ -420,6 +412,95 @@ bool SubdivideAndExtract(const ImplicitScene& scene, const Box3& rootDomain, int
     r.Status = ContourResult::Outcome::Aborted;
     return false;
   }
+  return true;
+}
+
+/// Adds to `cells` the cells of `r`'s surface found wanting (CellRepair.h)
+/// that a next run can split: own error-bounded cells larger than the
+/// tolerance whose final patch is not certified within it, and cells whose
+/// patch failed the embedding check, above the depth limit.
+void AddCellsFoundWanting(const ContourResult& r, CellsToSplit& cells)
+{
+  const AdaptiveOctree& octree = r.Placed.Result.Octree;
+  const auto add = [&](std::uint32_t n, SplitReason reason) {
+    const OctreeNode& node = octree.Nodes[n];
+    if (node.Level < std::min(r.Parameters.MaximumDepth, octree.Grid.MaxDepth))
+    {
+      cells.Add({ node.Level, { node.Ijk[0], node.Ijk[1], node.Ijk[2] }, reason });
+    }
+  };
+  for (const auto& [n, error] : r.Extraction.CellErrors)
+  {
+    const double diagonal = octree.Grid.CellDiagonal(octree.Nodes[n].Level);
+    if (std::min(error, diagonal) > octree.HausdorffTolerance * (1.0 + 1e-9))
+    {
+      add(n, SplitReason::PatchNotCertified);
+    }
+  }
+  for (const std::uint32_t n : r.Embedding.Cells)
+  {
+    add(n, SplitReason::PatchNotEmbedded);
+  }
+}
+
+/// Repair rounds (CellRepair.h): while the surface has cells found wanting,
+/// the subdivision runs again on the same lattice with them - and those of
+/// the rounds before - split first, and its surface replaces the last.
+/// Rounds, not one: a cell split so meets finer neighbours, and their own
+/// final loops may lose points in turn. A cell found wanting again (at the
+/// depth limit, where it cannot be split) ends the rounds, as does the
+/// last one; whatever the last surface is, the guarantee is decided on it.
+/// Not in a run split among processes: the pieces would have to agree on
+/// every ghost cell's requests, which PieceOfRun::Sum cannot carry.
+bool RepairCellsFoundWanting(
+  const ImplicitScene& scene, const ParallelFor& parallelFor, int rounds, Run& run)
+{
+  ContourResult& r = run.Result;
+  for (int round = 0; round < rounds && run.Piece.Pieces == 1; ++round)
+  {
+    const std::size_t named = r.Parameters.SplitFirst.Size();
+    AddCellsFoundWanting(r, r.Parameters.SplitFirst);
+    if (r.Parameters.SplitFirst.Size() == named)
+    {
+      break;
+    }
+    SubdivisionResult again = RunTopologyPreservingSubdivision(
+      scene, r.Placed.Grid, r.Parameters, parallelFor, run.Stage(ChecksEnd, SubdivisionEnd));
+    if (again.Aborted || run.Aborted())
+    {
+      r.Status = ContourResult::Outcome::Aborted;
+      return false;
+    }
+    r.Placed.Result = std::move(again);
+    r.Placed.UnresolvedCellsOfAllPieces = r.Placed.Result.UnresolvedCells;
+    ++r.RepairRuns;
+    if (!ExtractAndCheck(scene, parallelFor, run))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Subdivision on the best lattice placement, extraction and the exact
+/// embedding check, repaired where cells were found wanting; the cells
+/// that still fail the embedding check are marked in the octree.
+bool SubdivideAndExtract(const ImplicitScene& scene, const Box3& rootDomain, int placements,
+  int repairRounds, const ParallelFor& parallelFor, Run& run)
+{
+  ContourResult& r = run.Result;
+  r.Placed = RunOnBestLatticePlacement(scene, rootDomain, r.Parameters, placements, parallelFor,
+    run.Stage(ChecksEnd, SubdivisionEnd, true), run.Piece);
+  if (r.Placed.Result.Aborted)
+  {
+    r.Status = ContourResult::Outcome::Aborted;
+    return false;
+  }
+  if (!ExtractAndCheck(scene, parallelFor, run) || !RepairCellsFoundWanting(scene, parallelFor, repairRounds, run))
+  {
+    return false;
+  }
+  AdaptiveOctree& octree = r.Placed.Result.Octree;
   for (const std::uint32_t n : r.Embedding.Cells)
   {
     OctreeNode& node = octree.Nodes[n];
@@ -764,7 +845,7 @@ ContourResult Contour(ContourScene scene, const ContourParameters& parameters, c
   // the method's assumptions are not worth the retries.
   const int placements =
     result.AssumptionsMet && (piece.Pieces == 1 || run.Collective()) ? parameters.LatticePlacements : 1;
-  if (!SubdivideAndExtract(implicitScene, rootDomain, placements, parallelFor, run))
+  if (!SubdivideAndExtract(implicitScene, rootDomain, placements, parameters.RepairRounds, parallelFor, run))
   {
     return result;
   }

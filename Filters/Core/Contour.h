@@ -8,7 +8,9 @@
 // depth and rules out the guarantee; coincident faces of two meshes are a
 // tangential contact), the domain and its margins, clipping to Bounds, the
 // lattice placements, the subdivision (paper 5.3), the extraction (4.3), the
-// exact embedding check, the certified decimation when asked (Decimate),
+// exact embedding check, the repair rounds (the subdivision run again with
+// the cells whose final patch was not certified or not embedded split first:
+// CellRepair.h), the certified decimation when asked (Decimate),
 // the topology report of the whole surface (also when
 // this process holds one piece of it), and *the* definition of
 // TopologyGuaranteed with the reasons when it is 0.
@@ -69,6 +71,12 @@ struct ContourScene
 /// (LatticeBits in RootGrid.h; less where the coordinates' doubles run out).
 constexpr int DeepestMaximumDepth = 40;
 
+/// Repair rounds a run makes at most (ContourParameters::RepairRounds):
+/// a round's split cells meet finer neighbours whose own final loops may
+/// lose points in turn (the random CSG scene of Core.RandomScenes' repair
+/// test needs two).
+constexpr int DefaultRepairRounds = 3;
+
 struct ContourParameters
 {
   /// The two-sided Hausdorff bound epsilon, relative to the diagonal of the
@@ -95,6 +103,12 @@ struct ContourParameters
   /// (CertifiedDecimation.h). Not in a piece of a split run, nor where the
   /// extraction did not end embedded with a patch in every surface cell.
   bool Decimate = false;
+  /// At most this many runs again of the subdivision, on the same lattice,
+  /// with the cells an earlier surface found wanting split first
+  /// (CellRepair.h): cells whose final patch is not certified within the
+  /// tolerance, or not embedded. 0: none (to measure, or to see what the
+  /// repair hides). Not in a piece of a split run.
+  int RepairRounds = DefaultRepairRounds;
 };
 
 /// The report every output carries (the filter's field data).
@@ -154,7 +168,10 @@ struct ContourResult
   std::vector<ContourMessage> Messages; ///< in the order they arose
   /// Every input met the paper's assumptions.
   bool AssumptionsMet = true;
-  SubdivisionParameters Parameters; ///< as used (depth cap included)
+  SubdivisionParameters Parameters; ///< as used (depth cap, cells split first included)
+  /// The subdivision's runs again on the same lattice with the cells an
+  /// earlier surface found wanting split first (CellRepair.h).
+  int RepairRuns = 0;
   PlacedSubdivision Placed;         ///< grid, octree (cells failing the embedding check marked)
   ExtractionResult Extraction;
   EmbeddingReport Embedding;        ///< of this piece (as extracted, before any decimation)

@@ -87,6 +87,9 @@ struct RunResult
   tpc::TopologyReport Topology;
   double SurfaceCellSize = 0.0; ///< tpc only
   long PlanarCells = 0;         ///< tpc only
+  /// tpc only: cells split by a repair round (SplitReason 11 or 13 on a
+  /// refined cell: an earlier surface found them wanting, CellRepair.h).
+  long RepairedCells = 0;
   bool Guaranteed = false;      ///< tpc only
   /// tpc only: the longest time between two progress reports (the filter
   /// checks Abort at each), the progress it started from, and with
@@ -405,6 +408,15 @@ RunResult RunFilter(const tpcbench::Scene& scene, double epsilon, int maximumDep
   const double rootSize = grid->GetXCoordinates()->GetTuple1(1) - grid->GetXCoordinates()->GetTuple1(0);
   r.SurfaceCellSize = std::ldexp(rootSize, -static_cast<int>(std::ceil(std::log2(rootSize * std::sqrt(3.0) / tolerance) - 1e-9)));
   r.PlanarCells = static_cast<long>(fd->GetArray("PlanarCells")->GetTuple1(0));
+  vtkDataArray* reasons = grid->GetCellData()->GetArray("SplitReason");
+  for (vtkIdType c = 0; reasons && c < reasons->GetNumberOfTuples(); ++c)
+  {
+    const int reason = static_cast<int>(reasons->GetTuple1(c));
+    r.RepairedCells += reason == vtkTopologyPreservingContour::PATCH_NOT_EMBEDDED ||
+        reason == vtkTopologyPreservingContour::PATCH_NOT_CERTIFIED
+      ? 1
+      : 0;
+  }
   if (!fingerprint.empty())
   {
     r.Fingerprint = Fingerprint(surface, grid, fingerprint != "geometry");
@@ -611,7 +623,7 @@ int main(int argc, char* argv[])
          << ", \"topology_right\": "
          << (closed && t.Components == scene.Components && t.Genus == scene.Genus ? "true" : "false")
          << ", \"cell_size\": " << (method == "tpc" ? r.SurfaceCellSize : h)
-         << ", \"planar_cells\": " << r.PlanarCells
+         << ", \"planar_cells\": " << r.PlanarCells << ", \"repaired_cells\": " << r.RepairedCells
          << ", \"guaranteed\": " << (r.Guaranteed ? "true" : "false")
          << ", \"longest_progress_gap_s\": " << r.LongestProgressGap
          << ", \"longest_progress_gap_at\": " << r.LongestProgressGapAt

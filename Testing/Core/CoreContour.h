@@ -24,6 +24,7 @@ struct ContourRun
   bool Guaranteed = false;
   bool Contoured = false; ///< contoured, or the solid is empty (else Messages say why)
   bool Aborted = false;   ///< `progress` asked to stop
+  int RepairRuns = 0;     ///< ContourResult::RepairRuns
   std::vector<tpc::ContourMessage> Messages;
 };
 
@@ -74,23 +75,11 @@ inline tpc::ContourScene ContourSceneOf(const Scene& scene)
   return input;
 }
 
-/// A whole run through the core's entry point (tpc::Contour): the lattice laid
-/// over `bounds` (Region: grown by the usual margin, not clipped), the
-/// tolerance relative to its diagonal, trying up to `placements` lattice
-/// placements, refining at most to `maxDepth` (the product's default, the
-/// lattice's end), decimated if asked (through the cells' bounds: the scene
-/// is one term). The test scenes' meshes meet the paper's assumptions.
-inline ContourRun Contour(const Scene& scene, const tpc::Box3& bounds, double relativeTolerance,
-  int maxDepth = tpc::DeepestMaximumDepth, int placements = tpc::LatticePlacements, std::size_t maxCells = 10000000,
-  const tpc::ProgressCallback& progress = nullptr, bool decimate = false)
+/// A whole run through the core's entry point (tpc::Contour) with
+/// parameters `p`. The test scenes' meshes meet the paper's assumptions.
+inline ContourRun Contour(const Scene& scene, const tpc::ContourParameters& p,
+  const tpc::ProgressCallback& progress = nullptr)
 {
-  tpc::ContourParameters p;
-  p.Decimate = decimate;
-  p.Region = bounds;
-  p.Tolerance = relativeTolerance;
-  p.MaximumDepth = maxDepth;
-  p.MaximumNumberOfCells = maxCells;
-  p.LatticePlacements = placements;
   tpc::ContourResult result = tpc::Contour(ContourSceneOf(scene), p, tpc::SequentialFor, progress);
   ContourRun r;
   r.Messages = std::move(result.Messages);
@@ -101,6 +90,7 @@ inline ContourRun Contour(const Scene& scene, const tpc::Box3& bounds, double re
   r.Tolerance = result.Report.AbsoluteTolerance;
   r.HausdorffBound = result.Report.HausdorffBound;
   r.Guaranteed = result.Report.Guaranteed;
+  r.RepairRuns = result.RepairRuns;
   r.Contoured = result.Status == tpc::ContourResult::Outcome::Contoured ||
     result.Status == tpc::ContourResult::Outcome::Empty;
   r.Aborted = result.Status == tpc::ContourResult::Outcome::Aborted;
@@ -113,5 +103,32 @@ inline ContourRun Contour(const Scene& scene, const tpc::Box3& bounds, double re
   ExpectEmbeddingCheckAgreesWithCgal(r.Embedding, r.Extraction.Mesh);
 #endif
   return r;
+}
+
+/// The parameters of a test run: the lattice laid over `bounds` (Region:
+/// grown by the usual margin, not clipped), the tolerance relative to its
+/// diagonal, trying up to `placements` lattice placements, refining at most
+/// to `maxDepth` (the product's default, the lattice's end), decimated if
+/// asked (through the cells' bounds: the scene is one term).
+inline tpc::ContourParameters ParametersFor(const tpc::Box3& bounds, double relativeTolerance,
+  int maxDepth = tpc::DeepestMaximumDepth, int placements = tpc::LatticePlacements, std::size_t maxCells = 10000000,
+  bool decimate = false)
+{
+  tpc::ContourParameters p;
+  p.Decimate = decimate;
+  p.Region = bounds;
+  p.Tolerance = relativeTolerance;
+  p.MaximumDepth = maxDepth;
+  p.MaximumNumberOfCells = maxCells;
+  p.LatticePlacements = placements;
+  return p;
+}
+
+/// A whole run with the parameters of ParametersFor.
+inline ContourRun Contour(const Scene& scene, const tpc::Box3& bounds, double relativeTolerance,
+  int maxDepth = tpc::DeepestMaximumDepth, int placements = tpc::LatticePlacements, std::size_t maxCells = 10000000,
+  const tpc::ProgressCallback& progress = nullptr, bool decimate = false)
+{
+  return Contour(scene, ParametersFor(bounds, relativeTolerance, maxDepth, placements, maxCells, decimate), progress);
 }
 } // namespace tpctest

@@ -217,12 +217,13 @@ TEST(HyperTreeGrid, TrianglesLieInTheSurfaceLeavesTheyName)
     vtkStringArray::SafeDownCast(grid->GetFieldData()->GetAbstractArray("SplitReasonNames"));
   auto* stateNames = vtkStringArray::SafeDownCast(grid->GetFieldData()->GetAbstractArray("CellStateNames"));
   ASSERT_TRUE(reasonNames && stateNames);
-  ASSERT_EQ(reasonNames->GetNumberOfValues(), 13);
+  ASSERT_EQ(reasonNames->GetNumberOfValues(), 14);
   EXPECT_EQ(reasonNames->GetValue(3), "complex edge");
   EXPECT_EQ(reasonNames->GetValue(9), "limit reached");
   EXPECT_EQ(reasonNames->GetValue(10), "surfaces too close");
   EXPECT_EQ(reasonNames->GetValue(11), "patch not embedded");
   EXPECT_EQ(reasonNames->GetValue(12), "crease not followed");
+  EXPECT_EQ(reasonNames->GetValue(13), "patch not certified");
   ASSERT_EQ(stateNames->GetNumberOfValues(), 6);
   EXPECT_EQ(stateNames->GetValue(3), "unresolved");
   EXPECT_EQ(stateNames->GetValue(5), "exact input");

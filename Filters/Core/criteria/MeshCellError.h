@@ -130,7 +130,9 @@
 //   finer neighbour. Where they would not nest the first stays, and the
 //   other's final loop fails FinalLoopRefines: its patch is certified on
 //   its own, as always. So is a cell's patch where finer cells across a
-//   face draw it with their own tilings, which may lack its points.
+//   face draw it with their own tilings, which may lack its points (and a
+//   cell whose certificate then fails is split when the subdivision runs
+//   again: CellRepair.h).
 // - Only where the prediction failed, so cells that pass keep the loop they
 //   have (every chord beyond a quarter of the tolerance split, in every
 //   cell: the turbine 10 960 -> 15 742 triangles at 1/128).

@@ -35,6 +35,8 @@ const char* SplitReasonName(SplitReason r)
       return "patch not embedded";
     case SplitReason::CreaseNotFollowed:
       return "crease not followed";
+    case SplitReason::PatchNotCertified:
+      return "patch not certified";
   }
   return "unknown";
 }

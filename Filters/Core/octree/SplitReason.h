@@ -28,9 +28,12 @@ enum class SplitReason : std::uint8_t
                           ///< each other closer than the finest cell throughout it
   PatchNotEmbedded = 11,  ///< leaf whose patch meets another patch improperly (found by
                           ///< the exact embedding check of the output, SurfaceEmbedding.h)
-  CreaseNotFollowed = 12  ///< cell of one mesh larger than the tolerance whose fan, within
+  CreaseNotFollowed = 12, ///< cell of one mesh larger than the tolerance whose fan, within
                           ///< the tolerance of the mesh, would not draw one of its creases,
                           ///< around its apex or a point of a crease (CreaseFollowing.h)
+  PatchNotCertified = 13  ///< cell larger than the tolerance whose final patch (after crack
+                          ///< patching) a run found beyond the tolerance or could not
+                          ///< certify: split when the subdivision ran again (CellRepair.h)
 };
 
 const char* SplitReasonName(SplitReason r);
@@ -48,7 +51,7 @@ enum class CellState : std::uint8_t
 const char* CellStateName(CellState s);
 
 /// One past the largest value of each enum (to list their names).
-constexpr int SplitReasonCount = 13;
+constexpr int SplitReasonCount = 14;
 constexpr int CellStateCount = 6;
 
 } // namespace tpc

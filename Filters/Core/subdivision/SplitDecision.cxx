@@ -19,6 +19,14 @@ CellTests TestCell(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveS
   const SubdivisionParameters& parameters, const LevelLimits& limits, PolygonSet* surfaceScratch)
 {
   CellTests tests;
+  const OctreeNode& node = tree.Nodes[n];
+  if (const CellToSplit* repair = parameters.SplitFirst.Find(node.Level, node.Ijk))
+  {
+    // (An earlier run's final surface found it wanting: CellRepair.h.)
+    tests.Verdict.Kind = McVerdict::Split;
+    tests.Verdict.Reason = repair->Reason;
+    return tests;
+  }
   const CsgExpression& expression = *tree.Expressions[n];
   // A cell that keeps its mesh if it fails need not refine its faces far to
   // find out (ExactCellCriterion.h).

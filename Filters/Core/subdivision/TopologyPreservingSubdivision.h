@@ -22,6 +22,7 @@
 #pragma once
 
 #include "AdaptiveOctree.h"
+#include "CellRepair.h"
 #include "CsgExpression.h"
 #include "Parallel.h"
 
@@ -63,6 +64,9 @@ struct SubdivisionParameters
   /// A piece of a split run (ForestPartition.h): the role of each tree of
   /// the root grid; skipped trees stay empty roots. Empty: every tree.
   std::vector<TreeRole> TreeRoles;
+  /// Cells split before their tests, named by an earlier run on the same
+  /// lattice whose final surface found them wanting (CellRepair.h).
+  CellsToSplit SplitFirst;
 };
 
 struct SubdivisionResult

@@ -446,3 +446,60 @@ TEST(Subdivision, ProgressRisesMonotonicallyOverLatticePlacementRetries)
   EXPECT_GE(reported.front(), 0.0);
   EXPECT_DOUBLE_EQ(reported.back(), 1.0);
 }
+
+TEST(Subdivision, CellsNamedToSplitFirstSplitBeforeTheirTests)
+{
+  // A sphere whose cells pass larger than the tolerance (QuadricCellError.h).
+  // Named as an earlier surface names the cells it found wanting
+  // (CellRepair.h), three of them split with the reason given, before any
+  // test; their children are tested as usual.
+  SceneBuilder b;
+  b.Finish(b.Sphere({ 0.02, -0.03, 0.01 }, 0.8));
+  const tpc::RootGrid grid = tpctest::SingleRoot({ -1.03, -1.01, -1.02 }, 2.1, 16);
+  tpc::SubdivisionParameters p;
+  p.HausdorffTolerance = 0.02;
+  p.MaximumDepth = 16;
+  const tpc::SubdivisionResult first = tpc::RunTopologyPreservingSubdivision(b.Scene, grid, p);
+  std::vector<std::uint32_t> named;
+  for (std::uint32_t n = 0; n < first.Octree.Nodes.size() && named.size() < 3; ++n)
+  {
+    const tpc::OctreeNode& cell = first.Octree.Nodes[n];
+    if (cell.IsLeaf() && cell.State == tpc::CellState::Surface && grid.CellDiagonal(cell.Level) > p.HausdorffTolerance)
+    {
+      named.push_back(n);
+      const tpc::SplitReason reason =
+        named.size() == 3 ? tpc::SplitReason::PatchNotEmbedded : tpc::SplitReason::PatchNotCertified;
+      p.SplitFirst.Add({ cell.Level, { cell.Ijk[0], cell.Ijk[1], cell.Ijk[2] }, reason });
+      // (A cell named twice keeps its first reason.)
+      p.SplitFirst.Add({ cell.Level, { cell.Ijk[0], cell.Ijk[1], cell.Ijk[2] }, tpc::SplitReason::ComplexEdge });
+    }
+  }
+  ASSERT_EQ(named.size(), 3u);
+  ASSERT_EQ(p.SplitFirst.Size(), 3u);
+  const tpc::SubdivisionResult again = tpc::RunTopologyPreservingSubdivision(b.Scene, grid, p);
+  for (std::size_t k = 0; k < named.size(); ++k)
+  {
+    const tpc::OctreeNode& cell = first.Octree.Nodes[named[k]];
+    const std::int64_t ijk[3] = { static_cast<std::int64_t>(cell.Ijk[0]), static_cast<std::int64_t>(cell.Ijk[1]),
+      static_cast<std::int64_t>(cell.Ijk[2]) };
+    const std::int64_t n = again.Octree.Find(cell.Level, ijk);
+    ASSERT_GE(n, 0);
+    const tpc::OctreeNode& split = again.Octree.Nodes[static_cast<std::size_t>(n)];
+    EXPECT_EQ(split.Level, cell.Level);
+    EXPECT_EQ(split.State, tpc::CellState::Refined);
+    EXPECT_EQ(split.Reason, k == 2 ? tpc::SplitReason::PatchNotEmbedded : tpc::SplitReason::PatchNotCertified);
+  }
+  EXPECT_EQ(again.SplitsByReason[static_cast<int>(tpc::SplitReason::PatchNotCertified)], 2u);
+  EXPECT_EQ(again.SplitsByReason[static_cast<int>(tpc::SplitReason::PatchNotEmbedded)], 1u);
+  EXPECT_EQ(first.SplitsByReason[static_cast<int>(tpc::SplitReason::PatchNotCertified)], 0u);
+  EXPECT_GT(again.Octree.Nodes.size(), first.Octree.Nodes.size());
+  EXPECT_EQ(again.UnresolvedCells, 0u);
+  // The surface over the new cells is closed and certified like any other.
+  const tpc::ExtractionResult surface = tpc::ExtractSurface(again.Octree, b.Scene);
+  EXPECT_EQ(surface.InconsistentCells, 0u);
+  EXPECT_EQ(surface.UncertifiedCells, 0u);
+  EXPECT_LE(surface.CertifiedBound, p.HausdorffTolerance);
+  // Nothing named, nothing found.
+  const tpc::LatticeIndex nowhere[3] = { 1, 2, 3 };
+  EXPECT_EQ(p.SplitFirst.Find(1, nowhere), nullptr);
+}
