@@ -394,19 +394,20 @@ SubdivisionParameters ChooseSubdivisionParameters(
   return params;
 }
 
-/// The extraction of the kept subdivision and the exact embedding check of
-/// its surface.
-bool ExtractAndCheck(const ImplicitScene& scene, const ParallelFor& parallelFor, Run& run)
+/// The extraction of the kept subdivision over progress [lo, mid] and the
+/// exact embedding check of its surface over [mid, hi].
+bool ExtractAndCheck(
+  const ImplicitScene& scene, const ParallelFor& parallelFor, double lo, double mid, double hi, Run& run)
 {
   ContourResult& r = run.Result;
   const AdaptiveOctree& octree = r.Placed.Result.Octree;
-  r.Extraction = ExtractSurface(octree, scene, parallelFor, run.Stage(SubdivisionEnd, ExtractionEnd));
+  r.Extraction = ExtractSurface(octree, scene, parallelFor, run.Stage(lo, mid));
   if (r.Extraction.Aborted || run.Aborted())
   {
     r.Status = ContourResult::Outcome::Aborted;
     return false;
   }
-  r.Embedding = CheckEmbedding(octree, r.Extraction.Mesh, parallelFor, run.Stage(ExtractionEnd, EmbeddingEnd));
+  r.Embedding = CheckEmbedding(octree, r.Extraction.Mesh, parallelFor, run.Stage(mid, hi));
   if (r.Embedding.Aborted || run.Aborted())
   {
     r.Status = ContourResult::Outcome::Aborted;
@@ -415,16 +416,19 @@ bool ExtractAndCheck(const ImplicitScene& scene, const ParallelFor& parallelFor,
   return true;
 }
 
-/// Adds to `cells` the cells of `r`'s surface found wanting (CellRepair.h)
-/// that a next run can split: own error-bounded cells larger than the
-/// tolerance whose final patch is not certified within it, and cells whose
-/// patch failed the embedding check, above the depth limit.
+/// Adds to `cells` this piece's cells found wanting (CellRepair.h) that a
+/// next run can split: own error-bounded cells larger than the tolerance
+/// whose final patch is not certified within it (as GatherCertifiedBound and
+/// DecideGuarantee count them), and surface cells whose patch failed the
+/// embedding check, above the depth limit (at it, a split cell would only
+/// turn Unresolved).
 void AddCellsFoundWanting(const ContourResult& r, CellsToSplit& cells)
 {
   const AdaptiveOctree& octree = r.Placed.Result.Octree;
+  const int deepest = std::min(r.Placed.Parameters.MaximumDepth, octree.Grid.MaxDepth);
   const auto add = [&](std::uint32_t n, SplitReason reason) {
     const OctreeNode& node = octree.Nodes[n];
-    if (node.Level < std::min(r.Parameters.MaximumDepth, octree.Grid.MaxDepth))
+    if (node.State == CellState::Surface && node.Level < deepest)
     {
       cells.Add({ node.Level, { node.Ijk[0], node.Ijk[1], node.Ijk[2] }, reason });
     }
@@ -443,42 +447,96 @@ void AddCellsFoundWanting(const ContourResult& r, CellsToSplit& cells)
   }
 }
 
+/// Adds `found` to `all`, and in a split run every other piece's too (each
+/// piece's ghost ring holds cells another piece owns: every piece must split
+/// the same cells). A collective call in a split run.
+void ShareAmongPieces(const CellsToSplit& found, CellsToSplit& all, const Run& run)
+{
+  if (!run.Collective())
+  {
+    all.AddSerialized(found.Serialize());
+    return;
+  }
+  for (const std::vector<double>& piece : run.Exchange.GatherAll(found.Serialize()))
+  {
+    all.AddSerialized(piece);
+  }
+}
+
+/// A repair round's subdivision grows the tree by about this many cells per
+/// cell it splits first (its children and the neighbours they make finer,
+/// with room to spare): a round that could not fit under
+/// MaximumNumberOfCells is not started, since a run stopped by the cell
+/// limit loses the guarantee a repair was to restore.
+constexpr std::size_t RepairCellsPerSplit = 64;
+
 /// Repair rounds (CellRepair.h): while the surface has cells found wanting,
 /// the subdivision runs again on the same lattice with them - and those of
-/// the rounds before - split first, and its surface replaces the last.
-/// Rounds, not one: a cell split so meets finer neighbours, and their own
-/// final loops may lose points in turn. A cell found wanting again (at the
-/// depth limit, where it cannot be split) ends the rounds, as does the
-/// last one; whatever the last surface is, the guarantee is decided on it.
-/// Not in a run split among processes: the pieces would have to agree on
-/// every ghost cell's requests, which PieceOfRun::Sum cannot carry.
-bool RepairCellsFoundWanting(
-  const ImplicitScene& scene, const ParallelFor& parallelFor, int rounds, Run& run)
+/// the rounds before - split first, and its surface replaces the last (the
+/// last one's tree and surface are freed first: one run's memory at a
+/// time). Rounds, not one: a cell split so meets finer neighbours, and their
+/// own final loops may lose points in turn. The rounds end when no new cell
+/// is found wanting (one at the depth limit is not named), when a round
+/// leaves cells unresolved, after `rounds`, or before a round that would not
+/// fit under the cell limit; whatever the last surface is, the guarantee is
+/// decided on it. Only where a repair can give the guarantee: the inputs
+/// meet the assumptions and no cell is unresolved (repairs decide every
+/// other cell alike, so they cannot resolve one). In a run split among
+/// processes the pieces agree on every decision (the named cells are
+/// gathered from all pieces, the other decisions summed), and without a
+/// controller (pieces that cannot agree) no repair is made. Each round
+/// reports progress over half of what is left of [its start, 0.995].
+bool RepairCellsFoundWanting(const ImplicitScene& scene, const ParallelFor& parallelFor, int rounds, Run& run)
 {
   ContourResult& r = run.Result;
-  for (int round = 0; round < rounds && run.Piece.Pieces == 1; ++round)
+  if (rounds <= 0 || !r.AssumptionsMet || (run.Piece.Pieces > 1 && !run.Collective()) ||
+    r.Placed.UnresolvedCellsOfAllPieces > 0)
   {
-    const std::size_t named = r.Parameters.SplitFirst.Size();
-    AddCellsFoundWanting(r, r.Parameters.SplitFirst);
-    if (r.Parameters.SplitFirst.Size() == named)
+    return true;
+  }
+  SubdivisionParameters& parameters = r.Placed.Parameters;
+  for (int round = 0; round < rounds; ++round)
+  {
+    CellsToSplit found;
+    AddCellsFoundWanting(r, found);
+    const std::size_t named = parameters.SplitFirst.Size();
+    ShareAmongPieces(found, parameters.SplitFirst, run);
+    const std::size_t added = parameters.SplitFirst.Size() - named; // (the same in every piece)
+    const bool fits = r.Placed.Result.Octree.Nodes.size() + RepairCellsPerSplit * added <=
+      parameters.MaximumNumberOfCells;
+    if (added == 0 || run.Sum(fits ? 0 : 1) > 0)
     {
       break;
     }
-    SubdivisionResult again = RunTopologyPreservingSubdivision(
-      scene, r.Placed.Grid, r.Parameters, parallelFor, run.Stage(ChecksEnd, SubdivisionEnd));
-    if (again.Aborted || run.Aborted())
+    const double lo = run.Reported, hi = lo + 0.5 * (0.995 - lo);
+    const auto at = [lo, hi](double stage) { return lo + (hi - lo) * (stage - ChecksEnd) / (EmbeddingEnd - ChecksEnd); };
+    r.Extraction = ExtractionResult();
+    r.Embedding = EmbeddingReport();
+    if (!ReleaseExpressions(r.Placed.Result.Octree, run.Stage(lo, lo), lo) || run.Aborted())
     {
       r.Status = ContourResult::Outcome::Aborted;
       return false;
     }
-    r.Placed.Result = std::move(again);
-    r.Placed.UnresolvedCellsOfAllPieces = r.Placed.Result.UnresolvedCells;
+    r.Placed.Result = SubdivisionResult();
+    r.Placed.Result = RunTopologyPreservingSubdivision(
+      scene, r.Placed.Grid, parameters, parallelFor, run.Stage(lo, at(SubdivisionEnd)));
+    if (r.Placed.Result.Aborted || run.Aborted())
+    {
+      r.Status = ContourResult::Outcome::Aborted;
+      return false;
+    }
+    r.Placed.UnresolvedCellsOfAllPieces = run.Sum(r.Placed.Result.UnresolvedCells);
     ++r.RepairRuns;
-    if (!ExtractAndCheck(scene, parallelFor, run))
+    if (!ExtractAndCheck(scene, parallelFor, at(SubdivisionEnd), at(ExtractionEnd), hi, run))
     {
       return false;
     }
+    if (r.Placed.UnresolvedCellsOfAllPieces > 0)
+    {
+      break;
+    }
   }
+  r.Parameters.SplitFirst = parameters.SplitFirst;
   return true;
 }
 
@@ -496,7 +554,8 @@ bool SubdivideAndExtract(const ImplicitScene& scene, const Box3& rootDomain, int
     r.Status = ContourResult::Outcome::Aborted;
     return false;
   }
-  if (!ExtractAndCheck(scene, parallelFor, run) || !RepairCellsFoundWanting(scene, parallelFor, repairRounds, run))
+  if (!ExtractAndCheck(scene, parallelFor, SubdivisionEnd, ExtractionEnd, EmbeddingEnd, run) ||
+    !RepairCellsFoundWanting(scene, parallelFor, repairRounds, run))
   {
     return false;
   }

@@ -107,7 +107,9 @@ struct ContourParameters
   /// with the cells an earlier surface found wanting split first
   /// (CellRepair.h): cells whose final patch is not certified within the
   /// tolerance, or not embedded. 0: none (to measure, or to see what the
-  /// repair hides). Not in a piece of a split run.
+  /// repair hides). In a run split among processes only where the pieces
+  /// exchange through a controller (PieceExchange): they gather every
+  /// piece's cells and split them alike.
   int RepairRounds = DefaultRepairRounds;
 };
 
@@ -202,7 +204,8 @@ struct ContourResult
 
 /// Contours `scene` (see the header comment). `progress` runs over [0, 1]:
 /// input checks to 0.02, subdivision to 0.86, extraction to 0.94, embedding
-/// check to 0.98, topology report to 1; its answer true asks to abort (a
+/// check to 0.98, each repair round (if any) over half of what is left
+/// before 0.995, topology report to 1; its answer true asks to abort (a
 /// split run honours it only where the pieces agree, after a placement).
 ContourResult Contour(ContourScene scene, const ContourParameters& parameters,
   const ParallelFor& parallelFor = SequentialFor, const ProgressCallback& progress = nullptr,

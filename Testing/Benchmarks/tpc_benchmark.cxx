@@ -408,12 +408,17 @@ RunResult RunFilter(const tpcbench::Scene& scene, double epsilon, int maximumDep
   const double rootSize = grid->GetXCoordinates()->GetTuple1(1) - grid->GetXCoordinates()->GetTuple1(0);
   r.SurfaceCellSize = std::ldexp(rootSize, -static_cast<int>(std::ceil(std::log2(rootSize * std::sqrt(3.0) / tolerance) - 1e-9)));
   r.PlanarCells = static_cast<long>(fd->GetArray("PlanarCells")->GetTuple1(0));
+  // (Refined cells only: a leaf whose patch still fails the embedding check
+  // carries PATCH_NOT_EMBEDDED too.)
   vtkDataArray* reasons = grid->GetCellData()->GetArray("SplitReason");
-  for (vtkIdType c = 0; reasons && c < reasons->GetNumberOfTuples(); ++c)
+  vtkDataArray* states = grid->GetCellData()->GetArray("CellState");
+  for (vtkIdType c = 0; reasons && states && c < reasons->GetNumberOfTuples(); ++c)
   {
     const int reason = static_cast<int>(reasons->GetTuple1(c));
-    r.RepairedCells += reason == vtkTopologyPreservingContour::PATCH_NOT_EMBEDDED ||
-        reason == vtkTopologyPreservingContour::PATCH_NOT_CERTIFIED
+    const bool refined = states->GetTuple1(c) == 4;
+    r.RepairedCells += refined &&
+        (reason == vtkTopologyPreservingContour::PATCH_NOT_EMBEDDED ||
+          reason == vtkTopologyPreservingContour::PATCH_NOT_CERTIFIED)
       ? 1
       : 0;
   }

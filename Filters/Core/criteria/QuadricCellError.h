@@ -131,8 +131,9 @@
 // the cell's size; the certificate of the patch drawn is what the report
 // rests on, and a cell whose patch it fails is reported, not hidden
 // (ExtractionResult::UncertifiedCells) - and split when the subdivision
-// runs again (CellRepair.h: one crease cell of a reviewer's 3 800 random CSG
-// runs, whose final half chord was certified to 1.57 tolerances). The same holds for the bound for
+// runs again (CellRepair.h). A reviewer's 3 800 random CSG runs had one: a
+// crease cell whose final half chord's term, 1.57 tolerances, exceeded the
+// margin. The same holds for the bound for
 // any patch's statement above that crack patching only refines: it does
 // not need it (R and chords are bounded by the cell whatever the loop).
 //

@@ -21,7 +21,10 @@ std::vector<double> TriangleErrorBounds(const AdaptiveOctree& tree, const Extrac
     const OctreeNode& node = tree.Nodes[cells[t]];
     const double diagonal = grid.CellDiagonal(node.Level);
     // (In the order DecideCell and GatherCertifiedBound count them.)
-    if (node.FailedTest == SplitReason::PatchNotEmbedded)
+    // (Contour marks the leaves whose patch failed the check so; a cell a
+    // repair round split first for it is no leaf, and one that became an
+    // exact cell keeps it as its FailedTest, its patch the mesh.)
+    if (node.Reason == SplitReason::PatchNotEmbedded)
     {
       bounds[t] = std::nan(""); // (header: not proven)
     }

@@ -26,8 +26,10 @@ enum class SplitReason : std::uint8_t
                           ///< while a criterion still failed
   SurfacesTooClose = 10,  ///< leaf kept while a criterion failed: two surfaces face
                           ///< each other closer than the finest cell throughout it
-  PatchNotEmbedded = 11,  ///< leaf whose patch meets another patch improperly (found by
-                          ///< the exact embedding check of the output, SurfaceEmbedding.h)
+  PatchNotEmbedded = 11,  ///< cell whose patch met another patch improperly in the exact
+                          ///< embedding check of the output (SurfaceEmbedding.h): split when
+                          ///< the subdivision ran again (CellRepair.h), or a leaf so marked
+                          ///< where no repair round could split it
   CreaseNotFollowed = 12, ///< cell of one mesh larger than the tolerance whose fan, within
                           ///< the tolerance of the mesh, would not draw one of its creases,
                           ///< around its apex or a point of a crease (CreaseFollowing.h)

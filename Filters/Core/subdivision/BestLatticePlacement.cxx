@@ -50,9 +50,8 @@ RootGrid SplitForPiece(const RootGrid& grid, const Box3& domain, const Subdivisi
   return split;
 }
 
-/// Frees a discarded run's expressions (millions of them take about a
-/// second) in chunks, each followed by a progress report of `at`; false
-/// when it asked to stop.
+/// Frees `expressions` in chunks, each followed by a progress report of
+/// `at`; false when it asked to stop.
 bool ReleaseInChunks(std::vector<CsgExpressionPtr>& expressions, const ProgressCallback& progress, double at)
 {
   for (std::size_t first = 0; first < expressions.size(); first += 1 << 16)
@@ -68,6 +67,11 @@ bool ReleaseInChunks(std::vector<CsgExpressionPtr>& expressions, const ProgressC
   return true;
 }
 } // namespace
+
+bool ReleaseExpressions(AdaptiveOctree& octree, const ProgressCallback& progress, double at)
+{
+  return ReleaseInChunks(octree.Expressions, progress, at) && ReleaseInChunks(octree.NearExpressions, progress, at);
+}
 
 PlacedSubdivision RunOnBestLatticePlacement(const ImplicitScene& scene, const Box3& domain,
   const SubdivisionParameters& parameters, int maximumPlacements, const ParallelFor& parallelFor,
@@ -130,11 +134,10 @@ PlacedSubdivision RunOnBestLatticePlacement(const ImplicitScene& scene, const Bo
       best.Grid = grid;
       best.UnresolvedCellsOfAllPieces = unresolved;
       best.FinestCell = std::ldexp(grid.RootSize, -std::min(params.MaximumDepth, grid.MaxDepth));
+      best.Parameters = params;
       std::swap(best.Result, run);
     }
-    if ((!ReleaseInChunks(run.Octree.Expressions, progress, start) ||
-          !ReleaseInChunks(run.Octree.NearExpressions, progress, start)) &&
-      !best.Result.Aborted)
+    if (!ReleaseExpressions(run.Octree, progress, start) && !best.Result.Aborted)
     {
       best.Result.Aborted = true;
       return best;

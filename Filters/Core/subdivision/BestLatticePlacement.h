@@ -37,6 +37,9 @@ struct PlacedSubdivision
   std::size_t UnresolvedCellsOfAllPieces = 0;
   /// Width of the finest cell MaximumDepth allows.
   double FinestCell = 0.0;
+  /// The parameters the kept run was made with (a piece's: its depth below
+  /// the split roots, its share of the cells, its trees' roles).
+  SubdivisionParameters Parameters;
 };
 
 /// One piece of a run split among processes (ForestPartition.h): the root
@@ -56,6 +59,11 @@ struct PieceOfRun
   /// `x` summed over the pieces (this piece's own `x` when Sum is unset).
   std::size_t SumOverPieces(std::size_t x) const { return this->Sum ? this->Sum(x) : x; }
 };
+
+/// Frees a run's expressions (millions of them take about a second) in
+/// chunks, each followed by a progress report of `at`; false when it asked to
+/// stop.
+bool ReleaseExpressions(AdaptiveOctree& octree, const ProgressCallback& progress, double at);
 
 PlacedSubdivision RunOnBestLatticePlacement(const ImplicitScene& scene, const Box3& domain,
   const SubdivisionParameters& parameters, int maximumPlacements = LatticePlacements,

@@ -35,4 +35,32 @@ const CellToSplit* CellsToSplit::Find(int level, const LatticeIndex ijk[3]) cons
   return at != this->Cells.end() && !Before(key, *at) ? &*at : nullptr;
 }
 
+std::vector<double> CellsToSplit::Serialize() const
+{
+  std::vector<double> out;
+  out.reserve(5 * this->Cells.size());
+  for (const CellToSplit& c : this->Cells)
+  {
+    out.insert(out.end(), { static_cast<double>(c.Level), static_cast<double>(c.Ijk[0]),
+                            static_cast<double>(c.Ijk[1]), static_cast<double>(c.Ijk[2]),
+                            static_cast<double>(static_cast<int>(c.Reason)) });
+  }
+  return out;
+}
+
+void CellsToSplit::AddSerialized(const std::vector<double>& cells)
+{
+  for (std::size_t i = 0; i + 5 <= cells.size(); i += 5)
+  {
+    CellToSplit c;
+    c.Level = static_cast<std::uint8_t>(cells[i]);
+    for (int a = 0; a < 3; ++a)
+    {
+      c.Ijk[a] = static_cast<LatticeIndex>(cells[i + 1 + static_cast<std::size_t>(a)]);
+    }
+    c.Reason = static_cast<SplitReason>(static_cast<int>(cells[i + 4]));
+    this->Add(c);
+  }
+}
+
 } // namespace tpc

@@ -17,7 +17,9 @@
 // PatchNotEmbedded); every other cell is decided as before, its children
 // and their neighbours by their own tests. Nothing here is trusted: the next
 // run's surface is certified and checked anew, and the guarantee is decided
-// on it alone.
+// on it alone. The pieces of a split run gather the cells every piece named
+// (Serialize), since each ghost ring holds cells another piece owns: all
+// pieces split the same cells (Contour.cxx: RepairCellsFoundWanting).
 #pragma once
 
 #include "RootGrid.h"
@@ -46,6 +48,12 @@ public:
   std::size_t Size() const { return this->Cells.size(); }
   /// The request for the cell at `level`, `ijk`, or null.
   const CellToSplit* Find(int level, const LatticeIndex ijk[3]) const;
+  /// Five numbers a cell (level, position, reason), for the pieces of a
+  /// split run to exchange (PieceExchange::GatherAll): a lattice index has
+  /// at most LatticeBits (42) bits, exact in a double.
+  std::vector<double> Serialize() const;
+  /// Adds every cell of a Serialize()d list.
+  void AddSerialized(const std::vector<double>& cells);
 
 private:
   std::vector<CellToSplit> Cells; ///< sorted by level, then position

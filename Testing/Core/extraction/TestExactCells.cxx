@@ -301,7 +301,7 @@ TEST(ExactCells, TiesWithTheLatticeStayConsistent)
     tpc::AdaptiveOctree octree = r.Subdivision.Octree;
     for (const std::uint32_t n : r.Embedding.Cells)
     {
-      octree.Nodes[n].FailedTest = tpc::SplitReason::PatchNotEmbedded; // (as Contour marks them)
+      octree.Nodes[n].Reason = octree.Nodes[n].FailedTest = tpc::SplitReason::PatchNotEmbedded; // (as Contour marks them)
     }
     const std::vector<double> bounds = tpc::TriangleErrorBounds(octree, r.Extraction);
     std::size_t unproven = 0;
