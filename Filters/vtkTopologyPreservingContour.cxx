@@ -478,6 +478,17 @@ int vtkTopologyPreservingContour::RequestData(
       vtkWarningMacro(<< m.Text);
     }
   }
+  if (result.Status == tpc::ContourResult::Outcome::Empty)
+  {
+    // (Empty outputs, with the report of an empty surface: Contour.cxx,
+    // ReportEmptySolid.)
+    clearOutputs();
+    gridOut->GetFieldData()->Initialize();
+    surfaceOut->GetFieldData()->Initialize();
+    AddReport(gridOut, result.Report);
+    AddReport(surfaceOut, result.Report);
+    return 1;
+  }
   if (result.Status != tpc::ContourResult::Outcome::Contoured)
   {
     return result.Status == tpc::ContourResult::Outcome::Aborted ? aborted() : 1;

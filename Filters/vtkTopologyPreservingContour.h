@@ -78,6 +78,11 @@
  * rounds (SplitReason PATCH_NOT_CERTIFIED, PATCH_NOT_EMBEDDED); the
  * guarantee is decided on the last surface.
  *
+ * An empty solid gives empty outputs, a warning, and the report of the
+ * empty surface (guaranteed where the inputs meet the assumptions, 0
+ * components, genus 0, closed; AbsoluteTolerance NaN when the solid's bounds
+ * proved it empty before a domain was chosen and Tolerance is relative).
+ *
  * When the guarantee cannot be reached (tangential contact, depth or cell
  * limit) the filter still outputs a closed manifold surface, sets
  * TopologyGuaranteed to 0, marks the cells (CellState 3, SplitReason

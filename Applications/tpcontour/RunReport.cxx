@@ -81,7 +81,7 @@ std::string TextReport(const RunReport& r)
     << "outward              " << r.Outward << "\n"
     << "TopologyGuaranteed   " << r.Guaranteed << "\n"
     << "UnresolvedCells      " << r.UnresolvedCells << "\n"
-    << "Hausdorff bound      " << Number(r.HausdorffBound, "not proven") << " (tolerance " << r.AbsoluteTolerance
+    << "Hausdorff bound      " << Number(r.HausdorffBound, "not proven") << " (tolerance " << Number(r.AbsoluteTolerance, "unknown")
     << ")\n"
     << "triangles            " << r.Triangles << "\n"
     << "seconds              " << r.Seconds << " (" << r.Threads << (r.Threads == 1 ? " thread, " : " threads, ")
@@ -103,7 +103,7 @@ std::string JsonReport(const RunReport& r)
     << ",\n  \"error\": " << (r.ExitStatus == 1 ? JsonString(r.Error) : "null");
   if (r.ExitStatus != 1)
   {
-    j << ",\n  \"absolute_tolerance\": " << r.AbsoluteTolerance << ",\n  \"components\": " << r.Components
+    j << ",\n  \"absolute_tolerance\": " << Number(r.AbsoluteTolerance, "null") << ",\n  \"components\": " << r.Components
       << ",\n  \"genus\": " << r.Genus << ",\n  \"euler_characteristic\": " << r.EulerCharacteristic
       << ",\n  \"closed\": " << Bool(r.Closed) << ",\n  \"manifold\": " << Bool(r.Manifold)
       << ",\n  \"embedded\": " << Bool(r.Embedded) << ",\n  \"outward\": " << Bool(r.Outward)

@@ -300,6 +300,29 @@ std::optional<Box3> ChooseDomain(const CsgTerm& solid, const ContourScene& scene
   return domain;
 }
 
+/// The report of a solid its bounds prove empty (ChooseDomain): its surface
+/// is empty, and so is the output, exactly - the same report as a run whose
+/// cells all turn out inside or outside (guaranteed where the inputs meet
+/// the assumptions; 0 components, genus 0, Hausdorff distance 0). The
+/// tolerance in world units is unknown without a domain where it is
+/// relative (NaN).
+void ReportEmptySolid(ContourResult& r, const ContourParameters& p)
+{
+  ContourReport& report = r.Report;
+  report.Components = report.Genus = report.EulerCharacteristic = 0;
+  report.Closed = report.Manifold = report.Embedded = report.Outward = true; // (DecideGuarantee: empty)
+  report.HausdorffBound = 0.0;
+  report.AbsoluteTolerance = p.ToleranceIsRelative ? std::nan("") : p.Tolerance;
+  // (Bounds are the same for every piece of a split run: each knows the
+  // whole surface is empty.)
+  GuaranteeConditions conditions;
+  conditions.AssumptionsMet = r.AssumptionsMet;
+  conditions.EveryCellResolved = conditions.LoopsConsistent = conditions.Embedded = true;
+  conditions.WithinTolerance = conditions.WholeSurface = conditions.ClosedOrientedManifold = true;
+  conditions.Outward = true;
+  report.Guaranteed = TopologyGuaranteed(conditions);
+}
+
 /// The inputs' own checks (Verify), over the domain grown by 10 %.
 bool VerifyInputs(const ContourScene& scene, const Box3& domain, Run& run)
 {
@@ -769,12 +792,15 @@ void DecideGuarantee(ContourResult& r, const ContourParameters& p, double tolera
   report.ExactCells = static_cast<long long>(all.ExactCells);
   report.AbsoluteTolerance = tolerance;
   report.Components = whole.Components;
-  report.Genus = whole.Genus;
   report.EulerCharacteristic = whole.EulerCharacteristic;
   report.UnresolvedCells = static_cast<long long>(all.UnresolvedCells);
-  report.Closed = whole.Closed;
-  report.Manifold = whole.Manifold;
   const bool empty = whole.Faces == 0;
+  // (The empty surface - the boundary of an empty solid - is closed and
+  // manifold, of genus 0, though TopologyReport counts a closed surface only
+  // where it has faces.)
+  report.Closed = empty || whole.Closed;
+  report.Manifold = empty || whole.Manifold;
+  report.Genus = empty ? 0 : whole.Genus;
   // (A split run's pieces each hold part of the surface: there the outward
   // orientation rests on the extraction's construction - SolidBoundary.h -
   // and no collapse runs.)
@@ -790,7 +816,16 @@ void DecideGuarantee(ContourResult& r, const ContourParameters& p, double tolera
   conditions.ClosedOrientedManifold = empty || (whole.Closed && whole.Manifold && whole.Oriented);
   conditions.Outward = outward;
   report.Guaranteed = TopologyGuaranteed(conditions);
-  if (report.Guaranteed || (run.Collective() && run.Piece.Piece != 0)) // (one piece says it)
+  if (run.Collective() && run.Piece.Piece != 0) // (one piece says it)
+  {
+    return;
+  }
+  if (empty && conditions.WholeSurface && all.UnresolvedCells == 0)
+  {
+    // (As where the solid's bounds prove it, ChooseDomain: the cells proved it.)
+    r.Messages.push_back({ ContourMessage::Level::Warning, "The solid is empty: nothing to contour." });
+  }
+  if (report.Guaranteed)
   {
     return;
   }
@@ -878,6 +913,11 @@ ContourResult Contour(ContourScene scene, const ContourParameters& parameters, c
   }
   CsgTerm solid = FoldInputs(scene);
   const std::optional<Box3> domain = ChooseDomain(solid, scene, parameters, run);
+  if (result.Status == ContourResult::Outcome::Empty)
+  {
+    ReportEmptySolid(result, parameters);
+    return result;
+  }
   if (!domain || !VerifyInputs(scene, *domain, run))
   {
     return result;

@@ -411,6 +411,40 @@ TEST(FilterErrors, UnboundedSolidNeedsBoundsThenIsCapped)
   EXPECT_EQ(rod.Genus, 0);
 }
 
+TEST(FilterErrors, AnEmptySolidIsReportedAlikeWhicheverWayItIsFound)
+{
+  // Two spheres apart, intersected: empty. Where their boxes are apart too,
+  // the bounds prove it before any cell; where the boxes overlap, the cells
+  // find no surface. Either way: empty outputs, a warning saying so, and the
+  // report of the empty surface - guaranteed, 0 components, genus 0.
+  for (const double offset : { 3.0, 1.5 }) // (boxes apart; boxes overlapping, spheres apart)
+  {
+    SCOPED_TRACE("offset " + std::to_string(offset));
+    vtkNew<vtkSphere> a, b;
+    a->SetRadius(1.0);
+    b->SetRadius(1.0);
+    b->SetCenter(offset, offset, 0.0);
+    vtkNew<vtkImplicitBoolean> both;
+    both->SetOperationTypeToIntersection();
+    both->AddFunction(a);
+    both->AddFunction(b);
+    vtkNew<vtkTopologyPreservingContour> f;
+    f->SetImplicitFunction(both);
+    f->SetTolerance(0.05);
+    MessageRecorder messages(f);
+    const FilterResult r = tpctest::Run(f);
+    EXPECT_TRUE(messages.Errors.empty()) << messages.Errors;
+    EXPECT_NE(messages.Warnings.find("The solid is empty"), std::string::npos) << messages.Warnings;
+    EXPECT_EQ(r.Surface->GetNumberOfCells(), 0);
+    EXPECT_EQ(r.Guaranteed, 1);
+    EXPECT_EQ(r.Components, 0);
+    EXPECT_EQ(r.Genus, 0);
+    EXPECT_EQ(r.Embedded, 1);
+    EXPECT_EQ(r.HausdorffBound, 0.0);
+    EXPECT_EQ(tpctest::FieldValue(r.Grid, "TopologyGuaranteed"), 1.0);
+  }
+}
+
 TEST(FilterErrors, NonPositiveToleranceIsRefused)
 {
   vtkNew<vtkSphere> sphere;
