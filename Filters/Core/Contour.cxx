@@ -532,7 +532,9 @@ bool RepairCellsFoundWanting(const ImplicitScene& scene, const ParallelFor& para
       break;
     }
     const double lo = run.Reported, hi = lo + 0.5 * (0.995 - lo);
-    const auto at = [lo, hi](double stage) { return lo + (hi - lo) * (stage - ChecksEnd) / (EmbeddingEnd - ChecksEnd); };
+    const auto at = [lo, hi](double stage) { // (the first run's stages, mapped into [lo, hi])
+      return lo + (hi - lo) * (stage - ChecksEnd) / (EmbeddingEnd - ChecksEnd);
+    };
     r.Extraction = ExtractionResult();
     r.Embedding = EmbeddingReport();
     if (!ReleaseExpressions(r.Placed.Result.Octree, run.Stage(lo, lo), lo) || run.Aborted())
