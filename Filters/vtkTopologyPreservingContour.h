@@ -81,7 +81,8 @@
  * An empty solid gives empty outputs, a warning, and the report of the
  * empty surface (guaranteed where the inputs meet the assumptions, 0
  * components, genus 0, closed; AbsoluteTolerance NaN when the solid's bounds
- * proved it empty before a domain was chosen and Tolerance is relative).
+ * proved it empty before a domain was chosen and Tolerance is relative,
+ * without Region).
  *
  * When the guarantee cannot be reached (tangential contact, depth or cell
  * limit) the filter still outputs a closed manifold surface, sets

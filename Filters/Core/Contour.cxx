@@ -300,29 +300,6 @@ std::optional<Box3> ChooseDomain(const CsgTerm& solid, const ContourScene& scene
   return domain;
 }
 
-/// The report of a solid its bounds prove empty (ChooseDomain): its surface
-/// is empty, and so is the output, exactly - the same report as a run whose
-/// cells all turn out inside or outside (guaranteed where the inputs meet
-/// the assumptions; 0 components, genus 0, Hausdorff distance 0). The
-/// tolerance in world units is unknown without a domain where it is
-/// relative (NaN).
-void ReportEmptySolid(ContourResult& r, const ContourParameters& p)
-{
-  ContourReport& report = r.Report;
-  report.Components = report.Genus = report.EulerCharacteristic = 0;
-  report.Closed = report.Manifold = report.Embedded = report.Outward = true; // (DecideGuarantee: empty)
-  report.HausdorffBound = 0.0;
-  report.AbsoluteTolerance = p.ToleranceIsRelative ? std::nan("") : p.Tolerance;
-  // (Bounds are the same for every piece of a split run: each knows the
-  // whole surface is empty.)
-  GuaranteeConditions conditions;
-  conditions.AssumptionsMet = r.AssumptionsMet;
-  conditions.EveryCellResolved = conditions.LoopsConsistent = conditions.Embedded = true;
-  conditions.WithinTolerance = conditions.WholeSurface = conditions.ClosedOrientedManifold = true;
-  conditions.Outward = true;
-  report.Guaranteed = TopologyGuaranteed(conditions);
-}
-
 /// The inputs' own checks (Verify), over the domain grown by 10 %.
 bool VerifyInputs(const ContourScene& scene, const Box3& domain, Run& run)
 {
@@ -336,6 +313,64 @@ bool VerifyInputs(const ContourScene& scene, const Box3& domain, Run& run)
     }
   }
   return true;
+}
+
+/// Grows `box` by the boxes of the bounded, non-empty terms of `term`, the
+/// largest ones (a term's own where it has one, else its operands').
+void AddBoundedTerms(const CsgTerm& term, const PrimitiveSet& primitives, std::optional<Box3>& box)
+{
+  const SolidBounds b = term.Bounds(primitives);
+  if (b.Bounded() && !b.Empty)
+  {
+    const Box3 before = box ? *box : b.Box;
+    const Vec3 corners[4] = { b.Box.lo, b.Box.hi, before.lo, before.hi };
+    box = BoundsOf(corners, 4);
+    return;
+  }
+  for (const CsgTerm& operand : term.Operands)
+  {
+    AddBoundedTerms(operand, primitives, box);
+  }
+}
+
+/// The report of a solid its bounds prove empty (ChooseDomain): its surface
+/// is empty, and so is the output, exactly - the same report as a run whose
+/// cells all turn out inside or outside (guaranteed where the inputs meet
+/// the assumptions; 0 components, genus 0, Hausdorff distance 0). The
+/// bounds are those of the core's description of each input, so the
+/// inputs' own checks (Verify) run first, over the box of its bounded terms
+/// (the spheres of an intersection of spheres apart); where none is, an
+/// input with a check goes unchecked and the guarantee is not given. The tolerance in world units is that of the
+/// Region where it is relative and one is given, else unknown (NaN).
+void ReportEmptySolid(const ContourScene& scene, const ContourParameters& p, Run& run)
+{
+  ContourResult& r = run.Result;
+  std::optional<Box3> bounded;
+  bool checked = true;
+  for (const SceneInput& input : scene.Inputs)
+  {
+    AddBoundedTerms(input.Solid, scene.Primitives, bounded);
+    checked = checked && !input.Verify;
+  }
+  if (bounded && !VerifyInputs(scene, *bounded, run))
+  {
+    return; // (refused: the messages say why)
+  }
+  ContourReport& report = r.Report;
+  report.Components = report.Genus = report.EulerCharacteristic = 0;
+  report.Closed = report.Manifold = report.Embedded = report.Outward = true; // (DecideGuarantee: empty)
+  report.HausdorffBound = 0.0;
+  report.AbsoluteTolerance = !p.ToleranceIsRelative ? p.Tolerance
+    : p.Region                                     ? p.Tolerance * p.Region->Diagonal()
+                                                   : std::nan("");
+  // (Bounds are the same for every piece of a split run: each knows the
+  // whole surface is empty.)
+  GuaranteeConditions conditions;
+  conditions.AssumptionsMet = r.AssumptionsMet && (checked || bounded);
+  conditions.EveryCellResolved = conditions.LoopsConsistent = conditions.Embedded = true;
+  conditions.WithinTolerance = conditions.WholeSurface = conditions.ClosedOrientedManifold = true;
+  conditions.Outward = true;
+  report.Guaranteed = TopologyGuaranteed(conditions);
 }
 
 /// Intersects `solid` with the planes of `box` it may reach (capping it
@@ -520,17 +555,23 @@ bool RepairCellsFoundWanting(const ImplicitScene& scene, const ParallelFor& para
   SubdivisionParameters& parameters = r.Placed.Parameters;
   for (int round = 0; round < rounds; ++round)
   {
-    CellsToSplit found;
+    CellsToSplit found, next = parameters.SplitFirst;
     AddCellsFoundWanting(r, found);
-    const std::size_t named = parameters.SplitFirst.Size();
-    ShareAmongPieces(found, parameters.SplitFirst, run);
-    const std::size_t added = parameters.SplitFirst.Size() - named; // (the same in every piece)
-    const bool fits = r.Placed.Result.Octree.Nodes.size() + RepairCellsPerSplit * added <=
-      parameters.MaximumNumberOfCells;
-    if (added == 0 || run.Sum(fits ? 0 : 1) > 0)
+    ShareAmongPieces(found, next, run);
+    const std::size_t added = next.Size() - parameters.SplitFirst.Size(); // (the same in every piece)
+    if (added == 0)
     {
       break;
     }
+    const bool fits =
+      r.Placed.Result.Octree.Nodes.size() + RepairCellsPerSplit * added <= parameters.MaximumNumberOfCells;
+    if (run.Sum(fits ? 0 : 1) > 0)
+    {
+      run.Warn("No repair round was made for the " + std::to_string(added) +
+        " cell(s) whose final patch is not certified or not embedded: it could exceed MaximumNumberOfCells.");
+      break;
+    }
+    parameters.SplitFirst = std::move(next);
     const double lo = run.Reported, hi = lo + 0.5 * (0.995 - lo);
     const auto at = [lo, hi](double stage) { // (the first run's stages, mapped into [lo, hi])
       return lo + (hi - lo) * (stage - ChecksEnd) / (EmbeddingEnd - ChecksEnd);
@@ -578,6 +619,13 @@ bool SubdivideAndExtract(const ImplicitScene& scene, const Box3& rootDomain, int
   {
     r.Status = ContourResult::Outcome::Aborted;
     return false;
+  }
+  if (run.Collective())
+  {
+    // (The pieces agreed not to stop - RunOnBestLatticePlacement: an abort
+    // asked of this piece after the last agreement, while a discarded run
+    // was freed, would make it leave the collective calls below alone.)
+    run.AbortAsked = false;
   }
   if (!ExtractAndCheck(scene, parallelFor, SubdivisionEnd, ExtractionEnd, EmbeddingEnd, run) ||
     !RepairCellsFoundWanting(scene, parallelFor, repairRounds, run))
@@ -822,10 +870,12 @@ void DecideGuarantee(ContourResult& r, const ContourParameters& p, double tolera
   {
     return;
   }
-  if (empty && conditions.WholeSurface && all.UnresolvedCells == 0)
+  if (empty && conditions.WholeSurface && all.UnresolvedCells == 0 && withoutPatch == 0)
   {
     // (As where the solid's bounds prove it, ChooseDomain: the cells proved it.)
-    r.Messages.push_back({ ContourMessage::Level::Warning, "The solid is empty: nothing to contour." });
+    r.Messages.push_back({ ContourMessage::Level::Warning,
+      p.Bounds ? "The solid does not reach into Bounds: nothing to contour."
+               : "The solid is empty: nothing to contour." });
   }
   if (report.Guaranteed)
   {
@@ -913,11 +963,18 @@ ContourResult Contour(ContourScene scene, const ContourParameters& parameters, c
   {
     return result;
   }
+  if (!(parameters.Tolerance > 0.0) || !std::isfinite(parameters.Tolerance))
+  {
+    std::ostringstream text;
+    text << "Tolerance must be positive (got " << parameters.Tolerance << ").";
+    run.Refuse(text.str());
+    return result;
+  }
   CsgTerm solid = FoldInputs(scene);
   const std::optional<Box3> domain = ChooseDomain(solid, scene, parameters, run);
   if (result.Status == ContourResult::Outcome::Empty)
   {
-    ReportEmptySolid(result, parameters);
+    ReportEmptySolid(scene, parameters, run);
     return result;
   }
   if (!domain || !VerifyInputs(scene, *domain, run))

@@ -163,7 +163,8 @@ struct ContourResult
   {
     Contoured, ///< outputs below are set
     Refused,   ///< bad input or parameters: an Error message says why
-    Empty,     ///< the solid is empty (a Warning says so)
+    Empty,     ///< its bounds prove the solid empty (a Warning says so); Report is the
+               ///< empty surface's (Contour.cxx: ReportEmptySolid)
     Aborted    ///< progress asked to stop; outputs are incomplete
   };
   Outcome Status = Outcome::Refused;

@@ -39,23 +39,33 @@ Outcome Contour(const tpctest::Scene& scene, double tolerance, int depth, int pl
 tpctest::Scene RandomScene(std::mt19937& rng)
 {
   std::uniform_real_distribution<double> u(-1.0, 1.0), unit(0.0, 1.0);
+  // Three draws as a vector, in a fixed order (the order in which GCC
+  // evaluated the arguments of Vec3(u(rng), u(rng), u(rng)), unspecified in
+  // C++: clang's made other scenes).
+  const auto draw3 = [&rng](auto& d, double offset, double scale) {
+    const double z = offset + scale * d(rng), y = offset + scale * d(rng), x = offset + scale * d(rng);
+    return Vec3(x, y, z);
+  };
   tpctest::SceneBuilder b;
   std::vector<CsgTerm> terms;
   const int count = 2 + static_cast<int>(rng() % 4);
   for (int i = 0; i < count; ++i)
   {
-    const Vec3 c(0.5 * u(rng), 0.5 * u(rng), 0.5 * u(rng));
+    const Vec3 c = draw3(u, 0.0, 0.5);
     switch (rng() % 4)
     {
       case 0:
         terms.push_back(b.Sphere(c, 0.15 + 0.35 * unit(rng)));
         break;
       case 1:
-        terms.push_back(b.Ellipsoid(c, Vec3(0.1 + 0.4 * unit(rng), 0.1 + 0.4 * unit(rng), 0.1 + 0.4 * unit(rng))));
+        terms.push_back(b.Ellipsoid(c, draw3(unit, 0.1, 0.4)));
         break;
       case 2:
-        terms.push_back(b.Cylinder(c, Vec3(u(rng), u(rng), u(rng)), 0.05 + 0.2 * unit(rng)));
+      {
+        const double radius = 0.05 + 0.2 * unit(rng);
+        terms.push_back(b.Cylinder(c, draw3(u, 0.0, 1.0), radius));
         break;
+      }
       default:
       {
         // A box rotated about z and x, as six composed planes.

@@ -441,7 +441,20 @@ TEST(FilterErrors, AnEmptySolidIsReportedAlikeWhicheverWayItIsFound)
     EXPECT_EQ(r.Genus, 0);
     EXPECT_EQ(r.Embedded, 1);
     EXPECT_EQ(r.HausdorffBound, 0.0);
+    EXPECT_EQ(tpctest::FieldValue(r.Surface, "Closed"), 1.0);
+    EXPECT_EQ(tpctest::FieldValue(r.Surface, "Manifold"), 1.0);
     EXPECT_EQ(tpctest::FieldValue(r.Grid, "TopologyGuaranteed"), 1.0);
+    // Which way it was found: by the bounds, before any cell (no grid, and no
+    // domain to scale the relative tolerance by), or by the cells.
+    const bool byBounds = offset > 2.0;
+    EXPECT_EQ(r.Grid->GetNumberOfCells() == 0, byBounds);
+    EXPECT_EQ(std::isnan(r.Tolerance), byBounds);
+    // Bad parameters are refused all the same.
+    f->SetTolerance(-1.0);
+    MessageRecorder refused(f);
+    f->Update();
+    EXPECT_NE(refused.Errors.find("Tolerance must be positive"), std::string::npos) << refused.Errors;
+    EXPECT_EQ(tpctest::FieldValue(f->GetOutputDataObject(0), "TopologyGuaranteed"), 0.0);
   }
 }
 
