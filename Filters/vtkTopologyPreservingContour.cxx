@@ -379,11 +379,11 @@ int vtkTopologyPreservingContour::RequestData(
     vtkErrorMacro("Output data objects are missing.");
     return 0;
   }
-  auto clearOutputs = [&]() {
+  auto clearOutputs = [&](const tpc::ContourReport& report = tpc::ContourReport()) {
     gridOut->Initialize();
     surfaceOut->Initialize();
-    AddReport(gridOut, tpc::ContourReport());
-    AddReport(surfaceOut, tpc::ContourReport());
+    AddReport(gridOut, report);
+    AddReport(surfaceOut, report);
   };
   clearOutputs();
   // The piece requested (UpdatePiece, or the rank under pvbatch/pvserver):
@@ -482,11 +482,7 @@ int vtkTopologyPreservingContour::RequestData(
   {
     // (Empty outputs, with the report of an empty surface: Contour.cxx,
     // ReportEmptySolid.)
-    clearOutputs();
-    gridOut->GetFieldData()->Initialize();
-    surfaceOut->GetFieldData()->Initialize();
-    AddReport(gridOut, result.Report);
-    AddReport(surfaceOut, result.Report);
+    clearOutputs(result.Report);
     return 1;
   }
   if (result.Status != tpc::ContourResult::Outcome::Contoured)

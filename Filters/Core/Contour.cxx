@@ -602,7 +602,6 @@ bool RepairCellsFoundWanting(const ImplicitScene& scene, const ParallelFor& para
       break;
     }
   }
-  r.Parameters.SplitFirst = parameters.SplitFirst;
   return true;
 }
 

@@ -171,7 +171,7 @@ struct ContourResult
   std::vector<ContourMessage> Messages; ///< in the order they arose
   /// Every input met the paper's assumptions.
   bool AssumptionsMet = true;
-  SubdivisionParameters Parameters; ///< as used (depth cap, cells split first included)
+  SubdivisionParameters Parameters; ///< as asked (depth cap included; a piece's and the cells split first: Placed)
   /// The subdivision's runs again on the same lattice with the cells an
   /// earlier surface found wanting split first (CellRepair.h).
   int RepairRuns = 0;

@@ -308,7 +308,7 @@ TEST(RandomScenes, PiecesOfASplitRunRepairTheSameCells)
       EXPECT_EQ(r.Report.Guaranteed, rounds > 0);
       EXPECT_EQ(r.RepairRuns, pieces[0].RepairRuns);
       EXPECT_EQ(r.Report.UnresolvedCells, 0);
-      EXPECT_EQ(r.Parameters.SplitFirst.Size(), pieces[0].Parameters.SplitFirst.Size());
+      EXPECT_EQ(r.Placed.Parameters.SplitFirst.Size(), pieces[0].Placed.Parameters.SplitFirst.Size());
       EXPECT_TRUE(r.Topology.Closed && r.Topology.Manifold); // (the whole surface's, from the pieces)
     }
     if (rounds > 0)

@@ -38,7 +38,8 @@ struct PlacedSubdivision
   /// Width of the finest cell MaximumDepth allows.
   double FinestCell = 0.0;
   /// The parameters the kept run was made with (a piece's: its depth below
-  /// the split roots, its share of the cells, its trees' roles).
+  /// the split roots, its share of the cells, its trees' roles; after repair
+  /// rounds, the cells they split first - Contour.cxx).
   SubdivisionParameters Parameters;
 };
 
