@@ -1,6 +1,5 @@
 #include "LatticePlacement.h"
 
-#include "MeshEdges.h"
 
 #include <algorithm>
 #include <cmath>
@@ -60,19 +59,6 @@ double FlatPenalty(const FlatCreaseEdge& e, double origin, double spacing, doubl
 
 namespace
 {
-/// The vertex of triangle `t` that is not on the edge `key`.
-const Vec3& ThirdVertex(const MeshSolid& mesh, std::uint32_t t, std::uint64_t key)
-{
-  for (const std::uint32_t v : mesh.Triangles()[t])
-  {
-    if (v != EdgeLow(key) && v != EdgeHigh(key))
-    {
-      return mesh.Points()[v];
-    }
-  }
-  return mesh.Points()[mesh.Triangles()[t][0]];
-}
-
 /// The mesh edge from p to q between facets with third vertices r1 and r2,
 /// classified per axis: a ridge or valley along it, or lying in its plane.
 void AddCreaseEdge(const Vec3& p, const Vec3& q, const Vec3& r1, const Vec3& r2, double ridgeThickness,
@@ -118,44 +104,54 @@ LatticeCreases FindLatticeCreases(const PrimitiveSet& primitives, double ridgeTh
   LatticeCreases creases;
   for (const MeshSolid& mesh : primitives.Meshes)
   {
-    std::vector<EdgeUse> uses;
-    BuildEdgeTable(mesh.Triangles().data(), mesh.Triangles().size(), uses, parallelFor);
-    // Blocks of whole edges classified in parallel, then appended in block
-    // order: the lists are in the edge table's order, as one pass would
-    // leave them (the penalty sums them in that order).
+    // Each edge with two triangles once, from the lower-numbered triangle
+    // (MeshSolid keeps every triangle's neighbour across each edge: no edge
+    // table of its own, which cost as much as the penalties below on
+    // armadillo). Blocks of triangles classified in parallel, then appended
+    // in block order: the lists are in triangle order whatever the threads.
+    // (An edge of more than two triangles has no neighbour there: a
+    // non-manifold mesh, which the subdivision does not trust anyway.)
+    const std::size_t triangles = mesh.Triangles().size();
     constexpr std::size_t Blocks = 64;
-    std::vector<std::size_t> start(Blocks + 1, uses.size());
-    for (std::size_t b = 0; b < Blocks; ++b)
-    {
-      std::size_t i = uses.size() * b / Blocks;
-      while (i > 0 && i < uses.size() && uses[i].Key == uses[i - 1].Key)
-      {
-        ++i;
-      }
-      start[b] = std::max(i, b > 0 ? start[b - 1] : 0);
-    }
     std::vector<LatticeCreases> found(Blocks);
     parallelFor(Blocks, [&](std::size_t begin, std::size_t end) {
       for (std::size_t b = begin; b < end; ++b)
       {
-        // (Closed meshes: every edge has two triangles; a non-manifold
-        // edge's uses are taken in pairs.)
-        for (std::size_t k = start[b]; k + 1 < start[b + 1]; ++k)
+        for (std::size_t t = triangles * b / Blocks; t < triangles * (b + 1) / Blocks; ++t)
         {
-          const std::uint64_t key = uses[k].Key;
-          if (uses[k + 1].Key == key)
+          const auto& corners = mesh.Triangles()[t];
+          for (int k = 0; k < 3; ++k)
           {
-            AddCreaseEdge(mesh.Points()[EdgeLow(key)], mesh.Points()[EdgeHigh(key)],
-              ThirdVertex(mesh, uses[k].Triangle, key), ThirdVertex(mesh, uses[k + 1].Triangle, key),
-              ridgeThickness, planeThickness, found[b]);
-            ++k;
+            const std::uint32_t other = mesh.Across(static_cast<std::uint32_t>(t), k);
+            if (other == MeshSolid::NoTriangle || other <= t)
+            {
+              continue;
+            }
+            const std::uint32_t from = corners[k], to = corners[(k + 1) % 3];
+            std::uint32_t third = 0;
+            for (const std::uint32_t v : mesh.Triangles()[other])
+            {
+              third = v != from && v != to ? v : third;
+            }
+            // (From the edge's lower vertex number to its higher, as an
+            // edge table keyed by them would give it.)
+            AddCreaseEdge(mesh.Points()[std::min(from, to)], mesh.Points()[std::max(from, to)],
+              mesh.Points()[corners[(k + 2) % 3]], mesh.Points()[third], ridgeThickness, planeThickness, found[b]);
           }
         }
       }
     });
-    for (const LatticeCreases& f : found)
+    for (int a = 0; a < 3; ++a)
     {
-      for (int a = 0; a < 3; ++a)
+      std::size_t ridges = creases.Ridges[a].size(), inPlane = creases.InPlane[a].size();
+      for (const LatticeCreases& f : found)
+      {
+        ridges += f.Ridges[a].size();
+        inPlane += f.InPlane[a].size();
+      }
+      creases.Ridges[a].reserve(ridges);
+      creases.InPlane[a].reserve(inPlane);
+      for (const LatticeCreases& f : found)
       {
         creases.Ridges[a].insert(creases.Ridges[a].end(), f.Ridges[a].begin(), f.Ridges[a].end());
         creases.InPlane[a].insert(creases.InPlane[a].end(), f.InPlane[a].begin(), f.InPlane[a].end());

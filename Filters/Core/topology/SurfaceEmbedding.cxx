@@ -1,5 +1,6 @@
 #include "SurfaceEmbedding.h"
 
+#include "EmbeddedStars.h"
 #include "SelfIntersection.h"
 
 #include <algorithm>
@@ -107,7 +108,8 @@ struct RunFailures
 /// The run's own triangles (each in its cell, not degenerate), their pairs,
 /// and their pairs with the runs of touching leaves after it in node order
 /// (each pair of runs is met from both sides; the first one tests it).
-RunFailures CheckRun(const AdaptiveOctree& tree, const TriangleMesh& mesh, const CellTriangles& runs, std::size_t k)
+RunFailures CheckRun(const AdaptiveOctree& tree, const TriangleMesh& mesh, const EmbeddedStars& stars,
+  const CellTriangles& runs, std::size_t k)
 {
   RunFailures f;
   const std::uint32_t cell = runs.Cell[k];
@@ -140,6 +142,10 @@ RunFailures CheckRun(const AdaptiveOctree& tree, const TriangleMesh& mesh, const
       for (std::uint32_t t2 = same ? t1 + 1 : otherBegin; t2 < otherEnd; ++t2)
       {
         if (!own[t1 - begin].Overlaps(other[t2 - otherBegin]))
+        {
+          continue;
+        }
+        if (stars.ProveProper(mesh.Triangles[t1], mesh.Triangles[t2]))
         {
           continue;
         }
@@ -218,13 +224,17 @@ EmbeddingReport CheckEmbedding(const AdaptiveOctree& tree, const TriangleMesh& m
 {
   EmbeddingReport report;
   const CellTriangles runs(mesh);
+  // (Pairs of triangles around a vertex whose star is proven embedded need
+  // no test of their own: EmbeddedStars.h.)
+  const EmbeddedStars stars(mesh.Points.data(), mesh.Points.size(), mesh.Triangles.data(), mesh.Triangles.size(),
+    parallelFor);
   constexpr std::size_t Chunk = 4096;
   const std::size_t count = runs.Cell.size();
   std::vector<RunFailures> failures(std::min(count, Chunk)); // one chunk's
   const bool done = ForEachChunk(count, Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
     for (std::size_t k = begin; k < end; ++k)
     {
-      failures[k % Chunk] = CheckRun(tree, mesh, runs, k);
+      failures[k % Chunk] = CheckRun(tree, mesh, stars, runs, k);
     }
   }, [&](std::size_t first, std::size_t last) {
     for (std::size_t k = first; k < last; ++k)

@@ -36,7 +36,7 @@ struct EmbeddingReport
   std::size_t CoincidentVertices = 0;    ///< vertices with the coordinates of an earlier one
   std::size_t DegenerateTriangles = 0;   ///< three collinear vertices
   std::size_t TrianglesOutsideCells = 0; ///< a vertex outside the triangle's cell box
-  std::size_t PairsTested = 0;           ///< exact pair tests run
+  std::size_t PairsTested = 0;           ///< exact pair tests run (pairs around a proven star: none, EmbeddedStars.h)
   /// Octree nodes whose patches take part in a failure (each once, sorted).
   std::vector<std::uint32_t> Cells;
   bool Aborted = false;
