@@ -153,10 +153,9 @@ bool ConvertPolyData(vtkPolyData* input, MeshInput& mesh, std::string& error, bo
     error = "it has no polygons or triangle strips";
     return false;
   }
-  mesh.Repair = RepairMesh(points, faces, true, 100, parallelFor, progress);
+  mesh.Solid = RepairIntoSolid(std::move(points), std::move(faces), mesh.Repair, 100, parallelFor, progress);
   mesh.Repair.FilledHoleTriangles = filled;
   mesh.Repair.FannedPolygons = fanned;
-  mesh.Solid = MeshSolid(std::move(points), std::move(faces), parallelFor);
   return true;
 }
 

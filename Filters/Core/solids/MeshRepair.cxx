@@ -232,21 +232,49 @@ std::vector<std::uint32_t> ComponentLabels(UnionFind& components, std::size_t tr
   return component;
 }
 
+/// Turns triangle t over, and its neighbours with it (null: none kept):
+/// (a, b, c) becomes (a, c, b), whose edges 0, 1, 2 are the old 2, 1, 0.
+void Flip(std::vector<Triangle>& triangles, std::vector<Triangle>* neighbours, std::size_t t)
+{
+  std::swap(triangles[t][1], triangles[t][2]);
+  if (neighbours)
+  {
+    std::swap((*neighbours)[t][0], (*neighbours)[t][2]);
+  }
+}
+
 /// Orients every component consistently; returns the component of each
 /// triangle, and the number of edges in `edges` (flips do not change the
-/// edges: the Euler characteristic is taken from this table).
-std::vector<std::uint32_t> OrientConsistently(
-  std::vector<Triangle>& triangles, const ParallelFor& parallelFor, MeshRepairReport& r, long long& edges)
+/// edges: the Euler characteristic is taken from this table). Where
+/// `neighbours` is given, each triangle's neighbour across each edge after
+/// the flips, as MeshSolid::Across answers them (the triangle across an
+/// edge of exactly two, else MeshSolid::NoTriangle).
+std::vector<std::uint32_t> OrientConsistently(std::vector<Triangle>& triangles, const ParallelFor& parallelFor,
+  MeshRepairReport& r, long long& edges, std::vector<Triangle>* neighbours)
 {
   std::vector<EdgeUse> uses;
   BuildEdgeTable(triangles.data(), triangles.size(), uses, parallelFor);
   UnionFind components(triangles.size());
-  const std::vector<bool> flips = ConsistentFlips(EdgeNeighbours(uses, triangles.size(), components, r, edges), r);
+  const std::vector<Across> across = EdgeNeighbours(uses, triangles.size(), components, r, edges);
+  std::vector<EdgeUse>().swap(uses);
+  const std::vector<bool> flips = ConsistentFlips(across, r);
+  if (neighbours)
+  {
+    static_assert(Across::None == MeshSolid::NoTriangle, "the same mark for no neighbour");
+    neighbours->resize(triangles.size());
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        (*neighbours)[t][k] = across[3 * t + static_cast<std::size_t>(k)].Triangle;
+      }
+    }
+  }
   for (std::size_t t = 0; t < triangles.size(); ++t)
   {
     if (flips[t])
     {
-      std::swap(triangles[t][1], triangles[t][2]);
+      Flip(triangles, neighbours, t);
     }
   }
   return ComponentLabels(components, triangles.size(), r);
@@ -255,15 +283,13 @@ std::vector<std::uint32_t> OrientConsistently(
 /// Flips components so that each faces away from the solid: an outer shell
 /// encloses positive volume, a cavity's shell negative.
 void OrientOutward(const std::vector<Vec3>& P, std::vector<Triangle>& triangles,
-  const std::vector<std::uint32_t>& component, MeshRepairReport& r)
+  const std::vector<std::uint32_t>& component, MeshRepairReport& r, std::vector<Triangle>* neighbours)
 {
   const std::size_t count = r.Components;
-  std::vector<std::vector<Triangle>> parts(count);
   std::vector<double> volume(count, 0.0);
   for (std::size_t t = 0; t < triangles.size(); ++t)
   {
     const Triangle& f = triangles[t];
-    parts[component[t]].push_back(f);
     volume[component[t]] += Dot(P[f[0]], Cross(P[f[1]], P[f[2]])) / 6.0;
   }
   // Nesting depth from exact inside tests (parity does not depend on
@@ -272,6 +298,11 @@ void OrientOutward(const std::vector<Vec3>& P, std::vector<Triangle>& triangles,
   std::vector<int> depth(count, 0);
   if (count > 1 && count <= 256)
   {
+    std::vector<std::vector<Triangle>> parts(count);
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+    {
+      parts[component[t]].push_back(triangles[t]);
+    }
     std::vector<MeshSolid> solids;
     for (const auto& part : parts)
     {
@@ -296,56 +327,54 @@ void OrientOutward(const std::vector<Vec3>& P, std::vector<Triangle>& triangles,
   {
     if (flip[component[t]])
     {
-      std::swap(triangles[t][1], triangles[t][2]);
+      Flip(triangles, neighbours, t);
     }
   }
 }
 } // namespace
 
-MeshRepairReport RepairMesh(std::vector<Vec3>& points, std::vector<Triangle>& triangles,
-  bool checkSelfIntersections, std::size_t maxReported, const ParallelFor& parallelFor,
-  const ProgressCallback& progress)
+namespace
 {
-  // Progress after each step (a 1M-triangle mesh takes a few tenths of a
-  // second per step); the exact self-intersection test is most of the work.
+/// Progress after each step of the repair (a 1M-triangle mesh takes a few
+/// tenths of a second per step; the exact self-intersection test is most of
+/// the work).
+constexpr double MergedAt = 0.03, DroppedAt = 0.06, OrientedAt = 0.08, OutwardAt = 0.1, CheckedAt = 0.95;
+
+/// The repairs (merging, dropping, orienting), each step's progress
+/// reported; false when asked to stop. `edges`: the number of edges;
+/// `neighbours` (if given): as OrientConsistently gives them.
+bool Repair(std::vector<Vec3>& points, std::vector<Triangle>& triangles, const ParallelFor& parallelFor,
+  const ProgressCallback& progress, MeshRepairReport& r, long long& edges, std::vector<Triangle>* neighbours)
+{
   auto stop = [&progress](double f) { return progress && progress(f); };
-  MeshRepairReport r;
   r.InputTriangles = triangles.size();
   MergeCoincidentVertices(points, triangles, parallelFor, r);
-  if (stop(0.03))
+  if (stop(MergedAt))
   {
-    return r;
+    return false;
   }
   DropDegenerateAndDuplicates(points, triangles, parallelFor, r);
-  if (triangles.empty() || stop(0.06))
+  if (triangles.empty() || stop(DroppedAt))
   {
-    return r;
+    return false;
   }
-  long long edges = 0;
-  const std::vector<std::uint32_t> component = OrientConsistently(triangles, parallelFor, r, edges);
-  if (stop(0.08))
+  const std::vector<std::uint32_t> component = OrientConsistently(triangles, parallelFor, r, edges, neighbours);
+  if (stop(OrientedAt))
   {
-    return r;
+    return false;
   }
   if (r.Orientable)
   {
-    OrientOutward(points, triangles, component, r);
+    OrientOutward(points, triangles, component, r, neighbours);
   }
-  if (stop(0.1))
-  {
-    return r;
-  }
-  if (checkSelfIntersections)
-  {
-    r.SelfIntersections =
-      CountSelfIntersections(points, triangles, maxReported, parallelFor, ProgressRange(progress, 0.1, 0.95));
-    r.SelfIntersectionsChecked = true;
-    if (stop(0.95))
-    {
-      return r;
-    }
-  }
-  // Topology of the input surface.
+  return !stop(OutwardAt);
+}
+
+/// The input surface's topology: Euler characteristic, pinched vertices,
+/// and the genus where the surface is a closed manifold.
+void CountTopology(const std::vector<Vec3>& points, const std::vector<Triangle>& triangles, long long edges,
+  const ParallelFor& parallelFor, MeshRepairReport& r)
+{
   std::vector<bool> used(points.size(), false);
   for (const Triangle& t : triangles)
   {
@@ -364,7 +393,54 @@ MeshRepairReport RepairMesh(std::vector<Vec3>& points, std::vector<Triangle>& tr
       r.Genus = GenusFromEuler(static_cast<std::int64_t>(r.Components), r.EulerCharacteristic);
     }
   }
+}
+} // namespace
+
+MeshRepairReport RepairMesh(std::vector<Vec3>& points, std::vector<Triangle>& triangles,
+  bool checkSelfIntersections, std::size_t maxReported, const ParallelFor& parallelFor,
+  const ProgressCallback& progress)
+{
+  MeshRepairReport r;
+  long long edges = 0;
+  if (!Repair(points, triangles, parallelFor, progress, r, edges, nullptr))
+  {
+    return r;
+  }
+  if (checkSelfIntersections)
+  {
+    r.SelfIntersections = CountSelfIntersections(
+      points, triangles, maxReported, parallelFor, ProgressRange(progress, OutwardAt, CheckedAt));
+    r.SelfIntersectionsChecked = true;
+    if (progress && progress(CheckedAt))
+    {
+      return r;
+    }
+  }
+  CountTopology(points, triangles, edges, parallelFor, r);
   return r;
+}
+
+MeshSolid RepairIntoSolid(std::vector<Vec3> points, std::vector<Triangle> triangles, MeshRepairReport& report,
+  std::size_t maxReported, const ParallelFor& parallelFor, const ProgressCallback& progress)
+{
+  report = MeshRepairReport();
+  long long edges = 0;
+  std::vector<Triangle> neighbours;
+  if (!Repair(points, triangles, parallelFor, progress, report, edges, &neighbours))
+  {
+    // (Asked to stop, or nothing left: a solid of no triangles.)
+    return triangles.empty() ? MeshSolid(std::move(points), {}, {}, parallelFor) : MeshSolid();
+  }
+  MeshSolid solid(std::move(points), std::move(triangles), std::move(neighbours), parallelFor);
+  report.SelfIntersections =
+    CountSelfIntersections(solid, maxReported, parallelFor, ProgressRange(progress, OutwardAt, CheckedAt));
+  report.SelfIntersectionsChecked = true;
+  if (progress && progress(CheckedAt))
+  {
+    return MeshSolid();
+  }
+  CountTopology(solid.Points(), solid.Triangles(), edges, parallelFor, report);
+  return solid;
 }
 
 std::string MeshRepairReport::Describe() const

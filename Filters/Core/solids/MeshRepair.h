@@ -11,6 +11,7 @@
 // decides whether the mesh is still usable.
 #pragma once
 
+#include "MeshSolid.h"
 #include "Parallel.h"
 #include "Vector3.h"
 
@@ -76,6 +77,15 @@ struct MeshRepairReport
 MeshRepairReport RepairMesh(std::vector<Vec3>& points,
   std::vector<std::array<std::uint32_t, 3>>& triangles, bool checkSelfIntersections = true,
   std::size_t maxReported = 100, const ParallelFor& parallelFor = SequentialFor,
+  const ProgressCallback& progress = nullptr);
+
+/// RepairMesh with the self-intersection check, and the repaired mesh as a
+/// solid, sharing their work: one edge table orients the mesh and gives the
+/// solid its neighbours, and the check reads the solid's triangle boxes
+/// (armadillo: a tenth less time to read, and 1 200 fewer fresh pages). An
+/// empty solid where `progress` asked to stop (`report` is then partial).
+MeshSolid RepairIntoSolid(std::vector<Vec3> points, std::vector<std::array<std::uint32_t, 3>> triangles,
+  MeshRepairReport& report, std::size_t maxReported = 100, const ParallelFor& parallelFor = SequentialFor,
   const ProgressCallback& progress = nullptr);
 
 } // namespace tpc

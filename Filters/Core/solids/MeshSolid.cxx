@@ -20,15 +20,6 @@ MeshSolid::MeshSolid(
   : Vertices(std::move(points))
   , Faces(std::move(triangles))
 {
-  this->Normals.resize(this->Faces.size());
-  parallelFor(this->Faces.size(), [&](std::size_t begin, std::size_t end) {
-    for (std::size_t t = begin; t < end; ++t)
-    {
-      const Vec3& a = this->Vertex(static_cast<std::uint32_t>(t), 0);
-      this->Normals[t] = Normalized(
-        Cross(this->Vertex(static_cast<std::uint32_t>(t), 1) - a, this->Vertex(static_cast<std::uint32_t>(t), 2) - a));
-    }
-  });
   this->Neighbours.assign(this->Faces.size(), { NoTriangle, NoTriangle, NoTriangle });
   std::vector<EdgeUse> uses;
   BuildEdgeTable(this->Faces.data(), this->Faces.size(), uses, parallelFor);
@@ -38,6 +29,29 @@ MeshSolid::MeshSolid(
       const EdgeUse &p = uses[first], &q = uses[first + 1];
       this->Neighbours[p.Triangle][p.Corner] = q.Triangle;
       this->Neighbours[q.Triangle][q.Corner] = p.Triangle;
+    }
+  });
+  this->Index(parallelFor);
+}
+
+MeshSolid::MeshSolid(std::vector<Vec3> points, std::vector<std::array<std::uint32_t, 3>> triangles,
+  std::vector<std::array<std::uint32_t, 3>> neighbours, const ParallelFor& parallelFor)
+  : Vertices(std::move(points))
+  , Faces(std::move(triangles))
+  , Neighbours(std::move(neighbours))
+{
+  this->Index(parallelFor);
+}
+
+void MeshSolid::Index(const ParallelFor& parallelFor)
+{
+  this->Normals.resize(this->Faces.size());
+  parallelFor(this->Faces.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t)
+    {
+      const Vec3& a = this->Vertex(static_cast<std::uint32_t>(t), 0);
+      this->Normals[t] = Normalized(
+        Cross(this->Vertex(static_cast<std::uint32_t>(t), 1) - a, this->Vertex(static_cast<std::uint32_t>(t), 2) - a));
     }
   });
   this->Box = { { HUGE_VAL, HUGE_VAL, HUGE_VAL }, { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL } };

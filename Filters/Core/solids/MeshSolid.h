@@ -66,6 +66,11 @@ public:
   /// Triangles must form a closed surface oriented outward (see MeshRepair.h).
   MeshSolid(std::vector<Vec3> points, std::vector<std::array<std::uint32_t, 3>> triangles,
     const ParallelFor& parallelFor = SequentialFor);
+  /// The same with each triangle's neighbour across each edge given, as
+  /// Across() answers them (RepairMesh's, from the edge table it builds
+  /// anyway: a second table was a tenth of reading armadillo).
+  MeshSolid(std::vector<Vec3> points, std::vector<std::array<std::uint32_t, 3>> triangles,
+    std::vector<std::array<std::uint32_t, 3>> neighbours, const ParallelFor& parallelFor = SequentialFor);
 
   /// Across() where an edge is not used by exactly two triangles.
   static constexpr std::uint32_t NoTriangle = 0xFFFFFFFFu;
@@ -113,10 +118,14 @@ public:
   double ApproximateSignedDistance(const Vec3& p, const TriangleList& triangles, std::uint32_t* nearest = nullptr) const;
   /// The box of triangle t's vertices (their exact minima and maxima).
   const Box3& TriangleBounds(std::uint32_t t) const { return this->FaceBoxes[t]; }
+  /// Those boxes, one per triangle.
+  const std::vector<Box3>& TriangleBoxes() const { return this->FaceBoxes; }
   /// Vertex k (0..2) of triangle t.
   const Vec3& Vertex(std::uint32_t t, int k) const { return this->Vertices[this->Faces[t][k]]; }
 
 private:
+  /// Normals, boxes and the ray-casting grid, from the vertices and faces.
+  void Index(const ParallelFor& parallelFor);
   bool Crosses(std::uint32_t t, const Vec3& a, const Vec3* b, int axis) const;
   /// The ray-casting grid's column (0: along y, 1: along z) of a coordinate.
   int GridColumn(int k, double coordinate) const;

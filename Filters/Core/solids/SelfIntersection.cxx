@@ -469,20 +469,26 @@ struct BinnedTriangles
 /// caller that asked discards it).
 template <typename Accept>
 std::size_t CountAcceptedPairs(const std::vector<Vec3>& points,
-  const std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t limit, const ParallelFor& parallelFor,
-  const ProgressCallback& progress, const Accept& accept)
+  const std::vector<std::array<std::uint32_t, 3>>& triangles, const std::vector<Box3>* givenBoxes, std::size_t limit,
+  const ParallelFor& parallelFor, const ProgressCallback& progress, const Accept& accept)
 {
   if (triangles.size() < 2 || limit == 0)
   {
     return 0;
   }
-  std::vector<Box3> boxes(triangles.size());
-  parallelFor(triangles.size(), [&](std::size_t begin, std::size_t end) {
-    for (std::size_t t = begin; t < end; ++t)
-    {
-      boxes[t] = TriangleBox(points.data(), triangles[t]);
-    }
-  });
+  // (The triangles' boxes: the caller's where it keeps them.)
+  std::vector<Box3> ownBoxes;
+  if (!givenBoxes)
+  {
+    ownBoxes.resize(triangles.size());
+    parallelFor(triangles.size(), [&](std::size_t begin, std::size_t end) {
+      for (std::size_t t = begin; t < end; ++t)
+      {
+        ownBoxes[t] = TriangleBox(points.data(), triangles[t]);
+      }
+    });
+  }
+  const std::vector<Box3>& boxes = givenBoxes ? *givenBoxes : ownBoxes;
   const BinGrid grid(boxes);
   const BinnedTriangles bins(grid, boxes, parallelFor);
   if (progress && progress(0.2))
@@ -534,17 +540,34 @@ std::size_t CountAcceptedPairs(const std::vector<Vec3>& points,
 }
 } // namespace
 
-std::size_t CountSelfIntersections(const std::vector<Vec3>& points,
-  const std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t limit,
+namespace
+{
+std::size_t CountImproperPairs(const std::vector<Vec3>& points,
+  const std::vector<std::array<std::uint32_t, 3>>& triangles, const std::vector<Box3>* boxes, std::size_t limit,
   const ParallelFor& parallelFor, const ProgressCallback& progress)
 {
   // Pairs sharing a vertex whose star is proven embedded need no test of
   // their own (EmbeddedStars.h): most candidate pairs are neighbours.
   const EmbeddedStars stars(points.data(), points.size(), triangles.data(), triangles.size(), parallelFor);
-  return CountAcceptedPairs(points, triangles, limit, parallelFor, progress, [&](std::uint32_t t1, std::uint32_t t2) {
-    return !stars.ProveProper(triangles[t1], triangles[t2]) &&
-      TrianglesMeetImproperly(points.data(), triangles[t1], triangles[t2]);
-  });
+  return CountAcceptedPairs(points, triangles, boxes, limit, parallelFor, progress,
+    [&](std::uint32_t t1, std::uint32_t t2) {
+      return !stars.ProveProper(triangles[t1], triangles[t2]) &&
+        TrianglesMeetImproperly(points.data(), triangles[t1], triangles[t2]);
+    });
+}
+} // namespace
+
+std::size_t CountSelfIntersections(const std::vector<Vec3>& points,
+  const std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t limit,
+  const ParallelFor& parallelFor, const ProgressCallback& progress)
+{
+  return CountImproperPairs(points, triangles, nullptr, limit, parallelFor, progress);
+}
+
+std::size_t CountSelfIntersections(
+  const MeshSolid& mesh, std::size_t limit, const ParallelFor& parallelFor, const ProgressCallback& progress)
+{
+  return CountImproperPairs(mesh.Points(), mesh.Triangles(), &mesh.TriangleBoxes(), limit, parallelFor, progress);
 }
 
 std::size_t CountCoincidentFaces(const std::vector<Vec3>& pointsA,
@@ -562,7 +585,8 @@ std::size_t CountCoincidentFaces(const std::vector<Vec3>& pointsA,
     triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
   }
   const auto fromA = static_cast<std::uint32_t>(trianglesA.size());
-  return CountAcceptedPairs(points, triangles, limit, parallelFor, progress, [&](std::uint32_t t1, std::uint32_t t2) {
+  return CountAcceptedPairs(points, triangles, nullptr, limit, parallelFor, progress,
+    [&](std::uint32_t t1, std::uint32_t t2) {
       if ((t1 < fromA) == (t2 < fromA))
       {
         return false; // both from one mesh

@@ -6,6 +6,7 @@
 // (Orient3D/Orient2D), coplanar pairs included.
 #pragma once
 
+#include "MeshSolid.h"
 #include "Parallel.h"
 #include "Vector3.h"
 
@@ -23,6 +24,11 @@ namespace tpc
 /// pairs and stop early when it asks to (Parallel.h).
 std::size_t CountSelfIntersections(const std::vector<Vec3>& points,
   const std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t limit = 100,
+  const ParallelFor& parallelFor = SequentialFor, const ProgressCallback& progress = nullptr);
+
+/// The same for the triangles of `mesh`, with the boxes it keeps of them
+/// (not a second copy).
+std::size_t CountSelfIntersections(const MeshSolid& mesh, std::size_t limit = 100,
   const ParallelFor& parallelFor = SequentialFor, const ProgressCallback& progress = nullptr);
 
 /// Number of triangle pairs, one from each mesh, that lie in one plane and

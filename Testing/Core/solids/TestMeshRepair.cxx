@@ -84,6 +84,64 @@ TEST(MeshRepair, NestedShellFacesItsCavity)
   EXPECT_TRUE(r.MeetsAssumptions());
 }
 
+TEST(MeshRepair, RepairedIntoASolidAsRepairedThenBuilt)
+{
+  // RepairIntoSolid hands the solid the neighbours its orientation step
+  // found, turned with every flip: they must be those the solid finds on its
+  // own, and the report and mesh those of RepairMesh. Meshes with triangles
+  // flipped one by one, components inverted, a cavity, soup and duplicates.
+  const tpc::MeshSolid outer = tpctest::SphereMesh({ 0, 0, 0 }, 1.0, 2);
+  const tpc::MeshSolid inner = tpctest::SphereMesh({ 0.1, 0, 0 }, 0.5, 2);
+  const tpc::MeshSolid torus = tpctest::TorusMesh({ 3, 0, 0 }, 0.6, 0.25, 24, 12);
+  std::vector<Vec3> p = outer.Points();
+  Tris t = outer.Triangles();
+  AppendMesh(p, t, inner);
+  AppendMesh(p, t, torus);
+  for (std::size_t k = 0; k < t.size(); k += 7)
+  {
+    std::swap(t[k][1], t[k][2]);
+  }
+  t.push_back(t[5]);
+  t.push_back({ 3, 3, 4 });
+  int flipped = 0;
+  for (const bool invert : { false, true })
+  {
+    if (invert)
+    {
+      for (auto& f : t)
+      {
+        std::swap(f[1], f[2]);
+      }
+    }
+    std::vector<Vec3> repairedPoints = p;
+    Tris repairedTriangles = t;
+    const tpc::MeshRepairReport expected = tpc::RepairMesh(repairedPoints, repairedTriangles);
+    const tpc::MeshSolid own(repairedPoints, repairedTriangles);
+    tpc::MeshRepairReport report;
+    const tpc::MeshSolid solid = tpc::RepairIntoSolid(p, t, report);
+    EXPECT_EQ(report.Describe(), expected.Describe());
+    EXPECT_EQ(report.Genus, expected.Genus);
+    EXPECT_EQ(report.Components, 3u);
+    EXPECT_EQ(report.SelfIntersections, 0u);
+    EXPECT_TRUE(report.SelfIntersectionsChecked);
+    ASSERT_EQ(solid.Points().size(), repairedPoints.size());
+    for (std::size_t v = 0; v < repairedPoints.size(); ++v)
+    {
+      ASSERT_EQ(tpc::Norm(solid.Points()[v] - repairedPoints[v]), 0.0);
+    }
+    ASSERT_EQ(solid.Triangles(), repairedTriangles);
+    for (std::uint32_t f = 0; f < repairedTriangles.size(); ++f)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        ASSERT_EQ(solid.Across(f, k), own.Across(f, k)) << "triangle " << f << " edge " << k;
+      }
+    }
+    flipped += static_cast<int>(expected.FlippedComponents);
+  }
+  EXPECT_GT(flipped, 0); // (the outward step turned components too)
+}
+
 TEST(MeshRepair, DuplicatesAndDegeneratesAreDropped)
 {
   const tpc::MeshSolid cube = tpctest::CubeMesh({ 0, 0, 0 }, { 1, 1, 1 });
