@@ -149,9 +149,9 @@ public:
     this->Inward.clear();
   }
   /// No polygons, and room for `polygons` more: the memory stays unless it
-  /// is far more than that (a set reused from cell to cell, ScratchPool.h,
-  /// keeps what the first levels' large cells needed only while cells that
-  /// large come).
+  /// has been far more than that many times in a row (a set reused from cell
+  /// to cell, ScratchPool.h, keeps what the first levels' large cells needed
+  /// only while cells that large come).
   void Recycle(std::size_t polygons);
   /// Adds the polygon with corners `corners` (convex, planar, in order):
   /// its normal, area, box and edges' inward normals.
@@ -216,6 +216,7 @@ private:
   std::vector<Vec3> Corners;
   std::vector<Vec3> Inward; ///< parallel to Corners (zeros for a polygon measured by its edges)
   double SlackMagnitude = 0.0;
+  int SmallUses = 0; ///< Recycle's uses in a row far below the capacity
 };
 
 inline ConvexPolygon PolygonSet::operator[](std::size_t i) const
