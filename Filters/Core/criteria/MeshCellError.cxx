@@ -139,8 +139,10 @@ void SurfaceInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Bo
   const MeshSolid& mesh = primitives.Meshes[leaf.Primitive];
   surface.Recycle(leaf.Triangles->size());
   surface.SetSlackMagnitude(SlackMagnitude(leaf, primitives, cell));
-  // (Most triangles of a cell lie in it whole: three corners each.)
-  surface.reserve(leaf.Triangles->size(), 3 * leaf.Triangles->size());
+  // (Most triangles of a cell lie in it whole, three corners each; those
+  // cut by its faces have up to nine, and room for four on average keeps a
+  // large cell's corners from being copied as they grow.)
+  surface.reserve(leaf.Triangles->size(), 4 * leaf.Triangles->size());
   for (const std::uint32_t t : *leaf.Triangles)
   {
     ClippedCorners clipped{ mesh.Vertex(t, 0), mesh.Vertex(t, 1), mesh.Vertex(t, 2) };
