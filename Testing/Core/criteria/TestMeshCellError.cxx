@@ -933,7 +933,20 @@ TEST(ConvexPolygons, ARecycledSetKeepsItsMemoryOnlyForCellsOfASimilarSize)
   set.Add({ Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0) });
   EXPECT_EQ(set.size(), 1u);
   EXPECT_EQ(set[0].Points[1][0], 1.0);
-  set.Recycle(10); // (a small cell: the memory goes)
+  // Small cells: the memory stays while large ones may still come between
+  // them (a level's cells mix both), and goes after 64 in a row.
+  for (int use = 0; use < 64; ++use)
+  {
+    set.Recycle(10);
+    EXPECT_EQ(set.capacity(), grown) << "use " << use;
+  }
+  set.Recycle(1000); // (a large one again: the count starts over)
+  for (int use = 0; use < 64; ++use)
+  {
+    set.Recycle(10);
+  }
+  EXPECT_EQ(set.capacity(), grown);
+  set.Recycle(10);
   EXPECT_TRUE(set.empty());
   EXPECT_LT(set.capacity(), grown);
 }
