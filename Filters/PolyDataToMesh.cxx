@@ -47,9 +47,10 @@ void AppendPolygons(vtkCellArray* polys, const std::vector<Vec3>& points, std::v
   std::size_t& fanned)
 {
   std::vector<std::uint32_t> corners;
-  // (Room for a triangle per polygon at once: grown as it comes, the list was
-  // copied a dozen times into fresh pages.)
-  faces.reserve(faces.size() + static_cast<std::size_t>(polys->GetNumberOfCells()));
+  // (Room for every triangle at once - n - 2 per polygon of n corners:
+  // grown as it came, the list was copied a dozen times into fresh pages.)
+  const vtkIdType triangles = polys->GetNumberOfConnectivityIds() - 2 * polys->GetNumberOfCells();
+  faces.reserve(faces.size() + static_cast<std::size_t>(std::max<vtkIdType>(triangles, 0)));
   auto it = vtk::TakeSmartPointer(polys->NewIterator());
   for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
   {

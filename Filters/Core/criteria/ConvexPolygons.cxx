@@ -20,16 +20,19 @@ void PolygonSet::Recycle(std::size_t polygons)
   // (Sixteen times: cells a level apart hold about a quarter of each other's
   // surface, so a buffer is kept for two levels - freed at every level, it
   // came back as fresh pages each time; the floor keeps small sets from
-  // being freed over and over. Freed only after RecycleAfter such uses in a
-  // row: within a level, large cells come between small ones - a cell at the
-  // edge of the surface, or holding a little of it - and a buffer freed for
-  // each small one came back as fresh pages for the next large one: on
-  // armadillo at 1/64, 50 of the 80 ms its 29 largest cells took to build
-  // S_C.)
+  // being freed over and over. Up to KeptAcrossSmallCells polygons, freed
+  // only after RecycleAfter such uses in a row: within a level, large cells
+  // come between small ones - a cell at the edge of the surface, or holding
+  // a little of it - and a buffer freed for each small one came back as
+  // fresh pages for the next large one: on armadillo at 1/64, 50 of the 80 ms
+  // its 29 largest cells, 10 000 polygons at most, took to build S_C. The
+  // cap bounds what each of a pool's sets, one per thread, may keep so:
+  // about 4 MB.)
   constexpr int RecycleAfter = 64;
+  constexpr std::size_t KeptAcrossSmallCells = 16384;
   if (this->Headers.capacity() > 16 * polygons + 1024)
   {
-    if (++this->SmallUses > RecycleAfter)
+    if (++this->SmallUses > RecycleAfter || this->Headers.capacity() > KeptAcrossSmallCells)
     {
       *this = PolygonSet();
     }

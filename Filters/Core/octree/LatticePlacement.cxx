@@ -1,6 +1,5 @@
 #include "LatticePlacement.h"
 
-
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -98,6 +97,51 @@ void AddCreaseEdge(const Vec3& p, const Vec3& q, const Vec3& r1, const Vec3& r2,
 }
 } // namespace
 
+namespace
+{
+/// The edges of more than two triangles (a non-manifold mesh, contoured
+/// without the guarantee), their uses taken in pairs by triangle number as
+/// an edge table gives them; usually none, found where a triangle has no
+/// neighbour across an edge. (Edges of one triangle add nothing: no ridge.)
+LatticeCreases UnpairedEdges(const MeshSolid& mesh, double ridgeThickness, double planeThickness)
+{
+  struct Use
+  {
+    std::uint64_t Key;
+    std::uint32_t Triangle, Third;
+    bool operator<(const Use& o) const { return Key != o.Key ? Key < o.Key : Triangle < o.Triangle; }
+  };
+  std::vector<Use> uses;
+  for (std::uint32_t t = 0; t < mesh.Triangles().size(); ++t)
+  {
+    const auto& corners = mesh.Triangles()[t];
+    for (int k = 0; k < 3; ++k)
+    {
+      if (mesh.Across(t, k) == MeshSolid::NoTriangle)
+      {
+        const std::uint32_t from = corners[k], to = corners[(k + 1) % 3];
+        const std::uint64_t key = (static_cast<std::uint64_t>(std::min(from, to)) << 32) | std::max(from, to);
+        uses.push_back({ key, t, corners[(k + 2) % 3] });
+      }
+    }
+  }
+  std::sort(uses.begin(), uses.end());
+  LatticeCreases creases;
+  for (std::size_t k = 0; k + 1 < uses.size(); ++k)
+  {
+    if (uses[k + 1].Key == uses[k].Key)
+    {
+      const auto low = static_cast<std::uint32_t>(uses[k].Key >> 32);
+      const auto high = static_cast<std::uint32_t>(uses[k].Key & 0xFFFFFFFFu);
+      AddCreaseEdge(mesh.Points()[low], mesh.Points()[high], mesh.Points()[uses[k].Third],
+        mesh.Points()[uses[k + 1].Third], ridgeThickness, planeThickness, creases);
+      ++k;
+    }
+  }
+  return creases;
+}
+} // namespace
+
 LatticeCreases FindLatticeCreases(const PrimitiveSet& primitives, double ridgeThickness, double planeThickness,
   const ParallelFor& parallelFor)
 {
@@ -109,8 +153,9 @@ LatticeCreases FindLatticeCreases(const PrimitiveSet& primitives, double ridgeTh
     // table of its own, which cost as much as the penalties below on
     // armadillo). Blocks of triangles classified in parallel, then appended
     // in block order: the lists are in triangle order whatever the threads.
-    // (An edge of more than two triangles has no neighbour there: a
-    // non-manifold mesh, which the subdivision does not trust anyway.)
+    // (Until 73e6822 they were in the order of the edges' vertex numbers:
+    // the same edges, so the same penalties up to the rounding of their
+    // sums, which only a near tie between two shifts could feel.)
     const std::size_t triangles = mesh.Triangles().size();
     constexpr std::size_t Blocks = 64;
     std::vector<LatticeCreases> found(Blocks);
@@ -141,6 +186,7 @@ LatticeCreases FindLatticeCreases(const PrimitiveSet& primitives, double ridgeTh
         }
       }
     });
+    found.push_back(UnpairedEdges(mesh, ridgeThickness, planeThickness));
     for (int a = 0; a < 3; ++a)
     {
       std::size_t ridges = creases.Ridges[a].size(), inPlane = creases.InPlane[a].size();

@@ -15,7 +15,8 @@ namespace
 /// is listed once per repetition, which (i) then refuses).
 struct TrianglesAround
 {
-  std::vector<std::uint32_t> Start, Incident;
+  std::vector<std::size_t> Start;
+  std::vector<std::uint32_t> Incident;
 
   TrianglesAround(const Triangle* triangles, std::size_t count, std::size_t vertexCount)
     : Start(vertexCount + 1, 0)
@@ -29,7 +30,7 @@ struct TrianglesAround
     }
     std::partial_sum(this->Start.begin(), this->Start.end(), this->Start.begin());
     this->Incident.resize(this->Start.back());
-    std::vector<std::uint32_t> fill(this->Start.begin(), this->Start.end() - 1);
+    std::vector<std::size_t> fill(this->Start.begin(), this->Start.end() - 1);
     for (std::size_t t = 0; t < count; ++t)
     {
       for (const std::uint32_t v : triangles[t])
@@ -144,8 +145,15 @@ bool StarIsEmbedded(const Vec3* points, const Triangle* triangles, std::uint32_t
       }
     }
   }
+  // (Largest first; each axis is tried in turn anyway. A NaN from huge
+  // coordinates counts as 0, so that the order is a strict one.)
+  double weight[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    weight[a] = std::isnan(area[a]) ? 0.0 : std::fabs(area[a]);
+  }
   int axes[3] = { 0, 1, 2 };
-  std::sort(axes, axes + 3, [&](int a, int b) { return std::fabs(area[a]) > std::fabs(area[b]); });
+  std::sort(axes, axes + 3, [&](int a, int b) { return weight[a] > weight[b]; });
   for (const int axis : axes)
   {
     if (WindsOnceProjected(points, v, cycle, axis))
@@ -167,7 +175,7 @@ EmbeddedStars::EmbeddedStars(const Vec3* points, std::size_t vertexCount, const 
     std::vector<std::uint32_t> cycle;
     for (std::size_t v = begin; v < end; ++v)
     {
-      const std::uint32_t first = around.Start[v];
+      const std::size_t first = around.Start[v];
       this->Proven[v] = StarIsEmbedded(points, triangles, static_cast<std::uint32_t>(v),
                           around.Incident.data() + first, around.Start[v + 1] - first, edges, cycle)
         ? 1

@@ -58,6 +58,10 @@ public:
 
   /// Whether triangles t1 and t2 of that list are proven to meet only in
   /// what they share: they share one or two vertices, one of them proven.
+  /// (The stars are those of that list: a pair from another list proves
+  /// nothing. A proven vertex's triangles repeat no vertex and no triangle
+  /// of its star repeats another, so two of them share at most two ids;
+  /// the count is checked all the same.)
   bool ProveProper(const Triangle& t1, const Triangle& t2) const
   {
     int shared = 0;

@@ -40,6 +40,11 @@ MeshSolid::MeshSolid(std::vector<Vec3> points, std::vector<std::array<std::uint3
   , Faces(std::move(triangles))
   , Neighbours(std::move(neighbours))
 {
+  if (this->Neighbours.size() != this->Faces.size())
+  {
+    *this = MeshSolid(std::move(this->Vertices), std::move(this->Faces), parallelFor);
+    return;
+  }
   this->Index(parallelFor);
 }
 

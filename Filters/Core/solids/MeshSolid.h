@@ -67,8 +67,9 @@ public:
   MeshSolid(std::vector<Vec3> points, std::vector<std::array<std::uint32_t, 3>> triangles,
     const ParallelFor& parallelFor = SequentialFor);
   /// The same with each triangle's neighbour across each edge given, as
-  /// Across() answers them (RepairMesh's, from the edge table it builds
-  /// anyway: a second table was a tenth of reading armadillo).
+  /// Across() answers them (RepairIntoSolid's, from the edge table its
+  /// repair builds anyway: a second table was a tenth of reading armadillo);
+  /// found anew where there is not one entry per triangle.
   MeshSolid(std::vector<Vec3> points, std::vector<std::array<std::uint32_t, 3>> triangles,
     std::vector<std::array<std::uint32_t, 3>> neighbours, const ParallelFor& parallelFor = SequentialFor);
 

@@ -3,6 +3,7 @@
 #include "EmbeddedStars.h"
 #include "ExactPredicates.h"
 #include "GridIndex.h"
+#include "MeshSolid.h"
 #include "TriangleMesh.h"
 
 #include <algorithm>
@@ -546,6 +547,10 @@ std::size_t CountImproperPairs(const std::vector<Vec3>& points,
   const std::vector<std::array<std::uint32_t, 3>>& triangles, const std::vector<Box3>* boxes, std::size_t limit,
   const ParallelFor& parallelFor, const ProgressCallback& progress)
 {
+  if (triangles.size() < 2 || limit == 0)
+  {
+    return 0;
+  }
   // Pairs sharing a vertex whose star is proven embedded need no test of
   // their own (EmbeddedStars.h): most candidate pairs are neighbours.
   const EmbeddedStars stars(points.data(), points.size(), triangles.data(), triangles.size(), parallelFor);

@@ -6,7 +6,6 @@
 // (Orient3D/Orient2D), coplanar pairs included.
 #pragma once
 
-#include "MeshSolid.h"
 #include "Parallel.h"
 #include "Vector3.h"
 
@@ -17,6 +16,8 @@
 
 namespace tpc
 {
+
+class MeshSolid;
 
 /// Number of improperly meeting triangle pairs, counting at most `limit`
 /// (the candidate pairs are tested in parallel; the count does not depend on

@@ -5,10 +5,13 @@
 #include "BestLatticePlacement.h"
 #include "LatticePlacement.h"
 #include "MeshBuilders.h"
+#include "MeshEdges.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <tuple>
 
 using tpc::Box3;
 using tpc::MeshSolid;
@@ -105,4 +108,99 @@ TEST(LatticePlacement, ScenesWithoutMeshesKeepTheUnshiftedLatticeFirst)
     EXPECT_EQ(shifts[0][a], 0.0);
   }
   EXPECT_NE(shifts[1][0], shifts[2][0]);
+}
+
+TEST(LatticePlacement, CreasesAreEveryPairOfAnEdgesTriangles)
+{
+  // FindLatticeCreases reads the mesh's neighbours, and the pairs of uses of
+  // an edge of more than two triangles apart: the creases must be those of
+  // every edge table's pair of uses (by triangle number), whatever the
+  // order. Two cubes sharing the edge x = y = 1 (four triangles on it), with
+  // vertices merged and triangles shuffled, and a cube alone.
+  const MeshSolid a = tpctest::CubeMesh({ 0, 0, 0 }, { 1, 1, 1 });
+  const MeshSolid b = tpctest::CubeMesh({ 1, 1, 0 }, { 2, 2, 1 });
+  std::vector<Vec3> points = a.Points();
+  std::vector<std::array<std::uint32_t, 3>> triangles = a.Triangles();
+  for (const auto& t : b.Triangles())
+  {
+    std::array<std::uint32_t, 3> merged{};
+    for (int k = 0; k < 3; ++k)
+    {
+      const Vec3& p = b.Points()[t[k]];
+      std::uint32_t id = 0;
+      while (id < points.size() && tpc::Norm(points[id] - p) != 0.0)
+      {
+        ++id;
+      }
+      if (id == points.size())
+      {
+        points.push_back(p);
+      }
+      merged[k] = id;
+    }
+    triangles.push_back(merged);
+  }
+  std::reverse(triangles.begin(), triangles.end());
+  std::swap(triangles[3], triangles[17]);
+  const auto key = [](const tpc::FlatCreaseEdge& e) { return std::make_tuple(e.Lo, e.Hi, e.Length, e.BandPerSeparation); };
+  for (const bool twoCubes : { true, false })
+  {
+    tpc::PrimitiveSet prims;
+    // (Tilted: every edge a ridge or valley along some axis.)
+    prims.Meshes.push_back(tpctest::TiltedMesh(twoCubes ? MeshSolid(points, triangles) : a));
+    const MeshSolid& mesh = prims.Meshes.front();
+    // The reference: every edge table's pair of uses.
+    std::vector<tpc::EdgeUse> uses;
+    tpc::BuildEdgeTable(mesh.Triangles().data(), mesh.Triangles().size(), uses);
+    tpc::PrimitiveSet one;
+    std::vector<std::vector<std::tuple<double, double, double, double>>> expected(6), found(6);
+    int paired = 0;
+    tpc::ForEachEdge(uses, [&](std::size_t first, std::size_t count) {
+      for (std::size_t k = first; k + 1 < first + count; k += 2)
+      {
+        // A mesh of the two triangles alone has exactly this pair's crease.
+        const auto& t1 = mesh.Triangles()[uses[k].Triangle];
+        const auto& t2 = mesh.Triangles()[uses[k + 1].Triangle];
+        one.Meshes.assign(1, MeshSolid(mesh.Points(), { t1, t2 }));
+        const tpc::LatticeCreases pair = tpc::FindLatticeCreases(one, 2.0, 1e-9);
+        for (int axis = 0; axis < 3; ++axis)
+        {
+          for (const auto& e : pair.Ridges[axis])
+          {
+            expected[axis].push_back(key(e));
+          }
+          for (const auto& e : pair.InPlane[axis])
+          {
+            expected[3 + axis].push_back(key(e));
+          }
+        }
+        ++paired;
+      }
+    });
+    const tpc::LatticeCreases creases = tpc::FindLatticeCreases(prims, 2.0, 1e-9);
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      for (const auto& e : creases.Ridges[axis])
+      {
+        found[axis].push_back(key(e));
+      }
+      for (const auto& e : creases.InPlane[axis])
+      {
+        found[3 + axis].push_back(key(e));
+      }
+    }
+    for (int list = 0; list < 6; ++list)
+    {
+      std::sort(expected[list].begin(), expected[list].end());
+      std::sort(found[list].begin(), found[list].end());
+      EXPECT_EQ(found[list], expected[list]) << (twoCubes ? "two cubes" : "a cube") << ", list " << list;
+    }
+    EXPECT_EQ(paired, twoCubes ? 36 : 18);
+    std::size_t entries = 0;
+    for (const auto& list : expected)
+    {
+      entries += list.size();
+    }
+    EXPECT_GE(entries, static_cast<std::size_t>(paired)); // (each pair makes a crease)
+  }
 }

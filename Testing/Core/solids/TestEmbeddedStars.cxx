@@ -92,6 +92,18 @@ TEST(EmbeddedStars, AFanWindingOnceIsProvenOneWindingTwiceIsNot)
   Fan({ 0, 72, 144, 216, 288 }, p, t);
   std::swap(t[2][1], t[2][2]);
   EXPECT_FALSE(Stars(p, t).IsProven(0));
+  // Twice around with a link point exactly on the first one's ray (the
+  // half-open wedges: counted once, not zero times): (1, 0), (-1, 2),
+  // (-1, -2), (2, 0), (-2, 3), (-2, -3), every wedge counter-clockwise.
+  p = { Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(-1, 2, 0), Vec3(-1, -2, 0), Vec3(2, 0, 0), Vec3(-2, 3, 0),
+    Vec3(-2, -3, 0) };
+  t.clear();
+  for (std::uint32_t k = 0; k < 6; ++k)
+  {
+    t.push_back({ 0, k + 1, (k + 1) % 6 + 1 });
+  }
+  EXPECT_FALSE(Stars(p, t).IsProven(0));
+  EXPECT_GT(ImproperPairs(p, t), 0u);
   // A wedge of more than a half turn (the other orientation).
   Fan({ 0, 90, 300 }, p, t);
   EXPECT_FALSE(Stars(p, t).IsProven(0));
@@ -131,8 +143,8 @@ TEST(EmbeddedStars, SmoothClosedMeshesAreProvenEverywhere)
 
 TEST(EmbeddedStars, NoProofHidesAPairTheExactTestFinds)
 {
-  // Spheres whose vertices are pushed along their normals at random, some
-  // far enough to fold their stars over their neighbours: the count with
+  // Spheres whose vertices are pushed at random, some far enough to fold
+  // their stars over their neighbours: the count with
   // the stars' proofs (CountSelfIntersections) against every pair tested
   // exactly, and each proof against the exact test of its pairs.
   std::mt19937 rng(7);
