@@ -142,7 +142,20 @@ TEST(LatticePlacement, CreasesAreEveryPairOfAnEdgesTriangles)
   }
   std::reverse(triangles.begin(), triangles.end());
   std::swap(triangles[3], triangles[17]);
-  const auto key = [](const tpc::FlatCreaseEdge& e) { return std::make_tuple(e.Lo, e.Hi, e.Length, e.BandPerSeparation); };
+  using Lists = std::vector<std::vector<std::tuple<double, double, double, double>>>;
+  const auto collect = [](const tpc::LatticeCreases& creases, Lists& lists) {
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      for (const auto* list : { &creases.Ridges[axis], &creases.InPlane[axis] })
+      {
+        for (const tpc::FlatCreaseEdge& e : *list)
+        {
+          lists[list == &creases.Ridges[axis] ? axis : 3 + axis].emplace_back(
+            e.Lo, e.Hi, e.Length, e.BandPerSeparation);
+        }
+      }
+    }
+  };
   for (const bool twoCubes : { true, false })
   {
     tpc::PrimitiveSet prims;
@@ -153,7 +166,7 @@ TEST(LatticePlacement, CreasesAreEveryPairOfAnEdgesTriangles)
     std::vector<tpc::EdgeUse> uses;
     tpc::BuildEdgeTable(mesh.Triangles().data(), mesh.Triangles().size(), uses);
     tpc::PrimitiveSet one;
-    std::vector<std::vector<std::tuple<double, double, double, double>>> expected(6), found(6);
+    Lists expected(6), found(6);
     int paired = 0;
     tpc::ForEachEdge(uses, [&](std::size_t first, std::size_t count) {
       for (std::size_t k = first; k + 1 < first + count; k += 2)
@@ -162,33 +175,11 @@ TEST(LatticePlacement, CreasesAreEveryPairOfAnEdgesTriangles)
         const auto& t1 = mesh.Triangles()[uses[k].Triangle];
         const auto& t2 = mesh.Triangles()[uses[k + 1].Triangle];
         one.Meshes.assign(1, MeshSolid(mesh.Points(), { t1, t2 }));
-        const tpc::LatticeCreases pair = tpc::FindLatticeCreases(one, 2.0, 1e-9);
-        for (int axis = 0; axis < 3; ++axis)
-        {
-          for (const auto& e : pair.Ridges[axis])
-          {
-            expected[axis].push_back(key(e));
-          }
-          for (const auto& e : pair.InPlane[axis])
-          {
-            expected[3 + axis].push_back(key(e));
-          }
-        }
+        collect(tpc::FindLatticeCreases(one, 2.0, 1e-9), expected);
         ++paired;
       }
     });
-    const tpc::LatticeCreases creases = tpc::FindLatticeCreases(prims, 2.0, 1e-9);
-    for (int axis = 0; axis < 3; ++axis)
-    {
-      for (const auto& e : creases.Ridges[axis])
-      {
-        found[axis].push_back(key(e));
-      }
-      for (const auto& e : creases.InPlane[axis])
-      {
-        found[3 + axis].push_back(key(e));
-      }
-    }
+    collect(tpc::FindLatticeCreases(prims, 2.0, 1e-9), found);
     for (int list = 0; list < 6; ++list)
     {
       std::sort(expected[list].begin(), expected[list].end());
