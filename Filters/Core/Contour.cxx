@@ -315,6 +315,19 @@ bool VerifyInputs(const ContourScene& scene, const Box3& domain, Run& run)
   return true;
 }
 
+/// Whether `value` - the Tolerance asked, or that in world units - is
+/// positive and finite; else the run is refused, naming the Tolerance asked.
+bool ToleranceUsable(double value, const ContourParameters& p, Run& run)
+{
+  if (value > 0.0 && std::isfinite(value))
+  {
+    return true;
+  }
+  std::ostringstream text;
+  text << "Tolerance must be positive (got " << p.Tolerance << ").";
+  return run.Refuse(text.str());
+}
+
 /// Grows `box` by the boxes of the bounded, non-empty terms of `term`, the
 /// largest ones (a term's own where it has one, else its operands').
 void AddBoundedTerms(const CsgTerm& term, const PrimitiveSet& primitives, std::optional<Box3>& box)
@@ -962,11 +975,8 @@ ContourResult Contour(ContourScene scene, const ContourParameters& parameters, c
   {
     return result;
   }
-  if (!(parameters.Tolerance > 0.0) || !std::isfinite(parameters.Tolerance))
+  if (!ToleranceUsable(parameters.Tolerance, parameters, run))
   {
-    std::ostringstream text;
-    text << "Tolerance must be positive (got " << parameters.Tolerance << ").";
-    run.Refuse(text.str());
     return result;
   }
   CsgTerm solid = FoldInputs(scene);
@@ -982,11 +992,8 @@ ContourResult Contour(ContourScene scene, const ContourParameters& parameters, c
   }
   const double tolerance =
     parameters.ToleranceIsRelative ? parameters.Tolerance * domain->Diagonal() : parameters.Tolerance;
-  if (!(tolerance > 0.0) || !std::isfinite(tolerance))
+  if (!ToleranceUsable(tolerance, parameters, run))
   {
-    std::ostringstream text;
-    text << "Tolerance must be positive (got " << parameters.Tolerance << ").";
-    run.Refuse(text.str());
     return result;
   }
   // A margin of 5 % keeps the surface away from the grid's outer boundary;

@@ -54,36 +54,41 @@ bool HasOneCycleLink(const Triangle* triangles, std::uint32_t v, const std::uint
 
 } // namespace
 
-bool CountNonManifoldVertices(const Triangle* triangles, std::size_t triangleCount, std::size_t vertexCount,
-  std::int64_t& count, const ParallelFor& parallelFor, const ProgressCallback& progress)
+VertexTriangles::VertexTriangles(const Triangle* triangles, std::size_t triangleCount, std::size_t vertexCount)
+  : Start(vertexCount + 1, 0)
 {
-  // The triangles around each vertex: counted, prefix-summed, written.
-  const std::size_t nv = vertexCount;
-  std::vector<std::uint32_t> start(nv + 1, 0);
   for (std::size_t t = 0; t < triangleCount; ++t)
   {
     for (const std::uint32_t v : triangles[t])
     {
-      ++start[v + 1];
+      ++this->Start[v + 1];
     }
   }
-  std::partial_sum(start.begin(), start.end(), start.begin());
-  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1), incident(start.back());
-  for (std::uint32_t t = 0; t < triangleCount; ++t)
+  std::partial_sum(this->Start.begin(), this->Start.end(), this->Start.begin());
+  this->Incident.resize(this->Start.back());
+  std::vector<std::size_t> fill(this->Start.begin(), this->Start.end() - 1);
+  for (std::size_t t = 0; t < triangleCount; ++t)
   {
     for (const std::uint32_t v : triangles[t])
     {
-      incident[fill[v]++] = t;
+      this->Incident[fill[v]++] = static_cast<std::uint32_t>(t);
     }
   }
+}
+
+bool CountNonManifoldVertices(const Triangle* triangles, std::size_t triangleCount, std::size_t vertexCount,
+  std::int64_t& count, const ParallelFor& parallelFor, const ProgressCallback& progress)
+{
+  const std::size_t nv = vertexCount;
+  const VertexTriangles around(triangles, triangleCount, vertexCount);
   // (A sum: the same count for any number of threads.)
   std::atomic<std::int64_t> pinched{ 0 };
   const bool done = ChunkedFor(nv, std::size_t(1) << 18, parallelFor, [&](std::size_t begin, std::size_t end) {
     std::int64_t here = 0;
     for (std::size_t v = begin; v < end; ++v)
     {
-      const std::size_t m = start[v + 1] - start[v];
-      here += m > 0 && !HasOneCycleLink(triangles, static_cast<std::uint32_t>(v), incident.data() + start[v], m);
+      const std::size_t m = around.Count(v);
+      here += m > 0 && !HasOneCycleLink(triangles, static_cast<std::uint32_t>(v), around.Of(v), m);
     }
     pinched += here;
   }, progress);

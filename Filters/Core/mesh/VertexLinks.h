@@ -11,9 +11,24 @@
 #include "TriangleMesh.h"
 
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 namespace tpc
 {
+
+/// The triangles around each vertex: those of vertex v are Incident[Start[v]]
+/// to Incident[Start[v + 1] - 1], in triangle order (a triangle repeating v
+/// listed once per repetition): counted, prefix-summed, written.
+struct VertexTriangles
+{
+  std::vector<std::size_t> Start;
+  std::vector<std::uint32_t> Incident;
+
+  VertexTriangles(const Triangle* triangles, std::size_t triangleCount, std::size_t vertexCount);
+  std::size_t Count(std::size_t v) const { return this->Start[v + 1] - this->Start[v]; }
+  const std::uint32_t* Of(std::size_t v) const { return this->Incident.data() + this->Start[v]; }
+};
 
 /// Counts into `count` the vertices (of `vertexCount`) whose triangles among
 /// the `triangleCount` at `triangles` do not form one cycle around them

@@ -1,5 +1,7 @@
 #include "LatticePlacement.h"
 
+#include "MeshEdges.h"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -119,9 +121,7 @@ LatticeCreases UnpairedEdges(const MeshSolid& mesh, double ridgeThickness, doubl
     {
       if (mesh.Across(t, k) == MeshSolid::NoTriangle)
       {
-        const std::uint32_t from = corners[k], to = corners[(k + 1) % 3];
-        const std::uint64_t key = (static_cast<std::uint64_t>(std::min(from, to)) << 32) | std::max(from, to);
-        uses.push_back({ key, t, corners[(k + 2) % 3] });
+        uses.push_back({ EdgeKey(corners[k], corners[(k + 1) % 3]), t, corners[(k + 2) % 3] });
       }
     }
   }
@@ -131,9 +131,7 @@ LatticeCreases UnpairedEdges(const MeshSolid& mesh, double ridgeThickness, doubl
   {
     if (uses[k + 1].Key == uses[k].Key)
     {
-      const auto low = static_cast<std::uint32_t>(uses[k].Key >> 32);
-      const auto high = static_cast<std::uint32_t>(uses[k].Key & 0xFFFFFFFFu);
-      AddCreaseEdge(mesh.Points()[low], mesh.Points()[high], mesh.Points()[uses[k].Third],
+      AddCreaseEdge(mesh.Points()[EdgeLow(uses[k].Key)], mesh.Points()[EdgeHigh(uses[k].Key)], mesh.Points()[uses[k].Third],
         mesh.Points()[uses[k + 1].Third], ridgeThickness, planeThickness, creases);
       ++k;
     }

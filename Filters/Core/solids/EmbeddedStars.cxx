@@ -1,46 +1,15 @@
 #include "EmbeddedStars.h"
 
 #include "ExactPredicates.h"
+#include "VertexLinks.h"
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 namespace tpc
 {
 namespace
 {
-/// The triangles around each vertex: those of vertex v are
-/// Incident[Start[v]] to Incident[Start[v + 1] - 1] (a triangle repeating v
-/// is listed once per repetition, which (i) then refuses).
-struct TrianglesAround
-{
-  std::vector<std::size_t> Start;
-  std::vector<std::uint32_t> Incident;
-
-  TrianglesAround(const Triangle* triangles, std::size_t count, std::size_t vertexCount)
-    : Start(vertexCount + 1, 0)
-  {
-    for (std::size_t t = 0; t < count; ++t)
-    {
-      for (const std::uint32_t v : triangles[t])
-      {
-        ++this->Start[v + 1];
-      }
-    }
-    std::partial_sum(this->Start.begin(), this->Start.end(), this->Start.begin());
-    this->Incident.resize(this->Start.back());
-    std::vector<std::size_t> fill(this->Start.begin(), this->Start.end() - 1);
-    for (std::size_t t = 0; t < count; ++t)
-    {
-      for (const std::uint32_t v : triangles[t])
-      {
-        this->Incident[fill[v]++] = static_cast<std::uint32_t>(t);
-      }
-    }
-  }
-};
-
 /// (i) of the header: the link of v as one cycle w_1 .. w_m in `cycle`, from
 /// the m triangles at `fan`; false where it is not one.
 bool LinkCycle(const Triangle* triangles, std::uint32_t v, const std::uint32_t* fan, std::size_t m,
@@ -169,15 +138,14 @@ EmbeddedStars::EmbeddedStars(const Vec3* points, std::size_t vertexCount, const 
   std::size_t count, const ParallelFor& parallelFor)
   : Proven(vertexCount, 0)
 {
-  const TrianglesAround around(triangles, count, vertexCount);
+  const VertexTriangles around(triangles, count, vertexCount);
   parallelFor(vertexCount, [&](std::size_t begin, std::size_t end) {
     std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
     std::vector<std::uint32_t> cycle;
     for (std::size_t v = begin; v < end; ++v)
     {
-      const std::size_t first = around.Start[v];
-      this->Proven[v] = StarIsEmbedded(points, triangles, static_cast<std::uint32_t>(v),
-                          around.Incident.data() + first, around.Start[v + 1] - first, edges, cycle)
+      this->Proven[v] =
+        StarIsEmbedded(points, triangles, static_cast<std::uint32_t>(v), around.Of(v), around.Count(v), edges, cycle)
         ? 1
         : 0;
     }
