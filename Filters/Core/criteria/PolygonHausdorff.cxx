@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <tuple>
 #include <utility>
 
 namespace tpc
@@ -198,27 +199,6 @@ private:
   std::uint32_t Current = 0;
 };
 
-/// What every piece of one branch and bound is evaluated against: the
-/// targets, their boxes side by side (the first loop reads only those), and
-/// the scratch reused across pieces.
-struct Targets
-{
-  const PolygonSet& Polygons;
-  std::vector<Box3>& Boxes;
-  /// A piece's candidates with their squared box distances.
-  std::vector<std::pair<double, std::uint32_t>>& InReach;
-  std::vector<std::uint32_t>& Arena;
-  const std::vector<double>* Offsets; ///< per target; null for zeros
-  bool CommonNearestSettles; ///< Evaluate's shortcut allowed (no witnesses asked for)
-  /// Target t's offset; the branch and bound without target offsets (the
-  /// fan-to-surface direction, most of its work) is compiled with zeros.
-  template <bool WithOffsets>
-  double OffsetOf(std::uint32_t t) const
-  {
-    return WithOffsets ? (*this->Offsets)[t] : 0.0;
-  }
-};
-
 /// Whether sqrt(distance2) + offset < limit, i.e. distance2 < (limit -
 /// offset)^2 with limit - offset > 0 (with a zero offset: distance2 <
 /// limit^2 for limit > 0, the comparison without offsets).
@@ -233,6 +213,266 @@ bool WithinOf(double distance2, double offset, double limit)
 {
   const double room = limit - offset;
   return room >= 0.0 && distance2 <= room * room;
+}
+
+/// The least number of targets for which a branch and bound searches a
+/// TargetHierarchy.
+constexpr std::size_t HierarchyFrom = 32;
+
+/// A bounding volume hierarchy over the targets' boxes, for branch and
+/// bounds with many targets (a large cell's S_C against its fan: a hundred
+/// polygons and more). The pieces of the fan's triangles are searched in it
+/// instead of scanning candidate lists: each scan was linear in the targets,
+/// and over a call the scans cost about a sixth of a microsecond per source
+/// and target (armadillo at 1/64: a call's time grew with the product of
+/// both, the fan's direction two thirds of the branch and bound's time).
+/// Median splits along the longest axis of the boxes' centres, at most four
+/// targets a leaf; each node keeps the least offset of its targets, so that
+/// its box distance plus that offset is a lower bound of every target's
+/// offset distance under it.
+class TargetHierarchy
+{
+public:
+  /// The hierarchy of targets with boxes `boxes` and offsets `offsets`
+  /// (null for zeros).
+  void Build(const std::vector<Box3>& boxes, const std::vector<double>* offsets)
+  {
+    this->Boxes = &boxes;
+    this->Offsets = offsets;
+    this->Order.resize(boxes.size());
+    this->Centres.resize(boxes.size());
+    for (std::uint32_t t = 0; t < boxes.size(); ++t)
+    {
+      this->Order[t] = t;
+      this->Centres[t] = boxes[t].Center();
+      for (int a = 0; a < 3; ++a)
+      {
+        // (A NaN would leave the splits' order undefined; its box is never
+        // searched into anyway.)
+        this->Centres[t][a] = std::isnan(this->Centres[t][a]) ? HUGE_VAL : this->Centres[t][a];
+      }
+    }
+    this->Nodes.clear();
+    this->Add(0, static_cast<std::uint32_t>(boxes.size()));
+  }
+
+  /// g(p), the least offset distance from `p` to a target, and a target
+  /// attaining it: every target whose box distance plus offset is below the
+  /// best found is measured, so the minimum is over all of them.
+  std::pair<double, std::uint32_t> Nearest(const Vec3& p, const PolygonSet& polygons) const
+  {
+    double best = HUGE_VAL;
+    std::uint32_t bestTarget = SingleTargetWitness::None;
+    std::uint32_t stack[64];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0)
+    {
+      const Node& node = this->Nodes[stack[--top]];
+      if (!CloserThan(node.Box.Distance2(p), node.MinOffset, best))
+      {
+        continue;
+      }
+      if (node.Count > 0)
+      {
+        for (std::uint32_t k = node.First; k < node.First + node.Count; ++k)
+        {
+          const std::uint32_t t = this->Order[k];
+          const double offset = this->OffsetOf(t);
+          if (CloserThan((*this->Boxes)[t].Distance2(p), offset, best))
+          {
+            const double d = polygons.Distance(p, t) + offset;
+            if (d < best)
+            {
+              best = d;
+              bestTarget = t;
+            }
+          }
+        }
+        continue;
+      }
+      // (The nearer child on top: its targets usually lower `best` enough
+      // to rule the other out.)
+      const std::uint32_t near = node.First, far = node.Second;
+      const bool swap = this->Nodes[far].Box.Distance2(p) < this->Nodes[near].Box.Distance2(p);
+      stack[top++] = swap ? near : far;
+      stack[top++] = swap ? far : near;
+    }
+    return { best, bestTarget };
+  }
+
+  /// The least over targets t of max_i (d(v_i, Q_t) + p_t) - the single-
+  /// target bound (1) - where it is below `below`, and its target; else
+  /// (+inf, None). A node is passed over when one vertex's box distance
+  /// plus its least offset rules it out, a target when one vertex's
+  /// distance does.
+  std::pair<double, std::uint32_t> BestSingle(
+    const SourceTriangle& v, double below, const PolygonSet& polygons) const
+  {
+    double best = below;
+    std::uint32_t bestTarget = SingleTargetWitness::None;
+    std::uint32_t stack[64];
+    int top = 0;
+    stack[top++] = 0;
+    const auto farthestBox2 = [&](const Box3& box) {
+      return std::max({ box.Distance2(v[0]), box.Distance2(v[1]), box.Distance2(v[2]) });
+    };
+    while (top > 0)
+    {
+      const Node& node = this->Nodes[stack[--top]];
+      if (!CloserThan(farthestBox2(node.Box), node.MinOffset, best))
+      {
+        continue;
+      }
+      if (node.Count == 0)
+      {
+        stack[top++] = node.Second;
+        stack[top++] = node.First;
+        continue;
+      }
+      for (std::uint32_t k = node.First; k < node.First + node.Count; ++k)
+      {
+        const std::uint32_t t = this->Order[k];
+        const double offset = this->OffsetOf(t);
+        if (!CloserThan(farthestBox2((*this->Boxes)[t]), offset, best))
+        {
+          continue;
+        }
+        double farthest = 0.0;
+        for (int i = 0; i < 3 && farthest < best; ++i)
+        {
+          farthest = std::max(farthest, polygons.Distance(v[i], t) + offset);
+        }
+        if (farthest < best)
+        {
+          best = farthest;
+          bestTarget = t;
+        }
+      }
+    }
+    return bestTarget == SingleTargetWitness::None ? std::make_pair(HUGE_VAL, bestTarget)
+                                                   : std::make_pair(best, bestTarget);
+  }
+
+private:
+  /// A leaf (Count > 0) holds Order[First, First + Count); an inner node's
+  /// children are First and Second.
+  struct Node
+  {
+    Box3 Box;
+    double MinOffset = 0.0;
+    std::uint32_t First = 0;
+    std::uint32_t Second = 0;
+    std::uint32_t Count = 0;
+  };
+
+  double OffsetOf(std::uint32_t t) const { return this->Offsets ? (*this->Offsets)[t] : 0.0; }
+
+  /// The node over Order[begin, end), and its subtree; its index.
+  std::uint32_t Add(std::uint32_t begin, std::uint32_t end)
+  {
+    const std::uint32_t index = static_cast<std::uint32_t>(this->Nodes.size());
+    this->Nodes.emplace_back();
+    Box3 box = (*this->Boxes)[this->Order[begin]];
+    Box3 centres{ this->Centres[this->Order[begin]], this->Centres[this->Order[begin]] };
+    double minOffset = HUGE_VAL;
+    for (std::uint32_t k = begin; k < end; ++k)
+    {
+      const Box3& b = (*this->Boxes)[this->Order[k]];
+      const Vec3& c = this->Centres[this->Order[k]];
+      for (int a = 0; a < 3; ++a)
+      {
+        box.lo[a] = std::min(box.lo[a], b.lo[a]);
+        box.hi[a] = std::max(box.hi[a], b.hi[a]);
+        centres.lo[a] = std::min(centres.lo[a], c[a]);
+        centres.hi[a] = std::max(centres.hi[a], c[a]);
+      }
+      minOffset = std::min(minOffset, this->OffsetOf(this->Order[k]));
+    }
+    this->Nodes[index].Box = box;
+    this->Nodes[index].MinOffset = minOffset;
+    // (Depth at most log2 of the targets over the leaf size, well within
+    // the searches' stacks of 64.)
+    if (end - begin <= LeafSize)
+    {
+      this->Nodes[index].First = begin;
+      this->Nodes[index].Count = end - begin;
+      return index;
+    }
+    const int axis = centres.Width(0) >= centres.Width(1) && centres.Width(0) >= centres.Width(2) ? 0
+      : centres.Width(1) >= centres.Width(2)                                                   ? 1
+                                                                                               : 2;
+    const std::uint32_t middle = begin + (end - begin) / 2;
+    std::nth_element(this->Order.begin() + begin, this->Order.begin() + middle, this->Order.begin() + end,
+      [&](std::uint32_t a, std::uint32_t b) {
+        const double ca = this->Centres[a][axis], cb = this->Centres[b][axis];
+        return ca != cb ? ca < cb : a < b;
+      });
+    const std::uint32_t first = this->Add(begin, middle);
+    const std::uint32_t second = this->Add(middle, end);
+    this->Nodes[index].First = first;
+    this->Nodes[index].Second = second;
+    return index;
+  }
+
+  static constexpr std::uint32_t LeafSize = 4;
+  const std::vector<Box3>* Boxes = nullptr;
+  const std::vector<double>* Offsets = nullptr;
+  std::vector<Node> Nodes;
+  std::vector<std::uint32_t> Order;
+  std::vector<Vec3> Centres; ///< of the targets' boxes
+};
+
+/// What every piece of one branch and bound is evaluated against: the
+/// targets, their boxes side by side (the first loop reads only those), and
+/// the scratch reused across pieces.
+struct Targets
+{
+  const PolygonSet& Polygons;
+  std::vector<Box3>& Boxes;
+  /// A piece's candidates with their squared box distances.
+  std::vector<std::pair<double, std::uint32_t>>& InReach;
+  std::vector<std::uint32_t>& Arena;
+  const std::vector<double>* Offsets; ///< per target; null for zeros
+  bool CommonNearestSettles; ///< Evaluate's shortcut allowed (no witnesses asked for)
+  /// Searched instead of the candidates (EvaluateInHierarchy); null where
+  /// the targets are few.
+  const TargetHierarchy* Hierarchy;
+  /// Target t's offset; the branch and bound without target offsets (the
+  /// fan-to-surface direction, most of its work) is compiled with zeros.
+  template <bool WithOffsets>
+  double OffsetOf(std::uint32_t t) const
+  {
+    return WithOffsets ? (*this->Offsets)[t] : 0.0;
+  }
+};
+
+/// Every corner known and nearest to one target t: the single-target bound
+/// (1) is then max_i g(v_i), attained at t, and nothing is below it (it is
+/// at least each g(v_i)) - what the searches find, without them, where that
+/// settles the piece (no candidates to keep): then sets the piece's bound,
+/// raises `lower` and returns true. Not where witnesses are asked for: among
+/// targets giving the same bound the search may name another.
+bool SettledByCommonNearest(Piece& piece, double settle, const Targets& targets, double& lower)
+{
+  if (!targets.CommonNearestSettles)
+  {
+    return false;
+  }
+  const auto& near = piece.NearestTarget;
+  const double vertexMax = std::max({ piece.Nearest[0], piece.Nearest[1], piece.Nearest[2] });
+  if (near[0] == SingleTargetWitness::None || near[0] != near[1] || near[0] != near[2] ||
+    !(vertexMax + piece.Offset <= settle))
+  {
+    return false;
+  }
+  piece.UpperOfG = piece.Single = vertexMax;
+  piece.Upper = vertexMax + piece.Offset;
+  piece.SingleTarget = near[0];
+  lower = std::max(lower, vertexMax + piece.Offset);
+  piece.First = targets.Arena.size();
+  piece.Count = 0;
+  return true;
 }
 
 /// The piece's bound ((1) and (2) of the header; its source's offset added)
@@ -262,27 +502,9 @@ template <bool WithOffsets>
 void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentUpperOfG, double settle,
   Targets& targets, double& lower)
 {
-  // Every corner known and nearest to one target t: the single-target bound
-  // (1) is then max_i g(v_i), attained at t, and nothing is below it (it
-  // is at least each g(v_i)) - what the search below finds, without it,
-  // where that settles the piece (no candidates to keep). Not where
-  // witnesses are asked for: among targets giving the same bound the
-  // search may name another.
-  if (targets.CommonNearestSettles)
+  if (SettledByCommonNearest(piece, settle, targets, lower))
   {
-    const auto& near = piece.NearestTarget;
-    const double vertexMax = std::max({ piece.Nearest[0], piece.Nearest[1], piece.Nearest[2] });
-    if (near[0] != SingleTargetWitness::None && near[0] == near[1] && near[0] == near[2] &&
-      vertexMax + piece.Offset <= settle)
-    {
-      piece.UpperOfG = piece.Single = vertexMax;
-      piece.Upper = vertexMax + piece.Offset;
-      piece.SingleTarget = near[0];
-      lower = std::max(lower, vertexMax + piece.Offset);
-      piece.First = targets.Arena.size();
-      piece.Count = 0;
-      return;
-    }
+    return;
   }
   std::vector<std::pair<double, std::uint32_t>>& inReach = targets.InReach;
   std::vector<std::uint32_t>& arena = targets.Arena;
@@ -412,6 +634,48 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
   }
   piece.Count = arena.size() - piece.First;
 }
+
+/// Evaluate's bound of the piece, searched in the targets' hierarchy
+/// (Targets::Hierarchy) instead of its parent's candidates, which it keeps
+/// none of. The same bound in exact arithmetic:
+/// - g at a vertex not known yet is the least distance over every target
+///   (TargetHierarchy::Nearest); Evaluate's search among the candidates
+///   finds that minimum too (its comment: no target left out of them can be
+///   nearest to a point of the piece);
+/// - the single-target bound (1) is searched below (2) only: the piece's
+///   bound is the smaller of both. Over every target rather than the
+///   candidates - a target left out of them is farther than the parent's
+///   bound of g from the piece, so where it would give the least (1) that is
+///   above the parent's bound, which the caller keeps instead (OneSidedHausdorff:
+///   a child lies in its parent).
+/// Settling, `lower` and the shortcut are Evaluate's. (The arguments it
+/// takes for the candidates are unused.)
+void EvaluateInHierarchy(
+  Piece& piece, std::size_t, std::size_t, double, double settle, Targets& targets, double& lower)
+{
+  if (SettledByCommonNearest(piece, settle, targets, lower))
+  {
+    return;
+  }
+  double vertexMax = 0.0;
+  for (int i = 0; i < 3; ++i)
+  {
+    if (!(piece.Nearest[i] < HUGE_VAL))
+    {
+      std::tie(piece.Nearest[i], piece.NearestTarget[i]) =
+        targets.Hierarchy->Nearest(piece.Vertices[i], targets.Polygons);
+    }
+    vertexMax = std::max(vertexMax, piece.Nearest[i]);
+  }
+  const double viaCorners = vertexMax + CoveringRadius(piece.Vertices); // (2)
+  std::tie(piece.Single, piece.SingleTarget) =
+    targets.Hierarchy->BestSingle(piece.Vertices, viaCorners, targets.Polygons);
+  piece.UpperOfG = std::min(piece.Single, viaCorners);
+  piece.Upper = piece.UpperOfG + piece.Offset;
+  lower = std::max(lower, vertexMax == HUGE_VAL ? 0.0 : vertexMax + piece.Offset);
+  piece.First = targets.Arena.size();
+  piece.Count = 0;
+}
 } // namespace
 
 HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
@@ -439,10 +703,19 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
     arena[t] = t;
     boxes[t] = targets.Bounds(t);
   }
-  Targets context{ targets, boxes, inReach, arena, offsets.Targets, witnesses == nullptr };
+  // (Witnesses name the target Evaluate's search settles a source with:
+  // kept to it.)
+  thread_local TargetHierarchy hierarchy;
+  const bool searchHierarchy = targets.size() >= HierarchyFrom && !witnesses;
+  if (searchHierarchy)
+  {
+    hierarchy.Build(boxes, offsets.Targets);
+  }
+  Targets context{ targets, boxes, inReach, arena, offsets.Targets, witnesses == nullptr,
+    searchHierarchy ? &hierarchy : nullptr };
   thread_local CornerDistances corners;
   corners.Reset(3 * sources.size());
-  const auto evaluate = offsets.Targets ? &Evaluate<true> : &Evaluate<false>;
+  const auto evaluate = searchHierarchy ? &EvaluateInHierarchy : offsets.Targets ? &Evaluate<true> : &Evaluate<false>;
   // Pieces at most `settle` are never split (the loop below stops before
   // the largest piece is one of them): they are kept out of the queue, their
   // largest bound in `settledUpper`, and their candidates are not kept

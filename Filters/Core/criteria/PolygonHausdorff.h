@@ -35,6 +35,16 @@
 // o_s + g, not by the distance itself. With no offsets (zeros) every
 // comparison and sum is the one without them, bit for bit.
 //
+// Many targets (from 32: a large cell's S_C against its fan). A piece's
+// candidates were scanned, which cost as much as sources times targets; the
+// pieces are then searched in a hierarchy of the targets' boxes instead:
+// g at a vertex as the least distance over every target, the single-target
+// bound (1) only below (2). The same bound in exact arithmetic - a target
+// outside a piece's candidates is farther from it than its parent's bound,
+// which a child keeps when lower - and, computed, bit for bit on the tests
+// and scenes compared (PolygonHausdorff.cxx, EvaluateInHierarchy). Where
+// witnesses are asked for, the candidates are scanned as before.
+//
 // Distances are computed in floating point; the caller adds the rounding
 // slack (MeshCellError.h).
 #pragma once

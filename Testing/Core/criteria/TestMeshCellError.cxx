@@ -564,6 +564,76 @@ TEST(PolygonHausdorff, OffsetsBoundTheSampledOffsetDistance)
   }
 }
 
+TEST(PolygonHausdorff, ManyTargetsSearchedInAHierarchyBoundAsTheirScanWould)
+{
+  // From 32 targets on, pieces are searched in a hierarchy of the targets'
+  // boxes instead of their parents' candidates (PolygonHausdorff.cxx,
+  // EvaluateInHierarchy); asking for witnesses keeps the scan. Both must give
+  // the same bounds, bit for bit - large triangles over a crumpled sheet of
+  // small ones and the other way, with and without offsets, stopping early
+  // or not - and bound the sampled distance.
+  std::mt19937 random(17);
+  std::uniform_real_distribution<double> jitter(-0.02, 0.02), unit(0.0, 1.0);
+  std::vector<SourceTriangle> sheet, large;
+  constexpr int N = 9;
+  for (int i = 0; i < N; ++i)
+  {
+    for (int j = 0; j < N; ++j)
+    {
+      Vec3 c[4];
+      for (int k = 0; k < 4; ++k)
+      {
+        const double x = double(i + (k == 1 || k == 2)) / N, y = double(j + (k >= 2)) / N;
+        const double dx = jitter(random), dy = jitter(random), dz = jitter(random);
+        c[k] = Vec3(x + dx, y + dy, 0.05 * std::sin(9 * x + 4 * y) + dz);
+      }
+      sheet.push_back({ c[0], c[1], c[2] });
+      sheet.push_back({ c[0], c[2], c[3] });
+    }
+  }
+  for (int k = 0; k < 6; ++k)
+  {
+    Vec3 c[3];
+    for (Vec3& p : c)
+    {
+      const double x = unit(random), y = unit(random), z = 0.1 * unit(random) - 0.05;
+      p = Vec3(x, y, z);
+    }
+    large.push_back({ c[0], c[1], c[2] });
+  }
+  ASSERT_GE(sheet.size(), 32u);
+  for (const bool reversed : { false, true })
+  {
+    const auto& from = reversed ? sheet : large;
+    const auto& to = reversed ? large : sheet;
+    std::vector<double> o(from.size()), p(to.size());
+    for (double& x : o)
+    {
+      x = 0.02 * unit(random);
+    }
+    for (double& x : p)
+    {
+      x = 0.02 * unit(random);
+    }
+    const double sampled = SampledHausdorff(from, to);
+    for (const bool withOffsets : { false, true })
+    {
+      const tpc::DistanceOffsets offsets = withOffsets ? tpc::DistanceOffsets{ &o, &p } : tpc::DistanceOffsets{};
+      for (const double enough : { 0.0, 0.5 * sampled })
+      {
+        std::vector<tpc::SingleTargetWitness> witnesses;
+        const tpc::HausdorffEstimate searched =
+          tpc::OneSidedHausdorff(from, AsPolygons(to), enough, HUGE_VAL, 200000, offsets);
+        const tpc::HausdorffEstimate scanned =
+          tpc::OneSidedHausdorff(from, AsPolygons(to), enough, HUGE_VAL, 200000, offsets, &witnesses);
+        EXPECT_EQ(searched.Upper, scanned.Upper) << reversed << withOffsets << enough;
+        EXPECT_EQ(searched.Lower, scanned.Lower) << reversed << withOffsets << enough;
+        EXPECT_GE(searched.Upper, sampled * (1 - 1e-12)) << reversed << withOffsets << enough;
+      }
+    }
+  }
+}
+
 TEST(MeshCellError, ChordDeviationIsTheTraceFarthestFromTheChord)
 {
   // A roof (two planes meeting at x = 0.5) crosses the face z = 0 of the unit
