@@ -303,51 +303,74 @@ public:
 
   /// The least over targets t of max_i (d(v_i, Q_t) + p_t) - the single-
   /// target bound (1) - where it is below `below`, and its target; else
-  /// (+inf, None). A node is passed over when one vertex's box distance
-  /// plus its least offset rules it out, a target when one vertex's
-  /// distance does.
-  std::pair<double, std::uint32_t> BestSingle(
-    const SourceTriangle& v, double below, const PolygonSet& polygons) const
+  /// (+inf, None). The vertices' nearest targets `seeds` (None where not
+  /// known) are tried first - the piece usually lies near them - then the
+  /// nodes nearer the vertices before the farther; a node is passed over
+  /// when one vertex's box distance plus its least offset rules it out, a
+  /// target when one vertex's distance does.
+  std::pair<double, std::uint32_t> BestSingle(const SourceTriangle& v, double below,
+    const std::array<std::uint32_t, 3>& seeds, const PolygonSet& polygons) const
   {
     double best = below;
     std::uint32_t bestTarget = SingleTargetWitness::None;
-    std::uint32_t stack[64];
-    int top = 0;
-    stack[top++] = 0;
     const auto farthestBox2 = [&](const Box3& box) {
       return std::max({ box.Distance2(v[0]), box.Distance2(v[1]), box.Distance2(v[2]) });
     };
+    const auto tryTarget = [&](std::uint32_t t) {
+      const double offset = this->OffsetOf(t);
+      const Box3& box = (*this->Boxes)[t];
+      const double box2[3] = { box.Distance2(v[0]), box.Distance2(v[1]), box.Distance2(v[2]) };
+      const int far = box2[0] >= box2[1] && box2[0] >= box2[2] ? 0 : box2[1] >= box2[2] ? 1 : 2;
+      if (!CloserThan(box2[far], offset, best))
+      {
+        return;
+      }
+      // (The vertex farthest from the target's box first: the likeliest to
+      // rule it out with one distance.)
+      double farthest = 0.0;
+      for (int k = 0; k < 3 && farthest < best; ++k)
+      {
+        const int i = (far + k) % 3;
+        farthest = std::max(farthest, polygons.Distance(v[i], t) + offset);
+      }
+      if (farthest < best)
+      {
+        best = farthest;
+        bestTarget = t;
+      }
+    };
+    for (int i = 0; i < 3; ++i)
+    {
+      if (seeds[i] != SingleTargetWitness::None && (i == 0 || seeds[i] != seeds[0]) &&
+        (i < 2 || seeds[2] != seeds[1]))
+      {
+        tryTarget(seeds[i]);
+      }
+    }
+    // (Each entry with its node's farthest squared box distance.)
+    std::pair<double, std::uint32_t> stack[64];
+    int top = 0;
+    stack[top++] = { farthestBox2(this->Nodes[0].Box), 0 };
     while (top > 0)
     {
-      const Node& node = this->Nodes[stack[--top]];
-      if (!CloserThan(farthestBox2(node.Box), node.MinOffset, best))
+      const auto [lowest2, n] = stack[--top];
+      const Node& node = this->Nodes[n];
+      if (!CloserThan(lowest2, node.MinOffset, best))
       {
         continue;
       }
       if (node.Count == 0)
       {
-        stack[top++] = node.Second;
-        stack[top++] = node.First;
+        const double first2 = farthestBox2(this->Nodes[node.First].Box);
+        const double second2 = farthestBox2(this->Nodes[node.Second].Box);
+        const bool firstNearer = first2 <= second2;
+        stack[top++] = firstNearer ? std::make_pair(second2, node.Second) : std::make_pair(first2, node.First);
+        stack[top++] = firstNearer ? std::make_pair(first2, node.First) : std::make_pair(second2, node.Second);
         continue;
       }
       for (std::uint32_t k = node.First; k < node.First + node.Count; ++k)
       {
-        const std::uint32_t t = this->Order[k];
-        const double offset = this->OffsetOf(t);
-        if (!CloserThan(farthestBox2((*this->Boxes)[t]), offset, best))
-        {
-          continue;
-        }
-        double farthest = 0.0;
-        for (int i = 0; i < 3 && farthest < best; ++i)
-        {
-          farthest = std::max(farthest, polygons.Distance(v[i], t) + offset);
-        }
-        if (farthest < best)
-        {
-          best = farthest;
-          bestTarget = t;
-        }
+        tryTarget(this->Order[k]);
       }
     }
     return bestTarget == SingleTargetWitness::None ? std::make_pair(HUGE_VAL, bestTarget)
@@ -669,7 +692,7 @@ void EvaluateInHierarchy(
   }
   const double viaCorners = vertexMax + CoveringRadius(piece.Vertices); // (2)
   std::tie(piece.Single, piece.SingleTarget) =
-    targets.Hierarchy->BestSingle(piece.Vertices, viaCorners, targets.Polygons);
+    targets.Hierarchy->BestSingle(piece.Vertices, viaCorners, piece.NearestTarget, targets.Polygons);
   piece.UpperOfG = std::min(piece.Single, viaCorners);
   piece.Upper = piece.UpperOfG + piece.Offset;
   lower = std::max(lower, vertexMax == HUGE_VAL ? 0.0 : vertexMax + piece.Offset);
