@@ -226,8 +226,8 @@ constexpr std::size_t HierarchyFrom = 32;
 /// and over a call the scans cost about a sixth of a microsecond per source
 /// and target (armadillo at 1/64: a call's time grew with the product of
 /// both, the fan's direction two thirds of the branch and bound's time).
-/// Median splits along the longest axis of the boxes' centres, at most four
-/// targets a leaf; each node keeps the least offset of its targets, so that
+/// Median splits along the longest axis of the boxes' centres, at most
+/// LeafSize targets a leaf; each node keeps the least offset of its targets, so that
 /// its box distance plus that offset is a lower bound of every target's
 /// offset distance under it.
 class TargetHierarchy
@@ -438,7 +438,9 @@ private:
     return index;
   }
 
-  static constexpr std::uint32_t LeafSize = 4;
+  /// (Armadillo at 1/64: 8 took 0.4 % fewer instructions in all than 4 or
+  /// 16, 1.4 % fewer than 2.)
+  static constexpr std::uint32_t LeafSize = 8;
   const std::vector<Box3>* Boxes = nullptr;
   const std::vector<double>* Offsets = nullptr;
   std::vector<Node> Nodes;
