@@ -35,7 +35,8 @@ struct Piece
   double Upper = HUGE_VAL;    ///< of the offset distance on the piece: UpperOfG + Offset
   double UpperOfG = HUGE_VAL; ///< of g on the piece (header: Offsets)
   double Offset = 0.0;        ///< its source triangle's offset
-  /// The target of the single-target bound (1), and that bound of g.
+  /// The target of the single-target bound (1), and that bound of g (in
+  /// EvaluateInHierarchy: only where below bound (2), else +inf and None).
   std::uint32_t SingleTarget = SingleTargetWitness::None;
   double Single = HUGE_VAL;
   /// g at its vertices where known (+inf where not yet): each is the
@@ -215,6 +216,15 @@ bool WithinOf(double distance2, double offset, double limit)
   return room >= 0.0 && distance2 <= room * room;
 }
 
+/// d(p, Q_t) + offset, or +inf where that is not a number (a NaN
+/// coordinate): the maxima and minima below would pass over a NaN, and a
+/// piece with a vertex so measured would be bounded by its other vertices.
+double OffsetDistance(const PolygonSet& polygons, const Vec3& p, std::uint32_t t, double offset)
+{
+  const double d = polygons.Distance(p, t) + offset;
+  return std::isnan(d) ? HUGE_VAL : d;
+}
+
 /// The least number of targets for which a branch and bound searches a
 /// TargetHierarchy.
 constexpr std::size_t HierarchyFrom = 32;
@@ -247,8 +257,9 @@ public:
       this->Centres[t] = boxes[t].Center();
       for (int a = 0; a < 3; ++a)
       {
-        // (A NaN would leave the splits' order undefined; its box is never
-        // searched into anyway.)
+        // (A NaN would leave the splits' order undefined. Such a target is
+        // still searched - a box distance passes over a NaN coordinate - and
+        // measured +inf: OffsetDistance.)
         this->Centres[t][a] = std::isnan(this->Centres[t][a]) ? HUGE_VAL : this->Centres[t][a];
       }
     }
@@ -281,7 +292,7 @@ public:
           const double offset = this->OffsetOf(t);
           if (CloserThan((*this->Boxes)[t].Distance2(p), offset, best))
           {
-            const double d = polygons.Distance(p, t) + offset;
+            const double d = OffsetDistance(polygons, p, t, offset);
             if (d < best)
             {
               best = d;
@@ -293,10 +304,10 @@ public:
       }
       // (The nearer child on top: its targets usually lower `best` enough
       // to rule the other out.)
-      const std::uint32_t near = node.First, far = node.Second;
-      const bool swap = this->Nodes[far].Box.Distance2(p) < this->Nodes[near].Box.Distance2(p);
-      stack[top++] = swap ? near : far;
-      stack[top++] = swap ? far : near;
+      const bool secondNearer =
+        this->Nodes[node.Second].Box.Distance2(p) < this->Nodes[node.First].Box.Distance2(p);
+      stack[top++] = secondNearer ? node.First : node.Second;
+      stack[top++] = secondNearer ? node.Second : node.First;
     }
     return { best, bestTarget };
   }
@@ -331,7 +342,7 @@ public:
       for (int k = 0; k < 3 && farthest < best; ++k)
       {
         const int i = (far + k) % 3;
-        farthest = std::max(farthest, polygons.Distance(v[i], t) + offset);
+        farthest = std::max(farthest, OffsetDistance(polygons, v[i], t, offset));
       }
       if (farthest < best)
       {
@@ -353,9 +364,9 @@ public:
     stack[top++] = { farthestBox2(this->Nodes[0].Box), 0 };
     while (top > 0)
     {
-      const auto [lowest2, n] = stack[--top];
+      const auto [lowerBound2, n] = stack[--top];
       const Node& node = this->Nodes[n];
-      if (!CloserThan(lowest2, node.MinOffset, best))
+      if (!CloserThan(lowerBound2, node.MinOffset, best))
       {
         continue;
       }
@@ -575,7 +586,7 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
       {
         continue;
       }
-      const double d = targets.Polygons.Distance(piece.Vertices[i], t) + offset;
+      const double d = OffsetDistance(targets.Polygons, piece.Vertices[i], t, offset);
       if (d < nearest[i])
       {
         nearest[i] = d;
@@ -667,16 +678,17 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
 ///   (TargetHierarchy::Nearest); Evaluate's search among the candidates
 ///   finds that minimum too (its comment: no target left out of them can be
 ///   nearest to a point of the piece);
-/// - the single-target bound (1) is searched below (2) only: the piece's
-///   bound is the smaller of both. Over every target rather than the
-///   candidates - a target left out of them is farther than the parent's
-///   bound of g from the piece, so where it would give the least (1) that is
-///   above the parent's bound, which the caller keeps instead (OneSidedHausdorff:
-///   a child lies in its parent).
-/// Settling, `lower` and the shortcut are Evaluate's. (The arguments it
-/// takes for the candidates are unused.)
-void EvaluateInHierarchy(
-  Piece& piece, std::size_t, std::size_t, double, double settle, Targets& targets, double& lower)
+/// - the single-target bound (1) is searched below (2) and below the
+///   parent's bound of g `parentUpperOfG` only: the piece's bound is the
+///   smaller of (1) and (2), and the caller keeps the parent's where that is
+///   lower (OneSidedHausdorff: a child lies in its parent). Over every target
+///   rather than the candidates - a target left out of them is farther than
+///   the parent's bound from the piece, so its (1) is above that bound too.
+/// The shortcut and `lower` are Evaluate's; no candidates are kept, settled
+/// or not (a split searches the hierarchy again). (`first` and `count`, the
+/// candidates, are unused.)
+void EvaluateInHierarchy(Piece& piece, std::size_t, std::size_t, double parentUpperOfG, double settle,
+  Targets& targets, double& lower)
 {
   if (SettledByCommonNearest(piece, settle, targets, lower))
   {
@@ -694,7 +706,8 @@ void EvaluateInHierarchy(
   }
   const double viaCorners = vertexMax + CoveringRadius(piece.Vertices); // (2)
   std::tie(piece.Single, piece.SingleTarget) =
-    targets.Hierarchy->BestSingle(piece.Vertices, viaCorners, piece.NearestTarget, targets.Polygons);
+    targets.Hierarchy->BestSingle(
+      piece.Vertices, std::min(viaCorners, parentUpperOfG), piece.NearestTarget, targets.Polygons);
   piece.UpperOfG = std::min(piece.Single, viaCorners);
   piece.Upper = piece.UpperOfG + piece.Offset;
   lower = std::max(lower, vertexMax == HUGE_VAL ? 0.0 : vertexMax + piece.Offset);
@@ -728,8 +741,9 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
     arena[t] = t;
     boxes[t] = targets.Bounds(t);
   }
-  // (Witnesses name the target Evaluate's search settles a source with:
-  // kept to it.)
+  // (A witness is the target whose single-target bound (1) alone settles a
+  // source; the hierarchy's search measures (1) only below (2): witnesses
+  // are asked of the scan.)
   thread_local TargetHierarchy hierarchy;
   const bool searchHierarchy = targets.size() >= HierarchyFrom && !witnesses;
   if (searchHierarchy)

@@ -21,6 +21,7 @@
 #include <map>
 #include <random>
 #include <set>
+#include <string>
 
 using tpc::Box3;
 using tpc::ConvexPolygon;
@@ -564,71 +565,156 @@ TEST(PolygonHausdorff, OffsetsBoundTheSampledOffsetDistance)
   }
 }
 
-TEST(PolygonHausdorff, ManyTargetsSearchedInAHierarchyBoundAsTheirScanWould)
+/// An n x n sheet of jittered squares of two triangles each over [0, 1]^2,
+/// rippled, at height `z`.
+std::vector<SourceTriangle> CrumpledSheet(int n, double z, std::mt19937& random)
 {
-  // From 32 targets on, pieces are searched in a hierarchy of the targets'
-  // boxes instead of their parents' candidates (PolygonHausdorff.cxx,
-  // EvaluateInHierarchy); asking for witnesses keeps the scan. Both must give
-  // the same bounds, bit for bit - large triangles over a crumpled sheet of
-  // small ones and the other way, with and without offsets, stopping early
-  // or not - and bound the sampled distance.
-  std::mt19937 random(17);
-  std::uniform_real_distribution<double> jitter(-0.02, 0.02), unit(0.0, 1.0);
-  std::vector<SourceTriangle> sheet, large;
-  constexpr int N = 9;
-  for (int i = 0; i < N; ++i)
+  std::uniform_real_distribution<double> jitter(-0.2 / n, 0.2 / n);
+  std::vector<SourceTriangle> sheet;
+  for (int i = 0; i < n; ++i)
   {
-    for (int j = 0; j < N; ++j)
+    for (int j = 0; j < n; ++j)
     {
       Vec3 c[4];
       for (int k = 0; k < 4; ++k)
       {
-        const double x = double(i + (k == 1 || k == 2)) / N, y = double(j + (k >= 2)) / N;
+        const double x = double(i + (k == 1 || k == 2)) / n, y = double(j + (k >= 2)) / n;
         const double dx = jitter(random), dy = jitter(random), dz = jitter(random);
-        c[k] = Vec3(x + dx, y + dy, 0.05 * std::sin(9 * x + 4 * y) + dz);
+        c[k] = Vec3(x + dx, y + dy, z + 0.05 * std::sin(9 * x + 4 * y) + dz);
       }
       sheet.push_back({ c[0], c[1], c[2] });
       sheet.push_back({ c[0], c[2], c[3] });
     }
   }
+  return sheet;
+}
+
+TEST(PolygonHausdorff, ManyTargetsSearchedInAHierarchyBoundAsTheirScanWould)
+{
+  // From 32 targets on, pieces are searched in a hierarchy of the targets'
+  // boxes instead of their parents' candidates (PolygonHausdorff.cxx,
+  // EvaluateInHierarchy); asking for witnesses keeps the scan (whose bounds
+  // SharedCornersOnALatticeBoundAsEachSearchWould checks are those of the
+  // scan without witnesses). Both must give the same bounds, bit for bit:
+  // two crumpled sheets of like triangles both ways (the single-target bound
+  // settles most pieces), large triangles over a sheet, a lattice of exact
+  // ties, points and segments among the targets, 31 to 33 targets; with and
+  // without offsets; stopping early, giving up, or running out of pieces.
+  // The bound must hold against dense sampling, and the distance attained
+  // must not exceed it by more than the samples' spacing.
+  std::mt19937 random(17);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  struct Case
+  {
+    std::string Name;
+    std::vector<SourceTriangle> From, To;
+    tpc::PolygonSet Targets;
+    bool Sampled = true; ///< To is Targets (no points or segments)
+  };
+  std::vector<Case> cases;
+  const auto add = [&](std::string name, std::vector<SourceTriangle> from, std::vector<SourceTriangle> to) {
+    Case c{ std::move(name), std::move(from), std::move(to), {} };
+    c.Targets = AsPolygons(c.To);
+    cases.push_back(std::move(c));
+  };
+  const std::vector<SourceTriangle> fine = CrumpledSheet(7, 0.0, random), coarse = CrumpledSheet(6, 0.03, random);
+  add("fine over coarse", fine, coarse);
+  add("coarse over fine", coarse, fine);
+  std::vector<SourceTriangle> large;
   for (int k = 0; k < 6; ++k)
   {
-    Vec3 c[3];
-    for (Vec3& p : c)
-    {
-      const double x = unit(random), y = unit(random), z = 0.1 * unit(random) - 0.05;
-      p = Vec3(x, y, z);
-    }
-    large.push_back({ c[0], c[1], c[2] });
+    const double x0 = unit(random), y0 = unit(random), x1 = unit(random), y1 = unit(random);
+    const double x2 = unit(random), y2 = unit(random), z = 0.1 * unit(random) - 0.05;
+    large.push_back({ Vec3(x0, y0, z), Vec3(x1, y1, z), Vec3(x2, y2, -z) });
   }
-  ASSERT_GE(sheet.size(), 32u);
-  for (const bool reversed : { false, true })
+  add("large over fine", large, fine);
+  std::vector<SourceTriangle> lattice;
+  for (int i = 0; i < 6; ++i)
   {
-    const auto& from = reversed ? sheet : large;
-    const auto& to = reversed ? large : sheet;
-    std::vector<double> o(from.size()), p(to.size());
+    for (int j = 0; j < 6; ++j)
+    {
+      const Vec3 a(i / 6.0, j / 6.0, 0.0625), b((i + 1) / 6.0, j / 6.0, 0.0625),
+        c((i + 1) / 6.0, (j + 1) / 6.0, 0.0625), d(i / 6.0, (j + 1) / 6.0, 0.0625);
+      lattice.push_back({ a, b, c });
+      lattice.push_back({ a, c, d });
+    }
+  }
+  add("fine over a lattice", fine, lattice);
+  add("a lattice over itself moved", lattice, [&] {
+    std::vector<SourceTriangle> moved = lattice;
+    for (SourceTriangle& t : moved)
+    {
+      for (Vec3& p : t)
+      {
+        p = p + Vec3(0.0, 0.0, 0.03);
+      }
+    }
+    return moved;
+  }());
+  for (const std::size_t count : { 31, 32, 33 })
+  {
+    add("coarse over " + std::to_string(count), coarse, std::vector<SourceTriangle>(fine.begin(), fine.begin() + count));
+  }
+  {
+    Case c{ "points and segments", coarse, {}, AsPolygons(fine), false };
+    for (int k = 0; k < 10; ++k)
+    {
+      const Vec3 p(unit(random), unit(random), 0.02), q(unit(random), unit(random), -0.02);
+      c.Targets.Add({ p });
+      c.Targets.Add({ p, q });
+    }
+    cases.push_back(std::move(c));
+  }
+  for (const Case& c : cases)
+  {
+    ASSERT_GE(c.Targets.size(), 31u) << c.Name;
+    const double sampled = c.Sampled ? SampledHausdorff(c.From, c.To) : 0.05;
+    double spacing = 0.0; // (of SampledHausdorff's samples)
+    for (const SourceTriangle& t : c.From)
+    {
+      for (int e = 0; e < 3; ++e)
+      {
+        spacing = std::max(spacing, tpc::Norm(t[(e + 1) % 3] - t[e]) / 40.0);
+      }
+    }
+    std::vector<double> o(c.From.size()), p(c.Targets.size());
     for (double& x : o)
     {
       x = 0.02 * unit(random);
     }
     for (double& x : p)
     {
-      x = 0.02 * unit(random);
+      x = 0.01 + 0.02 * unit(random); // (none near 0: a node's least offset matters)
     }
-    const double sampled = SampledHausdorff(from, to);
-    for (const bool withOffsets : { false, true })
+    struct Stop
     {
-      const tpc::DistanceOffsets offsets = withOffsets ? tpc::DistanceOffsets{ &o, &p } : tpc::DistanceOffsets{};
-      for (const double enough : { 0.0, 0.5 * sampled })
+      double Enough, GiveUp;
+      std::size_t Budget;
+    };
+    for (const Stop& stop : { Stop{ 0.0, HUGE_VAL, 200000 }, Stop{ 0.5 * sampled, HUGE_VAL, 200000 },
+           Stop{ HUGE_VAL, 1.03 * sampled, 200000 }, Stop{ 0.0, HUGE_VAL, 40 } })
+    {
+      for (const bool withOffsets : { false, true })
       {
+        const tpc::DistanceOffsets offsets = withOffsets ? tpc::DistanceOffsets{ &o, &p } : tpc::DistanceOffsets{};
         std::vector<tpc::SingleTargetWitness> witnesses;
         const tpc::HausdorffEstimate searched =
-          tpc::OneSidedHausdorff(from, AsPolygons(to), enough, HUGE_VAL, 200000, offsets);
+          tpc::OneSidedHausdorff(c.From, c.Targets, stop.Enough, stop.GiveUp, stop.Budget, offsets);
         const tpc::HausdorffEstimate scanned =
-          tpc::OneSidedHausdorff(from, AsPolygons(to), enough, HUGE_VAL, 200000, offsets, &witnesses);
-        EXPECT_EQ(searched.Upper, scanned.Upper) << reversed << withOffsets << enough;
-        EXPECT_EQ(searched.Lower, scanned.Lower) << reversed << withOffsets << enough;
-        EXPECT_GE(searched.Upper, sampled * (1 - 1e-12)) << reversed << withOffsets << enough;
+          tpc::OneSidedHausdorff(c.From, c.Targets, stop.Enough, stop.GiveUp, stop.Budget, offsets, &witnesses);
+        const std::string what = c.Name + (withOffsets ? ", offsets" : "") + ", enough " +
+          std::to_string(stop.Enough) + ", give up " + std::to_string(stop.GiveUp) + ", budget " +
+          std::to_string(stop.Budget);
+        EXPECT_EQ(searched.Upper, scanned.Upper) << what;
+        EXPECT_EQ(searched.Lower, scanned.Lower) << what;
+        if (c.Sampled)
+        {
+          EXPECT_GE(searched.Upper, sampled * (1 - 1e-12)) << what;
+          if (!withOffsets)
+          {
+            EXPECT_LE(searched.Lower, sampled + spacing) << what;
+          }
+        }
       }
     }
   }
