@@ -100,6 +100,24 @@ void BumpsUnderAFan(int n, std::vector<SourceTriangle>& bumps, std::vector<Sourc
   }
 }
 
+/// n x n squares of two triangles each over [0, 1]^2 at height 1/16, their
+/// corners on lattice coordinates (i / n).
+std::vector<SourceTriangle> LatticeSquares(int n)
+{
+  std::vector<SourceTriangle> lattice;
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      const double x0 = i / double(n), x1 = (i + 1) / double(n), y0 = j / double(n), y1 = (j + 1) / double(n);
+      const Vec3 a(x0, y0, 0.0625), b(x1, y0, 0.0625), c(x1, y1, 0.0625), d(x0, y1, 0.0625);
+      lattice.push_back({ a, b, c });
+      lattice.push_back({ a, c, d });
+    }
+  }
+  return lattice;
+}
+
 tpc::PolygonSet AsPolygons(const std::vector<SourceTriangle>& triangles)
 {
   tpc::PolygonSet polygons;
@@ -407,17 +425,7 @@ TEST(PolygonHausdorff, SharedCornersOnALatticeBoundAsEachSearchWould)
   // witnesses asked for (which turns the settling without a search off).
   std::vector<SourceTriangle> bumps, fan;
   BumpsUnderAFan(12, bumps, fan);
-  std::vector<SourceTriangle> lattice;
-  for (int i = 0; i < 16; ++i)
-  {
-    for (int j = 0; j < 16; ++j)
-    {
-      const Vec3 a(i / 16.0, j / 16.0, 0.0625), b((i + 1) / 16.0, j / 16.0, 0.0625),
-        c((i + 1) / 16.0, (j + 1) / 16.0, 0.0625), d(i / 16.0, (j + 1) / 16.0, 0.0625);
-      lattice.push_back({ a, b, c });
-      lattice.push_back({ a, c, d });
-    }
-  }
+  const std::vector<SourceTriangle> lattice = LatticeSquares(16);
   const double sampled = SampledHausdorff(lattice, bumps);
   for (const double enough : { 0.0, 0.2 })
   {
@@ -628,17 +636,7 @@ TEST(PolygonHausdorff, ManyTargetsSearchedInAHierarchyBoundAsTheirScanWould)
     large.push_back({ Vec3(x0, y0, z), Vec3(x1, y1, z), Vec3(x2, y2, -z) });
   }
   add("large over fine", large, fine);
-  std::vector<SourceTriangle> lattice;
-  for (int i = 0; i < 6; ++i)
-  {
-    for (int j = 0; j < 6; ++j)
-    {
-      const Vec3 a(i / 6.0, j / 6.0, 0.0625), b((i + 1) / 6.0, j / 6.0, 0.0625),
-        c((i + 1) / 6.0, (j + 1) / 6.0, 0.0625), d(i / 6.0, (j + 1) / 6.0, 0.0625);
-      lattice.push_back({ a, b, c });
-      lattice.push_back({ a, c, d });
-    }
-  }
+  const std::vector<SourceTriangle> lattice = LatticeSquares(6);
   add("fine over a lattice", fine, lattice);
   add("a lattice over itself moved", lattice, [&] {
     std::vector<SourceTriangle> moved = lattice;
