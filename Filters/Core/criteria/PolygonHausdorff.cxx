@@ -237,9 +237,9 @@ constexpr std::size_t HierarchyFrom = 32;
 /// and target (armadillo at 1/64: a call's time grew with the product of
 /// both, the fan's direction two thirds of the branch and bound's time).
 /// Median splits along the longest axis of the boxes' centres, at most
-/// LeafSize targets a leaf; each node keeps the least offset of its targets, so that
-/// its box distance plus that offset is a lower bound of every target's
-/// offset distance under it.
+/// LeafSize targets a leaf; each node keeps the least offset of its
+/// targets, so that its box distance plus that offset is a lower bound of
+/// every target's offset distance under it.
 class TargetHierarchy
 {
 public:
@@ -331,8 +331,8 @@ public:
       const double offset = this->OffsetOf(t);
       const Box3& box = (*this->Boxes)[t];
       const double box2[3] = { box.Distance2(v[0]), box.Distance2(v[1]), box.Distance2(v[2]) };
-      const int far = box2[0] >= box2[1] && box2[0] >= box2[2] ? 0 : box2[1] >= box2[2] ? 1 : 2;
-      if (!CloserThan(box2[far], offset, best))
+      const int farthestVertex = box2[0] >= box2[1] && box2[0] >= box2[2] ? 0 : box2[1] >= box2[2] ? 1 : 2;
+      if (!CloserThan(box2[farthestVertex], offset, best))
       {
         return;
       }
@@ -341,7 +341,7 @@ public:
       double farthest = 0.0;
       for (int k = 0; k < 3 && farthest < best; ++k)
       {
-        const int i = (far + k) % 3;
+        const int i = (farthestVertex + k) % 3;
         farthest = std::max(farthest, OffsetDistance(polygons, v[i], t, offset));
       }
       if (farthest < best)
@@ -754,7 +754,9 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
     searchHierarchy ? &hierarchy : nullptr };
   thread_local CornerDistances corners;
   corners.Reset(3 * sources.size());
-  const auto evaluate = searchHierarchy ? &EvaluateInHierarchy : offsets.Targets ? &Evaluate<true> : &Evaluate<false>;
+  const auto evaluate = searchHierarchy ? &EvaluateInHierarchy
+    : offsets.Targets                    ? &Evaluate<true>
+                                         : &Evaluate<false>;
   // Pieces at most `settle` are never split (the loop below stops before
   // the largest piece is one of them): they are kept out of the queue, their
   // largest bound in `settledUpper`, and their candidates are not kept

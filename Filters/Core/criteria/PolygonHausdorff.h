@@ -39,7 +39,7 @@
 // candidates were scanned, which cost as much as sources times targets; the
 // pieces are then searched in a hierarchy of the targets' boxes instead:
 // g at a vertex as the least distance over every target, the single-target
-// bound (1) only below (2). The same bound in exact arithmetic - a target
+// bound (1) only below (2) and the parent's bound. The same bound in exact arithmetic - a target
 // outside a piece's candidates is farther from it than its parent's bound,
 // which a child keeps when lower - and, computed, bit for bit on the tests
 // and scenes compared (PolygonHausdorff.cxx, EvaluateInHierarchy). Where

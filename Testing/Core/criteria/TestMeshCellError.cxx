@@ -608,8 +608,8 @@ TEST(PolygonHausdorff, ManyTargetsSearchedInAHierarchyBoundAsTheirScanWould)
   // settles most pieces), large triangles over a sheet, a lattice of exact
   // ties, points and segments among the targets, 31 to 33 targets; with and
   // without offsets; stopping early, giving up, or running out of pieces.
-  // The bound must hold against dense sampling, and the distance attained
-  // must not exceed it by more than the samples' spacing.
+  // The bound must be at least the densely sampled distance, and the
+  // distance attained at most that plus the samples' spacing.
   std::mt19937 random(17);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   struct Case
@@ -625,7 +625,8 @@ TEST(PolygonHausdorff, ManyTargetsSearchedInAHierarchyBoundAsTheirScanWould)
     c.Targets = AsPolygons(c.To);
     cases.push_back(std::move(c));
   };
-  const std::vector<SourceTriangle> fine = CrumpledSheet(7, 0.0, random), coarse = CrumpledSheet(6, 0.03, random);
+  const std::vector<SourceTriangle> fine = CrumpledSheet(7, 0.0, random);
+  const std::vector<SourceTriangle> coarse = CrumpledSheet(6, 0.03, random);
   add("fine over coarse", fine, coarse);
   add("coarse over fine", coarse, fine);
   std::vector<SourceTriangle> large;
@@ -651,7 +652,8 @@ TEST(PolygonHausdorff, ManyTargetsSearchedInAHierarchyBoundAsTheirScanWould)
   }());
   for (const std::size_t count : { 31, 32, 33 })
   {
-    add("coarse over " + std::to_string(count), coarse, std::vector<SourceTriangle>(fine.begin(), fine.begin() + count));
+    add("coarse over " + std::to_string(count), coarse,
+      std::vector<SourceTriangle>(fine.begin(), fine.begin() + static_cast<std::ptrdiff_t>(count)));
   }
   {
     Case c{ "points and segments", coarse, {}, AsPolygons(fine), false };
@@ -694,7 +696,8 @@ TEST(PolygonHausdorff, ManyTargetsSearchedInAHierarchyBoundAsTheirScanWould)
     {
       for (const bool withOffsets : { false, true })
       {
-        const tpc::DistanceOffsets offsets = withOffsets ? tpc::DistanceOffsets{ &o, &p } : tpc::DistanceOffsets{};
+        const tpc::DistanceOffsets offsets =
+          withOffsets ? tpc::DistanceOffsets{ &o, &p } : tpc::DistanceOffsets{};
         std::vector<tpc::SingleTargetWitness> witnesses;
         const tpc::HausdorffEstimate searched =
           tpc::OneSidedHausdorff(c.From, c.Targets, stop.Enough, stop.GiveUp, stop.Budget, offsets);
