@@ -103,39 +103,34 @@ namespace
 {
 /// The edges of more than two triangles (a non-manifold mesh, contoured
 /// without the guarantee), their uses taken in pairs by triangle number as
-/// an edge table gives them; usually none, found where a triangle has no
-/// neighbour across an edge. (Edges of one triangle add nothing: no ridge.)
+/// an edge table gives them (MeshEdges.h); usually none, found where a
+/// triangle has no neighbour across an edge. (Edges of one triangle add
+/// nothing: no ridge.)
 LatticeCreases UnpairedEdges(const MeshSolid& mesh, double ridgeThickness, double planeThickness)
 {
-  struct Use
+  const auto& triangles = mesh.Triangles();
+  std::vector<EdgeUse> uses;
+  for (std::uint32_t t = 0; t < triangles.size(); ++t)
   {
-    std::uint64_t Key;
-    std::uint32_t Triangle, Third;
-    bool operator<(const Use& o) const { return Key != o.Key ? Key < o.Key : Triangle < o.Triangle; }
-  };
-  std::vector<Use> uses;
-  for (std::uint32_t t = 0; t < mesh.Triangles().size(); ++t)
-  {
-    const auto& corners = mesh.Triangles()[t];
-    for (int k = 0; k < 3; ++k)
+    for (std::uint8_t k = 0; k < 3; ++k)
     {
       if (mesh.Across(t, k) == MeshSolid::NoTriangle)
       {
-        uses.push_back({ EdgeKey(corners[k], corners[(k + 1) % 3]), t, corners[(k + 2) % 3] });
+        const std::uint32_t from = triangles[t][k], to = triangles[t][(k + 1) % 3];
+        uses.push_back({ EdgeKey(from, to), t, k, from < to });
       }
     }
   }
   std::sort(uses.begin(), uses.end());
+  const auto third = [&](const EdgeUse& u) { return mesh.Points()[triangles[u.Triangle][(u.Corner + 2) % 3]]; };
   LatticeCreases creases;
-  for (std::size_t k = 0; k + 1 < uses.size(); ++k)
-  {
-    if (uses[k + 1].Key == uses[k].Key)
+  ForEachEdge(uses, [&](std::size_t first, std::size_t count) {
+    for (std::size_t k = first; k + 1 < first + count; k += 2)
     {
-      AddCreaseEdge(mesh.Points()[EdgeLow(uses[k].Key)], mesh.Points()[EdgeHigh(uses[k].Key)], mesh.Points()[uses[k].Third],
-        mesh.Points()[uses[k + 1].Third], ridgeThickness, planeThickness, creases);
-      ++k;
+      AddCreaseEdge(mesh.Points()[EdgeLow(uses[k].Key)], mesh.Points()[EdgeHigh(uses[k].Key)], third(uses[k]),
+        third(uses[k + 1]), ridgeThickness, planeThickness, creases);
     }
-  }
+  });
   return creases;
 }
 } // namespace
