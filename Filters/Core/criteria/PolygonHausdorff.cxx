@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <memory>
+#include <numeric>
 #include <tuple>
 #include <utility>
 
@@ -224,6 +226,8 @@ double OffsetDistance(const PolygonSet& polygons, const Vec3& p, std::uint32_t t
   const double d = polygons.Distance(p, t) + offset;
   return std::isnan(d) ? HUGE_VAL : d;
 }
+
+} // namespace
 
 /// The least number of targets for which a branch and bound searches a
 /// TargetHierarchy.
@@ -459,13 +463,16 @@ private:
   std::vector<Vec3> Centres; ///< of the targets' boxes
 };
 
+namespace
+{
+
 /// What every piece of one branch and bound is evaluated against: the
 /// targets, their boxes side by side (the first loop reads only those), and
 /// the scratch reused across pieces.
 struct Targets
 {
   const PolygonSet& Polygons;
-  std::vector<Box3>& Boxes;
+  const std::vector<Box3>& Boxes;
   /// A piece's candidates with their squared box distances.
   std::vector<std::pair<double, std::uint32_t>>& InReach;
   std::vector<std::uint32_t>& Arena;
@@ -716,9 +723,56 @@ void EvaluateInHierarchy(Piece& piece, std::size_t, std::size_t, double parentUp
 }
 } // namespace
 
+HausdorffTargets::HausdorffTargets() = default;
+HausdorffTargets::~HausdorffTargets() = default;
+
+void HausdorffTargets::Prepare(const PolygonSet& polygons, const std::vector<double>* offsets)
+{
+  this->Prepare(polygons, offsets, true);
+}
+
+void HausdorffTargets::Prepare(const PolygonSet& polygons, const std::vector<double>* offsets, bool hierarchy)
+{
+  this->Polygons = &polygons;
+  this->Offsets = offsets;
+  this->Boxes.resize(polygons.size());
+  for (std::uint32_t t = 0; t < polygons.size(); ++t)
+  {
+    this->Boxes[t] = polygons.Bounds(t);
+  }
+  this->HierarchyBuilt = hierarchy && polygons.size() >= HierarchyFrom;
+  if (this->HierarchyBuilt)
+  {
+    if (!this->Hierarchy)
+    {
+      this->Hierarchy = std::make_unique<TargetHierarchy>();
+    }
+    this->Hierarchy->Build(this->Boxes, offsets);
+  }
+}
+
 HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
   const PolygonSet& targets, double enough, double giveUp, std::size_t budget,
   const DistanceOffsets& offsets, std::vector<SingleTargetWitness>* witnesses)
+{
+  // (Prepared for this call alone, in memory kept across calls; the
+  // hierarchy only where it is searched - not where witnesses are asked for.)
+  if (sources.empty())
+  {
+    if (witnesses)
+    {
+      witnesses->clear();
+    }
+    return HausdorffEstimate();
+  }
+  thread_local HausdorffTargets prepared;
+  prepared.Prepare(targets, offsets.Targets, witnesses == nullptr);
+  return OneSidedHausdorff(sources, prepared, enough, giveUp, budget, offsets.Sources, witnesses);
+}
+
+HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
+  const HausdorffTargets& prepared, double enough, double giveUp, std::size_t budget,
+  const std::vector<double>* sourceOffsets, std::vector<SingleTargetWitness>* witnesses)
 {
   HausdorffEstimate estimate;
   if (witnesses)
@@ -729,29 +783,21 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
   {
     return estimate;
   }
-  // Scratch reused across calls (one per thread): the candidate arena, its
-  // first entries every target; a piece's candidates in reach (Evaluate).
-  thread_local std::vector<std::uint32_t> arena;
-  thread_local std::vector<std::pair<double, std::uint32_t>> inReach;
-  thread_local std::vector<Box3> boxes;
-  arena.resize(targets.size());
-  boxes.resize(targets.size());
-  for (std::uint32_t t = 0; t < targets.size(); ++t)
-  {
-    arena[t] = t;
-    boxes[t] = targets.Bounds(t);
-  }
+  const PolygonSet& targets = *prepared.Polygons;
+  const DistanceOffsets offsets{ sourceOffsets, prepared.Offsets };
   // (A witness is the target whose single-target bound (1) alone settles a
   // source; the hierarchy's search measures (1) only below (2): witnesses
   // are asked of the scan.)
-  thread_local TargetHierarchy hierarchy;
-  const bool searchHierarchy = targets.size() >= HierarchyFrom && !witnesses;
-  if (searchHierarchy)
-  {
-    hierarchy.Build(boxes, offsets.Targets);
-  }
-  Targets context{ targets, boxes, inReach, arena, offsets.Targets, witnesses == nullptr,
-    searchHierarchy ? &hierarchy : nullptr };
+  const bool searchHierarchy = prepared.HierarchyBuilt && !witnesses;
+  // Scratch reused across calls (one per thread): the candidate arena, its
+  // first entries every target where they are scanned (the hierarchy's
+  // searches keep no candidates); a piece's candidates in reach (Evaluate).
+  thread_local std::vector<std::uint32_t> arena;
+  thread_local std::vector<std::pair<double, std::uint32_t>> inReach;
+  arena.resize(searchHierarchy ? 0 : targets.size());
+  std::iota(arena.begin(), arena.end(), 0u);
+  Targets context{ targets, prepared.Boxes, inReach, arena, offsets.Targets, witnesses == nullptr,
+    searchHierarchy ? prepared.Hierarchy.get() : nullptr };
   thread_local CornerDistances corners;
   corners.Reset(3 * sources.size());
   const auto evaluate = searchHierarchy ? &EvaluateInHierarchy

@@ -55,6 +55,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace tpc
@@ -94,6 +95,45 @@ struct SingleTargetWitness
   double Bound = 0.0;
 };
 
+class TargetHierarchy; // (PolygonHausdorff.cxx)
+
+/// The targets of branch and bounds, prepared: their boxes and, from 32
+/// targets, the hierarchy they are searched in. OneSidedHausdorff prepares
+/// its targets for each call; a caller bounding several sources one at a
+/// time against the same targets prepares them once (a collapse's made
+/// triangles against S near them, ErrorCertificates.cxx: the hierarchy
+/// built again for each of them was a quarter of armadillo's decimation at
+/// 1/64). Refers to the polygons and offsets prepared, which must stay as
+/// they are while it is used; one per thread; keeps its memory from one
+/// Prepare to the next.
+class HausdorffTargets
+{
+public:
+  HausdorffTargets();
+  ~HausdorffTargets();
+  HausdorffTargets(const HausdorffTargets&) = delete;
+  HausdorffTargets& operator=(const HausdorffTargets&) = delete;
+
+  /// Prepares `polygons`, with offsets `offsets` (header: Offsets; null for
+  /// zeros).
+  void Prepare(const PolygonSet& polygons, const std::vector<double>* offsets = nullptr);
+
+private:
+  friend HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>&, const PolygonSet&, double,
+    double, std::size_t, const DistanceOffsets&, std::vector<SingleTargetWitness>*);
+  friend HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>&, const HausdorffTargets&, double,
+    double, std::size_t, const std::vector<double>*, std::vector<SingleTargetWitness>*);
+  /// `hierarchy`: build it where the targets are many (not where the calls
+  /// ask for witnesses: those scan).
+  void Prepare(const PolygonSet& polygons, const std::vector<double>* offsets, bool hierarchy);
+
+  const PolygonSet* Polygons = nullptr;
+  const std::vector<double>* Offsets = nullptr;
+  std::vector<Box3> Boxes;
+  std::unique_ptr<TargetHierarchy> Hierarchy;
+  bool HierarchyBuilt = false;
+};
+
 /// Bounds h(sources, targets) as above (with `offsets`, the offset distance);
 /// Upper is +inf when there are sources but no targets. `witnesses`, when
 /// given, receives one entry per source: the target that settled it at its
@@ -103,5 +143,11 @@ struct SingleTargetWitness
 HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
   const PolygonSet& targets, double enough, double giveUp, std::size_t budget = 4096,
   const DistanceOffsets& offsets = {}, std::vector<SingleTargetWitness>* witnesses = nullptr);
+
+/// The same against prepared targets (their offsets as prepared), with
+/// `sourceOffsets` (null for zeros): the same bound, bit for bit.
+HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
+  const HausdorffTargets& targets, double enough, double giveUp, std::size_t budget = 4096,
+  const std::vector<double>* sourceOffsets = nullptr, std::vector<SingleTargetWitness>* witnesses = nullptr);
 
 } // namespace tpc

@@ -24,7 +24,7 @@ ErrorCertificates::ErrorCertificates(const LiveSurface& live, const std::vector<
     const std::vector<Triangle>& triangles = surface.Mesh->Triangles();
     for (std::uint32_t t = 0; t < triangles.size(); ++t)
     {
-      this->SurfaceGrid.Insert(t, TriangleBox(surface.Mesh->Points().data(), triangles[t]));
+      this->SurfaceGrid.Insert(t, surface.Mesh->TriangleBounds(t));
     }
     this->Witness.assign(triangles.size(), SingleTargetWitness::None);
   }
@@ -41,7 +41,9 @@ void ErrorCertificates::NearSurface(const Box3& box, PolygonSet& polygons, Visit
   const std::vector<Triangle>& triangles = this->Surface.Mesh->Triangles();
   marks.Start(triangles.size());
   this->SurfaceGrid.ForEachListed(box, [&](std::uint32_t s) {
-    if (!marks.First(s) || !TriangleBox(points, triangles[s]).Overlaps(box))
+    // (S's boxes are the mesh's own: MeshSolid::TriangleBounds, TriangleBox's
+    // exact minima and maxima, not computed again at every visit.)
+    if (!marks.First(s) || !this->Surface.Mesh->TriangleBounds(s).Overlaps(box))
     {
       return;
     }
@@ -66,7 +68,7 @@ void ErrorCertificates::UnwitnessedNear(const Collapse& c, const Box3& region, s
   marks.Surface.Start(triangles.size());
   this->SurfaceGrid.ForEachListed(region, [&](std::uint32_t s) {
     const Triangle& t = triangles[s];
-    const Box3 box = TriangleBox(points, t);
+    const Box3& box = this->Surface.Mesh->TriangleBounds(s);
     if (!marks.Surface.First(s) || !box.Overlaps(region))
     {
       return;
@@ -108,12 +110,15 @@ double ErrorCertificates::AgainstMesh(Collapse& c, CertificateMarks& marks) cons
   madeSet.SetSlackMagnitude(this->SlackMagnitude);
   nearMade.SetSlackMagnitude(this->SlackMagnitude);
   this->NearSurface(GrownBy(BoxOf(this->Live.P, c.Made), tolerance), nearMade, marks.Surface);
+  // (Prepared once for all the made triangles: PolygonHausdorff.h.)
+  thread_local HausdorffTargets near;
+  near.Prepare(nearMade);
   double toSurface = 0.0;
   for (const Triangle& t : c.Made)
   {
     const SourceTriangle made = this->Live.CornersOf(t);
     madeSet.Add(made.data(), made.size());
-    toSurface = std::max(toSurface, OneSidedHausdorff({ made }, nearMade, giveUp, giveUp, budget).Upper);
+    toSurface = std::max(toSurface, OneSidedHausdorff({ made }, near, giveUp, giveUp, budget).Upper);
     if (!(toSurface <= giveUp))
     {
       return HUGE_VAL;

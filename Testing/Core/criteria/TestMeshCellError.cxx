@@ -721,6 +721,85 @@ TEST(PolygonHausdorff, ManyTargetsSearchedInAHierarchyBoundAsTheirScanWould)
   }
 }
 
+TEST(PolygonHausdorff, PreparedTargetsBoundAsEachCallWould)
+{
+  // Targets prepared once (HausdorffTargets: their boxes and hierarchy) and
+  // searched by several calls - each source alone, as a collapse's made
+  // triangles are (ErrorCertificates.cxx), then all at once - must bound as
+  // the call that prepares its own targets does, bit for bit: with 31 to 33
+  // targets (scan and hierarchy), with and without offsets, with witnesses
+  // (which scan), and with calls against other targets in between (the
+  // calls' scratch is shared). A prepared set prepared again for other
+  // targets answers for those.
+  std::mt19937 random(29);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const std::vector<SourceTriangle> fine = CrumpledSheet(7, 0.0, random);
+  const std::vector<SourceTriangle> coarse = CrumpledSheet(6, 0.03, random);
+  const tpc::PolygonSet other = AsPolygons(coarse);
+  tpc::HausdorffTargets prepared;
+  for (const std::size_t count : { 31, 32, 33, 200 })
+  for (const bool fromTheEnd : { false, true }) // (as many targets, other ones)
+  {
+    const auto first = fromTheEnd ? fine.end() - static_cast<std::ptrdiff_t>(count) : fine.begin();
+    const tpc::PolygonSet targets =
+      AsPolygons(std::vector<SourceTriangle>(first, first + static_cast<std::ptrdiff_t>(count)));
+    std::vector<double> o(coarse.size()), p(targets.size());
+    for (double& x : o)
+    {
+      x = 0.02 * unit(random);
+    }
+    for (double& x : p)
+    {
+      x = 0.01 + 0.02 * unit(random);
+    }
+    for (const bool withOffsets : { false, true })
+    {
+      prepared.Prepare(targets, withOffsets ? &p : nullptr);
+      const std::string what = std::to_string(count) + (fromTheEnd ? " last" : " first") + " targets" +
+        (withOffsets ? ", offsets" : "");
+      double attained = 0.0;
+      for (std::size_t k = 0; k < coarse.size(); ++k)
+      {
+        const std::vector<SourceTriangle> one{ coarse[k] };
+        const std::vector<double> ok{ o[k] };
+        const std::vector<double>* sourceOffsets = withOffsets ? &ok : nullptr;
+        const tpc::DistanceOffsets offsets = withOffsets ? tpc::DistanceOffsets{ &ok, &p } : tpc::DistanceOffsets{};
+        const tpc::HausdorffEstimate alone = tpc::OneSidedHausdorff(one, targets, 0.0, HUGE_VAL, 64, offsets);
+        // (Another call in between, on other targets.)
+        tpc::OneSidedHausdorff(one, other, 0.0, HUGE_VAL, 64);
+        const tpc::HausdorffEstimate shared =
+          tpc::OneSidedHausdorff(one, prepared, 0.0, HUGE_VAL, 64, sourceOffsets);
+        EXPECT_EQ(shared.Upper, alone.Upper) << what << ", source " << k;
+        EXPECT_EQ(shared.Lower, alone.Lower) << what << ", source " << k;
+        attained = std::max(attained, shared.Lower);
+      }
+      EXPECT_GT(attained, 0.0) << what;
+      const tpc::DistanceOffsets offsets = withOffsets ? tpc::DistanceOffsets{ &o, &p } : tpc::DistanceOffsets{};
+      const std::vector<double>* sourceOffsets = withOffsets ? &o : nullptr;
+      std::vector<tpc::SingleTargetWitness> witnessesAlone, witnessesShared;
+      const tpc::HausdorffEstimate all = tpc::OneSidedHausdorff(coarse, targets, 0.05, HUGE_VAL, 4096, offsets);
+      const tpc::HausdorffEstimate allShared =
+        tpc::OneSidedHausdorff(coarse, prepared, 0.05, HUGE_VAL, 4096, sourceOffsets);
+      EXPECT_EQ(allShared.Upper, all.Upper) << what;
+      EXPECT_EQ(allShared.Lower, all.Lower) << what;
+      const tpc::HausdorffEstimate scanned =
+        tpc::OneSidedHausdorff(coarse, targets, 0.1, HUGE_VAL, 4096, offsets, &witnessesAlone);
+      const tpc::HausdorffEstimate scannedShared =
+        tpc::OneSidedHausdorff(coarse, prepared, 0.1, HUGE_VAL, 4096, sourceOffsets, &witnessesShared);
+      EXPECT_EQ(scannedShared.Upper, scanned.Upper) << what;
+      ASSERT_EQ(witnessesShared.size(), witnessesAlone.size()) << what;
+      std::size_t witnessed = 0;
+      for (std::size_t k = 0; k < witnessesAlone.size(); ++k)
+      {
+        EXPECT_EQ(witnessesShared[k].Target, witnessesAlone[k].Target) << what << ", source " << k;
+        EXPECT_EQ(witnessesShared[k].Bound, witnessesAlone[k].Bound) << what << ", source " << k;
+        witnessed += witnessesAlone[k].Target != tpc::SingleTargetWitness::None ? 1 : 0;
+      }
+      EXPECT_GT(witnessed, 0u) << what;
+    }
+  }
+}
+
 TEST(MeshCellError, ChordDeviationIsTheTraceFarthestFromTheChord)
 {
   // A roof (two planes meeting at x = 0.5) crosses the face z = 0 of the unit
