@@ -97,15 +97,16 @@ struct SingleTargetWitness
 
 class TargetHierarchy; // (PolygonHausdorff.cxx)
 
-/// The targets of branch and bounds, prepared: their boxes and, from 32
-/// targets, the hierarchy they are searched in. OneSidedHausdorff prepares
-/// its targets for each call; a caller bounding several sources one at a
-/// time against the same targets prepares them once (a collapse's made
-/// triangles against S near them, ErrorCertificates.cxx: the hierarchy
-/// built again for each of them was a quarter of armadillo's decimation at
-/// 1/64). Refers to the polygons and offsets prepared, which must stay as
-/// they are while it is used; one per thread; keeps its memory from one
-/// Prepare to the next.
+/// The targets of branch and bounds, prepared: their boxes and, from
+/// HierarchyFrom targets, the hierarchy they are searched in.
+/// OneSidedHausdorff prepares its targets for each call; a caller bounding
+/// many sources one call at a time against the same targets prepares them
+/// once (the decimation's made triangles against the input mesh,
+/// ErrorCertificates.cxx: a hierarchy built for each collapse was half of
+/// armadillo's decimation at 1/64). Refers to the polygons and offsets
+/// prepared, which must stay as they are while it is used; once prepared,
+/// any number of threads may search it at once (the searches only read it);
+/// Prepare keeps the memory of the last.
 class HausdorffTargets
 {
 public:
@@ -113,6 +114,10 @@ public:
   ~HausdorffTargets();
   HausdorffTargets(const HausdorffTargets&) = delete;
   HausdorffTargets& operator=(const HausdorffTargets&) = delete;
+
+  /// The least number of targets searched in a hierarchy (fewer are
+  /// scanned).
+  static constexpr std::size_t HierarchyFrom = 32;
 
   /// Prepares `polygons`, with offsets `offsets` (header: Offsets; null for
   /// zeros).

@@ -21,11 +21,17 @@ ErrorCertificates::ErrorCertificates(const LiveSurface& live, const std::vector<
 {
   if (surface.Mesh)
   {
+    const Vec3* points = surface.Mesh->Points().data();
     const std::vector<Triangle>& triangles = surface.Mesh->Triangles();
+    this->SurfacePolygons.SetSlackMagnitude(this->SlackMagnitude);
+    this->SurfacePolygons.reserve(triangles.size(), 3 * triangles.size());
     for (std::uint32_t t = 0; t < triangles.size(); ++t)
     {
       this->SurfaceGrid.Insert(t, surface.Mesh->TriangleBounds(t));
+      const Triangle& f = triangles[t];
+      this->SurfacePolygons.Add({ points[f[0]], points[f[1]], points[f[2]] });
     }
+    this->SurfaceTargets.Prepare(this->SurfacePolygons);
     this->Witness.assign(triangles.size(), SingleTargetWitness::None);
   }
 }
@@ -35,20 +41,15 @@ double ErrorCertificates::Certify(Collapse& c, CertificateMarks& marks) const
   return this->Surface.Mesh ? this->AgainstMesh(c, marks) : this->ThroughBounds(c);
 }
 
-void ErrorCertificates::NearSurface(const Box3& box, PolygonSet& polygons, VisitMarks& marks) const
+void ErrorCertificates::NearSurface(const Box3& box, std::vector<std::uint32_t>& near, VisitMarks& marks) const
 {
-  const Vec3* points = this->Surface.Mesh->Points().data();
-  const std::vector<Triangle>& triangles = this->Surface.Mesh->Triangles();
-  marks.Start(triangles.size());
+  near.clear();
+  marks.Start(this->Surface.Mesh->Triangles().size());
   this->SurfaceGrid.ForEachListed(box, [&](std::uint32_t s) {
-    // (S's boxes are the mesh's own: MeshSolid::TriangleBounds, TriangleBox's
-    // exact minima and maxima, not computed again at every visit.)
-    if (!marks.First(s) || !this->Surface.Mesh->TriangleBounds(s).Overlaps(box))
+    if (marks.First(s) && this->Surface.Mesh->TriangleBounds(s).Overlaps(box))
     {
-      return;
+      near.push_back(s);
     }
-    const Triangle& t = triangles[s];
-    polygons.Add({ points[t[0]], points[t[1]], points[t[2]] });
   });
 }
 
@@ -105,20 +106,48 @@ double ErrorCertificates::AgainstMesh(Collapse& c, CertificateMarks& marks) cons
   // thousand pieces, and a collapse there makes five to ten: with one budget
   // for all, fandisk's large faces refused the same collapses again and
   // again - at 1/128, 155 of 1 039 certificates ran out, 71 % of the pieces
-  // evaluated, 3.4 s; one budget each, 0.75 s, 164 -> 162 triangles.)
-  PolygonSet madeSet, nearMade;
+  // evaluated, 3.4 s; one budget each, 0.75 s, 164 -> 162 triangles.) S near
+  // them: the triangles whose boxes meet the made triangles' box grown by
+  // the tolerance. Where they are few, as polygons of their own, scanned
+  // (PolygonHausdorff.h); where they are many, the whole of S is searched in
+  // the hierarchy prepared once (SurfaceTargets) - making them polygons and
+  // a hierarchy for each collapse was half of armadillo's decimation at
+  // 1/64 - with the same decision and bound. A triangle of S whose box
+  // misses the grown box is farther than the tolerance from every point of
+  // the made triangles. So wherever g over S near them is within the
+  // tolerance, g over all of S is the same (a minimum over those and others
+  // farther), and so is the single-target bound (1); a piece's bound within
+  // the tolerance is the same, and one above it is above it either way. The
+  // search stops at giveUp (below the tolerance): pieces within it are
+  // settled at once, never queued, and every piece above it is split, in
+  // whatever order - so the same pieces are evaluated and settled, with the
+  // same values, unless the budget runs out or a vertex is farther than
+  // giveUp, which refuses the collapse either way.
+  PolygonSet madeSet;
   madeSet.SetSlackMagnitude(this->SlackMagnitude);
-  nearMade.SetSlackMagnitude(this->SlackMagnitude);
-  this->NearSurface(GrownBy(BoxOf(this->Live.P, c.Made), tolerance), nearMade, marks.Surface);
-  // (Prepared once for all the made triangles: PolygonHausdorff.h.)
-  thread_local HausdorffTargets near;
-  near.Prepare(nearMade);
+  thread_local std::vector<std::uint32_t> near;
+  this->NearSurface(GrownBy(BoxOf(this->Live.P, c.Made), tolerance), near, marks.Surface);
+  PolygonSet nearMade;
+  const bool few = near.size() < HausdorffTargets::HierarchyFrom;
+  if (few)
+  {
+    nearMade.SetSlackMagnitude(this->SlackMagnitude);
+    const Vec3* points = this->Surface.Mesh->Points().data();
+    for (const std::uint32_t s : near)
+    {
+      const Triangle& f = this->Surface.Mesh->Triangles()[s];
+      nearMade.Add({ points[f[0]], points[f[1]], points[f[2]] });
+    }
+  }
   double toSurface = 0.0;
   for (const Triangle& t : c.Made)
   {
     const SourceTriangle made = this->Live.CornersOf(t);
     madeSet.Add(made.data(), made.size());
-    toSurface = std::max(toSurface, OneSidedHausdorff({ made }, near, giveUp, giveUp, budget).Upper);
+    toSurface = std::max(toSurface,
+      (few ? OneSidedHausdorff({ made }, nearMade, giveUp, giveUp, budget)
+           : OneSidedHausdorff({ made }, this->SurfaceTargets, giveUp, giveUp, budget))
+        .Upper);
     if (!(toSurface <= giveUp))
     {
       return HUGE_VAL;

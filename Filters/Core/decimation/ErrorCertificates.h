@@ -46,8 +46,8 @@ public:
 private:
   double ThroughBounds(const Collapse& c) const;
   double AgainstMesh(Collapse& c, CertificateMarks& marks) const;
-  /// S's triangles whose boxes overlap `box`, as polygons.
-  void NearSurface(const Box3& box, PolygonSet& polygons, VisitMarks& marks) const;
+  /// S's triangles whose boxes overlap `box`, in `near` (in the grid's order).
+  void NearSurface(const Box3& box, std::vector<std::uint32_t>& near, VisitMarks& marks) const;
   /// S's triangles overlapping `region` that no live triangle outside the
   /// star witnesses (CertifiedDecimation.h, Witnesses): whole where they lie
   /// in `region`, else clipped to it and fanned; `from` names each piece's
@@ -60,6 +60,10 @@ private:
   const DecimationParameters& Parameters;
   ExactMesh Surface;
   TriangleGrid SurfaceGrid;
+  /// S's triangles as polygons, in order, and prepared as the targets of the
+  /// made triangles' branch and bounds (AgainstMesh).
+  PolygonSet SurfacePolygons;
+  HausdorffTargets SurfaceTargets;
   /// Per triangle of S: a live triangle within the tolerance of all of it,
   /// or None.
   std::vector<std::uint32_t> Witness;
