@@ -1,6 +1,7 @@
 #include "PolygonHausdorff.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -783,6 +784,7 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
   {
     return estimate;
   }
+  assert(prepared.Polygons && "HausdorffTargets::Prepare first");
   const PolygonSet& targets = *prepared.Polygons;
   const DistanceOffsets offsets{ sourceOffsets, prepared.Offsets };
   // (A witness is the target whose single-target bound (1) alone settles a

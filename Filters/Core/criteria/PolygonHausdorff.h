@@ -106,7 +106,8 @@ class TargetHierarchy; // (PolygonHausdorff.cxx)
 /// armadillo's decimation at 1/64). Refers to the polygons and offsets
 /// prepared, which must stay as they are while it is used; once prepared,
 /// any number of threads may search it at once (the searches only read it);
-/// Prepare keeps the memory of the last.
+/// Prepare keeps the memory of the last. Neither copied nor moved: its
+/// hierarchy points at its boxes.
 class HausdorffTargets
 {
 public:

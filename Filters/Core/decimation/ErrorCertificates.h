@@ -61,7 +61,10 @@ private:
   ExactMesh Surface;
   TriangleGrid SurfaceGrid;
   /// S's triangles as polygons, in order, and prepared as the targets of the
-  /// made triangles' branch and bounds (AgainstMesh).
+  /// made triangles' branch and bounds (AgainstMesh): built with the
+  /// certificates, whether or not a collapse is then tried (about 330 bytes
+  /// per triangle of S). SurfaceTargets refers to SurfacePolygons: neither
+  /// is copied or moved (HausdorffTargets cannot be).
   PolygonSet SurfacePolygons;
   HausdorffTargets SurfaceTargets;
   /// Per triangle of S: a live triangle within the tolerance of all of it,

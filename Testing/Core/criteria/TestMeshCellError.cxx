@@ -733,13 +733,14 @@ TEST(PolygonHausdorff, PreparedTargetsBoundAsEachCallWould)
   // targets answers for those.
   std::mt19937 random(29);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const std::vector<SourceTriangle> fine = CrumpledSheet(7, 0.0, random);
+  const std::vector<SourceTriangle> fine = CrumpledSheet(11, 0.0, random); // (242 triangles)
   const std::vector<SourceTriangle> coarse = CrumpledSheet(6, 0.03, random);
   const tpc::PolygonSet other = AsPolygons(coarse);
   tpc::HausdorffTargets prepared;
   for (const std::size_t count : { 31, 32, 33, 200 })
   for (const bool fromTheEnd : { false, true }) // (as many targets, other ones)
   {
+    ASSERT_LE(count, fine.size());
     const auto first = fromTheEnd ? fine.end() - static_cast<std::ptrdiff_t>(count) : fine.begin();
     const tpc::PolygonSet targets =
       AsPolygons(std::vector<SourceTriangle>(first, first + static_cast<std::ptrdiff_t>(count)));
@@ -783,9 +784,9 @@ TEST(PolygonHausdorff, PreparedTargetsBoundAsEachCallWould)
       EXPECT_EQ(allShared.Upper, all.Upper) << what;
       EXPECT_EQ(allShared.Lower, all.Lower) << what;
       const tpc::HausdorffEstimate scanned =
-        tpc::OneSidedHausdorff(coarse, targets, 0.1, HUGE_VAL, 4096, offsets, &witnessesAlone);
+        tpc::OneSidedHausdorff(coarse, targets, 1.0, HUGE_VAL, 4096, offsets, &witnessesAlone);
       const tpc::HausdorffEstimate scannedShared =
-        tpc::OneSidedHausdorff(coarse, prepared, 0.1, HUGE_VAL, 4096, sourceOffsets, &witnessesShared);
+        tpc::OneSidedHausdorff(coarse, prepared, 1.0, HUGE_VAL, 4096, sourceOffsets, &witnessesShared);
       EXPECT_EQ(scannedShared.Upper, scanned.Upper) << what;
       ASSERT_EQ(witnessesShared.size(), witnessesAlone.size()) << what;
       std::size_t witnessed = 0;
@@ -798,6 +799,74 @@ TEST(PolygonHausdorff, PreparedTargetsBoundAsEachCallWould)
       EXPECT_GT(witnessed, 0u) << what;
     }
   }
+}
+
+TEST(PolygonHausdorff, AllTargetsBoundAsTheNearOnesWhereTheSearchStopsAtGiveUp)
+{
+  // The decimation searches a made triangle in a hierarchy of the whole
+  // input mesh instead of the mesh's triangles near it - those whose boxes
+  // meet the made triangle's box grown by the tolerance - with the search
+  // stopping at giveUp, below the tolerance (enough = giveUp;
+  // ErrorCertificates.cxx, AgainstMesh): the same decision, and the same
+  // bound where it is within giveUp. Made-like triangles over a crumpled
+  // sheet of 242, at heights and tolerances that accept some and refuse
+  // others, with small budgets too.
+  std::mt19937 random(31);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const std::vector<SourceTriangle> sheet = CrumpledSheet(11, 0.0, random);
+  const tpc::PolygonSet all = AsPolygons(sheet);
+  tpc::HausdorffTargets prepared;
+  prepared.Prepare(all);
+  std::size_t accepted = 0, refused = 0, searchedMany = 0;
+  for (int k = 0; k < 60; ++k)
+  {
+    const double z = 0.06 * unit(random) - 0.03, size = 0.1 + 0.4 * unit(random);
+    const double x = (1 - size) * unit(random), y = (1 - size) * unit(random);
+    const SourceTriangle made{ Vec3(x, y, z), Vec3(x + size, y + 0.3 * size, z + 0.01),
+      Vec3(x + 0.2 * size, y + size, z - 0.01) };
+    for (const double tolerance : { 0.02, 0.04, 0.08 })
+    {
+      const double giveUp = tolerance * (1 - 1e-6);
+      Box3 grown = tpc::BoundsOf(made.data(), 3);
+      for (int a = 0; a < 3; ++a)
+      {
+        grown.lo[a] -= tolerance;
+        grown.hi[a] += tolerance;
+      }
+      std::vector<SourceTriangle> nearOnes;
+      for (std::size_t t = 0; t < sheet.size(); ++t)
+      {
+        if (all.Bounds(t).Overlaps(grown))
+        {
+          nearOnes.push_back(sheet[t]);
+        }
+      }
+      searchedMany += nearOnes.size() >= tpc::HausdorffTargets::HierarchyFrom ? 1 : 0;
+      const tpc::PolygonSet near = AsPolygons(nearOnes);
+      for (const std::size_t budget : { std::size_t{ 64 }, std::size_t{ 4096 } })
+      {
+        const tpc::HausdorffEstimate fromNear = tpc::OneSidedHausdorff({ made }, near, giveUp, giveUp, budget);
+        const tpc::HausdorffEstimate fromAll = tpc::OneSidedHausdorff({ made }, prepared, giveUp, giveUp, budget);
+        const std::string what = "triangle " + std::to_string(k) + ", tolerance " + std::to_string(tolerance) +
+          ", budget " + std::to_string(budget);
+        EXPECT_EQ(fromAll.Upper <= giveUp, fromNear.Upper <= giveUp) << what;
+        if (fromNear.Upper <= giveUp)
+        {
+          // (Equal but for an ulp a box test may keep or drop with the
+          // order of the visits: PolygonHausdorff.h.)
+          EXPECT_NEAR(fromAll.Upper, fromNear.Upper, 1e-12) << what;
+          ++accepted;
+        }
+        else
+        {
+          ++refused;
+        }
+      }
+    }
+  }
+  EXPECT_GT(accepted, 20u);
+  EXPECT_GT(refused, 20u);
+  EXPECT_GT(searchedMany, 20u);
 }
 
 TEST(MeshCellError, ChordDeviationIsTheTraceFarthestFromTheChord)
