@@ -230,10 +230,6 @@ double OffsetDistance(const PolygonSet& polygons, const Vec3& p, std::uint32_t t
 
 } // namespace
 
-/// (HausdorffTargets::HierarchyFrom: from 16 to 64 targets within 0.6 % of
-/// armadillo's instructions at 1/64.)
-constexpr std::size_t HierarchyFrom = HausdorffTargets::HierarchyFrom;
-
 /// A bounding volume hierarchy over the targets' boxes, for branch and
 /// bounds with many targets (a large cell's S_C against its fan: a hundred
 /// polygons and more). The pieces of the fan's triangles are searched in it
@@ -741,7 +737,7 @@ void HausdorffTargets::Prepare(const PolygonSet& polygons, const std::vector<dou
   {
     this->Boxes[t] = polygons.Bounds(t);
   }
-  this->HierarchyBuilt = hierarchy && polygons.size() >= HierarchyFrom;
+  this->HierarchyBuilt = hierarchy && polygons.size() >= HausdorffTargets::HierarchyFrom;
   if (this->HierarchyBuilt)
   {
     if (!this->Hierarchy)

@@ -117,7 +117,7 @@ public:
   HausdorffTargets& operator=(const HausdorffTargets&) = delete;
 
   /// The least number of targets searched in a hierarchy (fewer are
-  /// scanned).
+  /// scanned; from 16 to 64, armadillo's instructions at 1/64 within 0.6 %).
   static constexpr std::size_t HierarchyFrom = 32;
 
   /// Prepares `polygons`, with offsets `offsets` (header: Offsets; null for

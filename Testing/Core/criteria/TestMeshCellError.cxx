@@ -8,6 +8,7 @@
 // takes far fewer triangles than before.
 #include "CoreContour.h"
 #include "ExactCellCriterion.h"
+#include "LiveSurface.h"
 #include "MeshBuilders.h"
 #include "MeshCellError.h"
 #include "PolygonHausdorff.h"
@@ -827,12 +828,8 @@ TEST(PolygonHausdorff, AllTargetsBoundAsTheNearOnesWhereTheSearchStopsAtGiveUp)
     for (const double tolerance : { 0.02, 0.04, 0.08 })
     {
       const double giveUp = tolerance * (1 - 1e-6);
-      Box3 grown = tpc::BoundsOf(made.data(), 3);
-      for (int a = 0; a < 3; ++a)
-      {
-        grown.lo[a] -= tolerance;
-        grown.hi[a] += tolerance;
-      }
+      // (As AgainstMesh grows it.)
+      const Box3 grown = tpc::GrownBy(tpc::BoundsOf(made.data(), 3), tolerance);
       std::vector<SourceTriangle> nearOnes;
       for (std::size_t t = 0; t < sheet.size(); ++t)
       {
