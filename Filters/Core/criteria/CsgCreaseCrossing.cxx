@@ -1,16 +1,27 @@
 #include "CsgCreaseCrossing.h"
 
+#include "MeshSolid.h"
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace tpc
 {
 namespace
 {
-/// The two quadric leaves of `expression` pruned to the tile, if that is
-/// what it has.
-std::optional<std::pair<CsgLeaf, CsgLeaf>> TwoQuadricLeaves(
+/// The two leaves of `expression` pruned to the tile - quadrics, or meshes
+/// with the triangles that may meet it - if that is what it has, with the
+/// pruned expression that owns the meshes' triangle lists.
+struct TwoLeaves
+{
+  CsgExpressionPtr Owner;
+  std::pair<CsgLeaf, CsgLeaf> Leaves;
+};
+
+std::optional<TwoLeaves> TwoLeavesOnTile(
   const CsgExpressionPtr& expression, const PrimitiveSet& primitives, const Box3& tileBox)
 {
   const CsgExpression::Pruned pruned = CsgExpression::Prune(expression, tileBox, primitives);
@@ -19,12 +30,18 @@ std::optional<std::pair<CsgLeaf, CsgLeaf>> TwoQuadricLeaves(
     return std::nullopt;
   }
   const std::vector<CsgLeaf> leaves = pruned.Expression->Leaves();
-  if (leaves.size() != 2 || leaves[0].Kind != PrimitiveKind::Quadric || leaves[1].Kind != PrimitiveKind::Quadric ||
-    leaves[0].Primitive == leaves[1].Primitive)
+  if (leaves.size() != 2 || (leaves[0].Kind == leaves[1].Kind && leaves[0].Primitive == leaves[1].Primitive))
   {
     return std::nullopt;
   }
-  return std::make_pair(leaves[0], leaves[1]);
+  for (const CsgLeaf& leaf : leaves)
+  {
+    if (leaf.Kind == PrimitiveKind::Mesh && !leaf.Triangles)
+    {
+      return std::nullopt;
+    }
+  }
+  return TwoLeaves{ pruned.Expression, { leaves[0], leaves[1] } };
 }
 
 /// Newton's iterations at most; the step it converges at, relative to the
@@ -85,6 +102,188 @@ std::optional<Vec3> CrossingOfZeroCurvesFrom(const std::pair<CsgLeaf, CsgLeaf>& 
   return std::nullopt;
 }
 
+/// A leaf's trace on the plane x_axis = c near a tile: for a mesh, the
+/// segments its listed triangles cut from the plane (in the plane's (U, V)
+/// coordinates, with the direction of the trace); false where a listed
+/// triangle touches the plane at a vertex or lies in it (the crossing of the
+/// traces would not be one point of two segments: the tile is drawn
+/// straight).
+struct TraceSegment
+{
+  double A[2], B[2];
+};
+
+bool MeshTrace(const CsgLeaf& leaf, const PrimitiveSet& primitives, int axis, double c, std::vector<TraceSegment>& out)
+{
+  const int U = (axis + 1) % 3, V = (axis + 2) % 3;
+  const MeshSolid& mesh = primitives.Meshes[leaf.Primitive];
+  for (const std::uint32_t t : *leaf.Triangles)
+  {
+    const auto& corners = mesh.Triangles()[t];
+    const Vec3* p[3] = { &mesh.Points()[corners[0]], &mesh.Points()[corners[1]], &mesh.Points()[corners[2]] };
+    int above = 0, below = 0;
+    for (const Vec3* q : p)
+    {
+      above += (*q)[axis] > c ? 1 : 0;
+      below += (*q)[axis] < c ? 1 : 0;
+    }
+    if (above == 3 || below == 3)
+    {
+      continue;
+    }
+    if (above + below != 3)
+    {
+      return false;
+    }
+    TraceSegment segment;
+    int found = 0;
+    for (int k = 0; k < 3; ++k)
+    {
+      const Vec3 &a = *p[k], &b = *p[(k + 1) % 3];
+      if ((a[axis] > c) != (b[axis] > c))
+      {
+        const double s = (c - a[axis]) / (b[axis] - a[axis]);
+        double* end = found++ == 0 ? segment.A : segment.B;
+        end[0] = a[U] + s * (b[U] - a[U]);
+        end[1] = a[V] + s * (b[V] - a[V]);
+      }
+    }
+    out.push_back(segment);
+  }
+  return true;
+}
+
+/// Where segment `m` crosses the quadric leaf's zero curve on the plane
+/// x_axis = c: the quadric along the segment is a quadratic in its
+/// parameter, given by its values at the ends and the middle; its roots
+/// strictly inside the segment, appended to `points` (U, V).
+void CrossingsWithQuadric(const TraceSegment& m, const CsgLeaf& leaf, const PrimitiveSet& primitives, int axis,
+  double c, std::vector<std::array<double, 2>>& points)
+{
+  const int U = (axis + 1) % 3, V = (axis + 2) % 3;
+  const auto at = [&](double s) {
+    Vec3 x;
+    x[axis] = c;
+    x[U] = m.A[0] + s * (m.B[0] - m.A[0]);
+    x[V] = m.A[1] + s * (m.B[1] - m.A[1]);
+    return x;
+  };
+  const double f0 = LeafValue(leaf, primitives, at(0.0)), fh = LeafValue(leaf, primitives, at(0.5)),
+               f1 = LeafValue(leaf, primitives, at(1.0));
+  // f(s) = f0 + b s + a s^2 through the three values.
+  const double a = 2.0 * (f1 - 2.0 * fh + f0), b = f1 - f0 - a;
+  std::vector<double> roots;
+  if (std::fabs(a) <= 1e-12 * (std::fabs(b) + std::fabs(f0)))
+  {
+    if (b != 0.0)
+    {
+      roots.push_back(-f0 / b);
+    }
+  }
+  else
+  {
+    const double disc = b * b - 4.0 * a * f0;
+    if (disc >= 0.0)
+    {
+      const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+      roots.push_back(q / a);
+      if (q != 0.0)
+      {
+        roots.push_back(f0 / q);
+      }
+    }
+  }
+  for (const double s : roots)
+  {
+    if (s > 0.0 && s < 1.0)
+    {
+      const Vec3 x = at(s);
+      points.push_back({ x[U], x[V] });
+    }
+  }
+}
+
+/// Where two mesh traces' segments cross (strictly inside both), appended
+/// to `points`.
+void CrossingsOfSegments(const TraceSegment& p, const TraceSegment& q, std::vector<std::array<double, 2>>& points)
+{
+  const double d1[2] = { p.B[0] - p.A[0], p.B[1] - p.A[1] }, d2[2] = { q.B[0] - q.A[0], q.B[1] - q.A[1] };
+  const double det = d1[0] * d2[1] - d1[1] * d2[0];
+  if (!(std::fabs(det) > 0.0))
+  {
+    return;
+  }
+  const double w[2] = { q.A[0] - p.A[0], q.A[1] - p.A[1] };
+  const double s = (w[0] * d2[1] - w[1] * d2[0]) / det, t = (w[0] * d1[1] - w[1] * d1[0]) / det;
+  if (s > 0.0 && s < 1.0 && t > 0.0 && t < 1.0)
+  {
+    points.push_back({ p.A[0] + s * d1[0], p.A[1] + s * d1[1] });
+  }
+}
+
+/// The one point where the traces of two leaves, at least one a mesh,
+/// cross inside the tile, at least SideMargin of its width from its sides,
+/// the traces crossing there at an angle whose sine is at least
+/// Transversal; nothing where they cross there more than once or not at
+/// all (the tile is then drawn straight).
+std::optional<Vec3> CrossingOfTraces(const std::pair<CsgLeaf, CsgLeaf>& leaves, const PrimitiveSet& primitives,
+  int axis, const Box3& tileBox)
+{
+  const int U = (axis + 1) % 3, V = (axis + 2) % 3;
+  const double c = tileBox.lo[axis];
+  const CsgLeaf& mesh = leaves.first.Kind == PrimitiveKind::Mesh ? leaves.first : leaves.second;
+  const CsgLeaf& other = leaves.first.Kind == PrimitiveKind::Mesh ? leaves.second : leaves.first;
+  std::vector<TraceSegment> first, second;
+  if (!MeshTrace(mesh, primitives, axis, c, first) ||
+    (other.Kind == PrimitiveKind::Mesh && !MeshTrace(other, primitives, axis, c, second)))
+  {
+    return std::nullopt;
+  }
+  std::vector<std::array<double, 2>> points;
+  for (const TraceSegment& m : first)
+  {
+    if (other.Kind == PrimitiveKind::Mesh)
+    {
+      for (const TraceSegment& n : second)
+      {
+        CrossingsOfSegments(m, n, points);
+      }
+    }
+    else
+    {
+      CrossingsWithQuadric(m, other, primitives, axis, c, points);
+    }
+  }
+  const double width = tileBox.Width(U), height = tileBox.Width(V);
+  std::optional<Vec3> found;
+  int inside = 0;
+  for (const auto& q : points)
+  {
+    if (q[0] > tileBox.lo[U] - SideMargin * width && q[0] < tileBox.hi[U] + SideMargin * width &&
+      q[1] > tileBox.lo[V] - SideMargin * height && q[1] < tileBox.hi[V] + SideMargin * height)
+    {
+      ++inside; // (near or in the tile: one more crossing the trace may bend at)
+      Vec3 x;
+      x[axis] = c;
+      x[U] = q[0];
+      x[V] = q[1];
+      found = x;
+    }
+  }
+  if (inside != 1 || !(found->x[U] > tileBox.lo[U] + SideMargin * width &&
+                        found->x[U] < tileBox.hi[U] - SideMargin * width &&
+                        found->x[V] > tileBox.lo[V] + SideMargin * height &&
+                        found->x[V] < tileBox.hi[V] - SideMargin * height))
+  {
+    return std::nullopt;
+  }
+  // Transversal: the two surfaces' normals projected on the plane.
+  const Vec3 df = LeafGradient(leaves.first, primitives, *found), dg = LeafGradient(leaves.second, primitives, *found);
+  const double det = df[U] * dg[V] - df[V] * dg[U];
+  const double sine = std::fabs(det) / (std::hypot(df[U], df[V]) * std::hypot(dg[U], dg[V]));
+  return sine >= Transversal ? found : std::nullopt;
+}
+
 /// CrossingOfZeroCurvesFrom the tile's centre, else from its corners and
 /// the middles of its sides, in that order: two conics on the tile's plane
 /// may cross twice, and from the centre Newton's steps can settle on the
@@ -94,6 +293,10 @@ std::optional<Vec3> CrossingOfZeroCurvesFrom(const std::pair<CsgLeaf, CsgLeaf>& 
 std::optional<Vec3> CrossingOfZeroCurves(const std::pair<CsgLeaf, CsgLeaf>& leaves, const PrimitiveSet& primitives,
   int axis, const Box3& tileBox)
 {
+  if (leaves.first.Kind == PrimitiveKind::Mesh || leaves.second.Kind == PrimitiveKind::Mesh)
+  {
+    return CrossingOfTraces(leaves, primitives, axis, tileBox);
+  }
   const int U = (axis + 1) % 3, V = (axis + 2) % 3;
   for (const double u : { 0.5, 0.0, 1.0 })
   {
@@ -126,8 +329,8 @@ std::optional<Vec3> CsgCreaseOnTile(const CsgExpressionPtr& expression, const Pr
   const RootGrid& grid, int axis, LatticeIndex plane, const FaceTile& tile)
 {
   const Box3 box = TileBox(grid, axis, plane, tile);
-  const auto leaves = TwoQuadricLeaves(expression, primitives, box);
-  return leaves ? CrossingOfZeroCurves(*leaves, primitives, axis, box) : std::nullopt;
+  const auto two = TwoLeavesOnTile(expression, primitives, box);
+  return two ? CrossingOfZeroCurves(two->Leaves, primitives, axis, box) : std::nullopt;
 }
 
 namespace
@@ -158,14 +361,14 @@ std::optional<std::pair<Vec3, Vec3>> CsgCreaseVertex(
 {
   int axis = 0;
   const Box3 box = CreaseTileBox(x, grid, axis);
-  const auto leaves = TwoQuadricLeaves(expression, primitives, box);
-  const auto position = leaves ? CrossingOfZeroCurves(*leaves, primitives, axis, box) : std::nullopt;
+  const auto two = TwoLeavesOnTile(expression, primitives, box);
+  const auto position = two ? CrossingOfZeroCurves(two->Leaves, primitives, axis, box) : std::nullopt;
   if (!position)
   {
     return std::nullopt; // (the tile was decided otherwise: see the caller)
   }
-  const Vec3 normal = Normalized(Normalized(LeafGradient(leaves->first, primitives, *position)) +
-    Normalized(LeafGradient(leaves->second, primitives, *position)));
+  const Vec3 normal = Normalized(Normalized(LeafGradient(two->Leaves.first, primitives, *position)) +
+    Normalized(LeafGradient(two->Leaves.second, primitives, *position)));
   return std::make_pair(*position, normal);
 }
 

@@ -19,6 +19,30 @@
 // are left), so the trace of the surface on the tile - one arc from a to b
 // where the tile holds one chord - runs through it.
 //
+// Meshes (a Boolean of meshes, or of a mesh and a quadric: where the two
+// solids' surfaces meet). A mesh leaf's trace on the tile's plane is the
+// set of segments its listed triangles (those that may meet the tile) cut
+// from the plane; x is where the two traces cross - a segment of one mesh's
+// against a segment of the other's, or a mesh's segment against the
+// quadric's zero curve, along which the quadric is a quadratic in the
+// segment's parameter (its values at the ends and the middle give it) - when
+// exactly one such crossing lies in the tile grown by the millionth, that
+// one lies the millionth inside it, and the two surfaces cross there at a
+// sine of at least Transversal (their normals projected on the plane). x is
+// then on both leaves, so on the surface, as above. A listed triangle that
+// touches the plane at a vertex or lies in it, or a second crossing, and the
+// tile is drawn straight, as before. Cells whose expression holds a mesh and
+// another leaf are never accepted larger than the tolerance (only one mesh's
+// or quadrics' cells are certified larger: MeshCellError.h,
+// QuadricCellError.h), so each such crease cell is bounded by its size, and
+// the apex goes to the middle of the loop's two crease vertices
+// (LoopTriangulation.h, ApexOnCrease): the output's crease runs from crease
+// vertex to apex to crease vertex along the chord of the exact crease
+// through the cell. A tilted box minus a 96-sided prism, as two meshes
+// (`Filter.Creases.MeshBooleanCreasesAreFollowedByOutputEdges`): the
+// output's 30-degree edges on the rims 0.24 -> 1.01 of their length at
+// 1/64, and beside them (a saw-tooth) 2.86 -> 0.22.
+//
 // Why the output stays what the guarantee says. Embedded: a and b lie on the
 // tile's boundary and x strictly inside it, so the segments a -> x -> b lie
 // in the convex tile and meet its boundary at a and b only - the argument of
@@ -30,9 +54,11 @@
 // cell's box need not decide it over the tile, so the two could keep
 // different leaves), which is also the cell that places x (CrossingVertices.h);
 // x is named by its tile and placed by recomputing it, so both loops hold one
-// vertex. Hausdorff: a crease cell no larger than the tolerance is bounded by
-// its size; a larger one is a crease fan, certified (QuadricCellError.h). The
-// result is checked exactly anyway (SurfaceEmbedding.h).
+// vertex (a mesh leaf's trace is recomputed from the same listed triangles,
+// those of the same pruned expression). Hausdorff: a crease cell no larger
+// than the tolerance is bounded by its size; a larger one (two quadrics) is
+// a crease fan, certified (QuadricCellError.h). The result is checked exactly
+// anyway (SurfaceEmbedding.h).
 #pragma once
 
 #include "BoundaryLoops.h"

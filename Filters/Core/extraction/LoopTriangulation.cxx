@@ -223,10 +223,13 @@ std::optional<Vec3> ApexOnSurface(const std::vector<LoopPoint>& loop, const Box3
 /// CsgCreaseCrossing.h), an apex on their crease: projected from the feature
 /// point, or else from the middle of the loop's two points on the crease
 /// (the crease vertices where it enters and leaves the cell); where three
-/// are (a corner), at their common point. Kept if it lands inside the
+/// are (a corner), at their common point. Where two leaves are and one is a
+/// mesh, the middle of those two points (no projection: a mesh's crease
+/// with another surface is a chain of pieces; the cell is no larger than the
+/// tolerance, CsgCreaseCrossing.h). Kept if it lands inside the
 /// region (but for 1/1024 of its width) with the fan consistent. The output's
 /// crease then runs from crease vertex to apex to crease vertex, on the
-/// crease.
+/// crease (or, with a mesh, along its chord through the cell).
 std::optional<Vec3> ApexOnCrease(const std::vector<LoopPoint>& loop, const Box3& region,
   const CsgExpression& expression, const PrimitiveSet& primitives, const Vec3& feature)
 {
@@ -240,7 +243,7 @@ std::optional<Vec3> ApexOnCrease(const std::vector<LoopPoint>& loop, const Box3&
     const std::optional<Vec3> corner = OntoCorner(leaves.data(), primitives, feature, scale);
     return corner && StrictlyInside(*corner, inner) && FanIsConsistent(loop, *corner) ? corner : std::nullopt;
   }
-  if (!quadrics || leaves.size() != 2)
+  if (leaves.size() != 2)
   {
     return std::nullopt;
   }
@@ -254,6 +257,14 @@ std::optional<Vec3> ApexOnCrease(const std::vector<LoopPoint>& loop, const Box3&
     {
       onBoth.push_back(p.Position);
     }
+  }
+  if (!quadrics)
+  {
+    // (The middle of the two crease vertices, above.)
+    const Vec3 middle = onBoth.size() == 2 ? (onBoth[0] + onBoth[1]) * 0.5 : Vec3();
+    return onBoth.size() == 2 && StrictlyInside(middle, inner) && FanIsConsistent(loop, middle)
+      ? std::optional<Vec3>(middle)
+      : std::nullopt;
   }
   std::vector<Vec3> starts{ feature };
   if (onBoth.size() == 2)

@@ -1,8 +1,10 @@
 // CSG crease tiles (CsgCreaseCrossing.h): the crossing of two primitives'
 // crease with a face tile is found where it is, named by its tile and placed
 // where it was found, and refused where the tile holds no crease of two
-// leaves or the crossing is within 1 % of a side.
+// leaves or the crossing is within 1 % of a side; with quadric leaves, and
+// with mesh leaves (a Boolean of meshes, or of a mesh and a quadric).
 #include "CsgCreaseCrossing.h"
+#include "MeshBuilders.h"
 #include "SceneBuilder.h"
 
 #include <gtest/gtest.h>
@@ -45,6 +47,41 @@ FaceTile TileAround(const tpc::RootGrid& grid, const Vec3& p, LatticeIndex size)
   t.V1 = t.V0 + size;
   return t;
 }
+
+/// In a sweep across the wedge's crease, every tile of a face between two
+/// cells of level 6 is a crease tile for the scene pruned to either cell's
+/// box or for neither, at the same point; the number of crease tiles.
+int CreaseTilesDecidedAlike(const tpc::ImplicitScene& scene, const tpc::RootGrid& grid)
+{
+  int creaseTiles = 0;
+  for (LatticeIndex plane = 400; plane < 700; plane += 16)
+  {
+    for (LatticeIndex i = 0; i < 1024; i += 16)
+    {
+      for (LatticeIndex j = 0; j < 1024; j += 16)
+      {
+        const FaceTile tile{ i, j, i + 16, j + 16 };
+        const LatticeIndex above[3] = { i / 16, j / 16, plane / 16 }, below[3] = { i / 16, j / 16, plane / 16 - 1 };
+        const auto upper = tpc::CsgExpression::Prune(scene.Expression, grid.CellBox(6, above), scene.Primitives);
+        const auto lower = tpc::CsgExpression::Prune(scene.Expression, grid.CellBox(6, below), scene.Primitives);
+        if (upper.Sign != tpc::RegionSign::Mixed || lower.Sign != tpc::RegionSign::Mixed)
+        {
+          continue;
+        }
+        const auto a = tpc::CsgCreaseOnTile(upper.Expression, scene.Primitives, grid, 2, plane, tile);
+        const auto b = tpc::CsgCreaseOnTile(lower.Expression, scene.Primitives, grid, 2, plane, tile);
+        EXPECT_EQ(a.has_value(), b.has_value()) << plane << " " << i << " " << j;
+        if (a && b)
+        {
+          ++creaseTiles;
+          EXPECT_EQ((*a)[0], (*b)[0]);
+          EXPECT_EQ((*a)[1], (*b)[1]);
+        }
+      }
+    }
+  }
+  return creaseTiles;
+}
 } // namespace
 
 TEST(CsgCreaseCrossing, TwoPlanesCreaseIsFoundWhereItCrossesTheTile)
@@ -86,35 +123,7 @@ TEST(CsgCreaseCrossing, BothCellsSharingATileDecideAlike)
   // prunings agreeing - an enclosure deciding a leaf over one box need not
   // decide it over the tile - and decides with the first cell's expression.)
   const Wedge w;
-  int creaseTiles = 0;
-  for (LatticeIndex plane = 400; plane < 700; plane += 16)
-  {
-    for (LatticeIndex i = 0; i < 1024; i += 16)
-    {
-      for (LatticeIndex j = 0; j < 1024; j += 16)
-      {
-        const FaceTile tile{ i, j, i + 16, j + 16 };
-        const LatticeIndex above[3] = { i / 16, j / 16, plane / 16 }, below[3] = { i / 16, j / 16, plane / 16 - 1 };
-        const auto upper =
-          tpc::CsgExpression::Prune(w.B.Scene.Expression, w.Grid.CellBox(6, above), w.B.Scene.Primitives);
-        const auto lower =
-          tpc::CsgExpression::Prune(w.B.Scene.Expression, w.Grid.CellBox(6, below), w.B.Scene.Primitives);
-        if (upper.Sign != tpc::RegionSign::Mixed || lower.Sign != tpc::RegionSign::Mixed)
-        {
-          continue;
-        }
-        const auto a = tpc::CsgCreaseOnTile(upper.Expression, w.B.Scene.Primitives, w.Grid, 2, plane, tile);
-        const auto b = tpc::CsgCreaseOnTile(lower.Expression, w.B.Scene.Primitives, w.Grid, 2, plane, tile);
-        ASSERT_EQ(a.has_value(), b.has_value()) << plane << " " << i << " " << j;
-        if (a)
-        {
-          ++creaseTiles;
-          EXPECT_EQ((*a)[0], (*b)[0]);
-          EXPECT_EQ((*a)[1], (*b)[1]);
-        }
-      }
-    }
-  }
+  const int creaseTiles = CreaseTilesDecidedAlike(w.B.Scene, w.Grid);
   EXPECT_GT(creaseTiles, 10);
 }
 
@@ -161,4 +170,71 @@ TEST(CsgCreaseCrossing, TilesWithoutACreaseOfTwoLeavesAreRefused)
   EXPECT_TRUE(tpc::CsgCreaseOnTile(corner.Scene.Expression, corner.Scene.Primitives, w.Grid, 2,
     static_cast<LatticeIndex>((0.2 + 1.0) / spacing) - 40, atCorner)
                 .has_value());
+}
+
+namespace
+{
+/// A tetrahedron with a face of side 10 on the plane through `p0` with unit
+/// outward normal `n` (so the solid is the half-space n.(p - p0) <= 0 within
+/// 5 of p0), each face oriented away from its centroid.
+tpc::MeshSolid HalfSpaceTetrahedron(const Vec3& p0, const Vec3& n)
+{
+  const Vec3 u = tpc::Normalized(tpc::Cross(n, std::fabs(n[0]) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0)));
+  const Vec3 v = tpc::Cross(n, u);
+  std::vector<Vec3> p = { p0 + u * 6.0, p0 + (u * -0.5 + v * (0.5 * std::sqrt(3.0))) * 6.0,
+    p0 + (u * -0.5 - v * (0.5 * std::sqrt(3.0))) * 6.0, p0 - n * 5.0 };
+  const Vec3 centroid = (p[0] + p[1] + p[2] + p[3]) * 0.25;
+  tpctest::Triangles t = { { 0, 1, 2 }, { 0, 1, 3 }, { 1, 2, 3 }, { 2, 0, 3 } };
+  for (auto& f : t)
+  {
+    const Vec3 normal = tpc::Cross(p[f[1]] - p[f[0]], p[f[2]] - p[f[0]]);
+    if (tpc::Dot(normal, p[f[0]] - centroid) < 0.0)
+    {
+      std::swap(f[1], f[2]);
+    }
+  }
+  return tpc::MeshSolid(p, t);
+}
+} // namespace
+
+TEST(CsgCreaseCrossing, MeshLeavesCreaseIsFoundWhereItCrossesTheTile)
+{
+  // The wedge again, each half-space a tetrahedron's face (two meshes), or
+  // one of them the plane (a mesh and a quadric): the crease is where the
+  // two leaves' traces on the tile cross (CsgCreaseCrossing.cxx,
+  // CrossingOfTraces), at the same point; a tile beside it is refused, and
+  // the cells on both sides of a tile decide alike.
+  const Wedge w;
+  const Vec3 p1{ 0.1, 0.0, 0.0 }, p2{ 0.0, -0.05, 0.0 };
+  for (const bool secondIsMesh : { true, false })
+  {
+    SceneBuilder b;
+    const auto first = b.Mesh(HalfSpaceTetrahedron(p1, tpc::Normalized(w.N1)));
+    const auto second =
+      secondIsMesh ? b.Mesh(HalfSpaceTetrahedron(p2, tpc::Normalized(w.N2))) : b.Add(tpc::Quadric::Plane(p2, w.N2));
+    b.Finish(SceneBuilder::Intersection({ first, second }));
+    const LatticeIndex plane = 600;
+    const Vec3 expected = w.CreaseAt(w.Grid.Coordinate(2, plane));
+    const FaceTile tile = TileAround(w.Grid, expected, 16);
+    const auto x = tpc::CsgCreaseOnTile(b.Scene.Expression, b.Scene.Primitives, w.Grid, 2, plane, tile);
+    ASSERT_TRUE(x.has_value()) << secondIsMesh;
+    for (int a = 0; a < 3; ++a)
+    {
+      EXPECT_NEAR((*x)[a], expected[a], 1e-13) << secondIsMesh;
+    }
+    const tpc::Crossing c = tpc::CsgCreaseCrossing(2, plane, tile);
+    const auto vertex = tpc::CsgCreaseVertex(c, b.Scene.Expression, b.Scene.Primitives, w.Grid);
+    ASSERT_TRUE(vertex.has_value());
+    EXPECT_EQ(vertex->first[0], (*x)[0]);
+    EXPECT_EQ(vertex->first[1], (*x)[1]);
+    const Vec3 bisector = tpc::Normalized(tpc::Normalized(w.N1) + tpc::Normalized(w.N2));
+    EXPECT_NEAR(tpc::Dot(vertex->second, bisector), 1.0, 1e-12) << secondIsMesh;
+    FaceTile beside = tile;
+    beside.U0 += 32;
+    beside.U1 += 32;
+    EXPECT_FALSE(tpc::CsgCreaseOnTile(b.Scene.Expression, b.Scene.Primitives, w.Grid, 2, plane, beside));
+    // Both cells sharing a tile decide alike, in a sweep across the crease.
+    const int creaseTiles = CreaseTilesDecidedAlike(b.Scene, w.Grid);
+    EXPECT_GT(creaseTiles, 10) << secondIsMesh;
+  }
 }
