@@ -47,7 +47,8 @@ enum class CrossingKind : std::uint8_t
   MeshEdge = 3,
   /// Exact cells: vertex Key of mesh Tile, inside the cell.
   MeshVertex = 4,
-  /// Where two quadric leaves' crease crosses a face tile (CsgCreaseCrossing.h):
+  /// Where two leaves' crease (quadrics, or a mesh with a mesh or a quadric)
+  /// crosses a face tile (CsgCreaseCrossing.h):
   /// Tile names the tile as for a bend, Key and Partner its far corner's
   /// coordinates along the plane's two axes.
   CsgCrease = 5
@@ -128,7 +129,7 @@ struct CellBoundary
   std::vector<std::pair<Crossing, Crossing>> ExactSegments;
   /// Per tile of face f (or empty): the crease that the tile's chord is
   /// drawn through, where it has one: a mesh's sharpest edge on it
-  /// (CreaseCrossing.h) or two quadric leaves' crease (CsgCreaseCrossing.h).
+  /// (CreaseCrossing.h) or two leaves' crease (CsgCreaseCrossing.h).
   std::vector<std::optional<CreaseTile>> Creases[6];
 };
 

@@ -17,7 +17,7 @@ namespace
 /// pruned expression that owns the meshes' triangle lists.
 struct TwoLeaves
 {
-  CsgExpressionPtr Owner;
+  CsgExpressionPtr Owner; ///< keeps the mesh leaves' triangle lists alive
   std::pair<CsgLeaf, CsgLeaf> Leaves;
 };
 
@@ -62,6 +62,23 @@ constexpr double SideMargin = 1e-6;
 /// nearly tangent, x is ill-conditioned and the crease too shallow to miss).
 constexpr double Transversal = 0.05;
 
+/// Whether the point's (U, V) coordinates lie inside `tileBox` by at least
+/// `margin` of its width along each (a negative margin: within the box
+/// grown by that much).
+bool InsideTile(const Vec3& x, int U, int V, const Box3& tileBox, double margin)
+{
+  const double width = tileBox.Width(U), height = tileBox.Width(V);
+  return x[U] > tileBox.lo[U] + margin * width && x[U] < tileBox.hi[U] - margin * width &&
+    x[V] > tileBox.lo[V] + margin * height && x[V] < tileBox.hi[V] - margin * height;
+}
+
+/// The sine of the angle between the two leaves' zero curves on the plane
+/// at x: of their gradients projected on it (NaN where one vanishes).
+double CrossingSine(const Vec3& df, const Vec3& dg, int U, int V)
+{
+  return std::fabs(df[U] * dg[V] - df[V] * dg[U]) / (std::hypot(df[U], df[V]) * std::hypot(dg[U], dg[V]));
+}
+
 /// x solving both leaves' equations on the plane x_axis = c, from `start`;
 /// nothing when the iteration does not settle inside the tile with the
 /// curves crossing transversally.
@@ -92,27 +109,29 @@ std::optional<Vec3> CrossingOfZeroCurvesFrom(const std::pair<CsgLeaf, CsgLeaf>& 
     if (std::fabs(du) <= std::max(Converged * width, rounding) &&
       std::fabs(dv) <= std::max(Converged * height, rounding))
     {
-      const double sine = std::fabs(det) /
-        (std::hypot(df[U], df[V]) * std::hypot(dg[U], dg[V]));
-      const bool inside = x[U] > tileBox.lo[U] + SideMargin * width && x[U] < tileBox.hi[U] - SideMargin * width &&
-        x[V] > tileBox.lo[V] + SideMargin * height && x[V] < tileBox.hi[V] - SideMargin * height;
-      return sine >= Transversal && inside ? std::optional<Vec3>(x) : std::nullopt;
+      return CrossingSine(df, dg, U, V) >= Transversal && InsideTile(x, U, V, tileBox, SideMargin)
+        ? std::optional<Vec3>(x)
+        : std::nullopt;
     }
   }
   return std::nullopt;
 }
 
-/// A leaf's trace on the plane x_axis = c near a tile: for a mesh, the
-/// segments its listed triangles cut from the plane (in the plane's (U, V)
-/// coordinates, with the direction of the trace); false where a listed
-/// triangle touches the plane at a vertex or lies in it (the crossing of the
-/// traces would not be one point of two segments: the tile is drawn
-/// straight).
+/// A piece of a mesh's trace on a plane: its ends' (U, V) coordinates.
 struct TraceSegment
 {
   double A[2], B[2];
 };
 
+/// A mesh leaf's trace on the plane x_axis = c near a tile: the segments its
+/// listed triangles cut from the plane, each edge's crossing interpolated
+/// from its lower-numbered vertex, so that the two triangles sharing the edge
+/// put it at the same point (the trace is a chain; a crossing of another
+/// trace at one of its vertices is then seen in both segments or in
+/// neither, never in one of them by rounding). False where a listed
+/// triangle touches the plane at a vertex or lies in it (the crossing of the
+/// traces would not be one point of two segments: the tile is drawn
+/// straight).
 bool MeshTrace(const CsgLeaf& leaf, const PrimitiveSet& primitives, int axis, double c, std::vector<TraceSegment>& out)
 {
   const int U = (axis + 1) % 3, V = (axis + 2) % 3;
@@ -139,7 +158,8 @@ bool MeshTrace(const CsgLeaf& leaf, const PrimitiveSet& primitives, int axis, do
     int found = 0;
     for (int k = 0; k < 3; ++k)
     {
-      const Vec3 &a = *p[k], &b = *p[(k + 1) % 3];
+      const bool lowerFirst = corners[k] < corners[(k + 1) % 3];
+      const Vec3 &a = lowerFirst ? *p[k] : *p[(k + 1) % 3], &b = lowerFirst ? *p[(k + 1) % 3] : *p[k];
       if ((a[axis] > c) != (b[axis] > c))
       {
         const double s = (c - a[axis]) / (b[axis] - a[axis]);
@@ -193,8 +213,19 @@ void CrossingsWithQuadric(const TraceSegment& m, const CsgLeaf& leaf, const Prim
       }
     }
   }
-  for (const double s : roots)
+  for (double s : roots)
   {
+    // (Two Newton steps on the quadric itself: the three samples span the
+    // whole segment, which may be far longer than the tile, and the fit's
+    // coefficients lose digits to cancellation there.)
+    Vec3 direction;
+    direction[U] = m.B[0] - m.A[0];
+    direction[V] = m.B[1] - m.A[1];
+    for (int step = 0; step < 2 && s > 0.0 && s < 1.0; ++step)
+    {
+      const double slope = Dot(LeafGradient(leaf, primitives, at(s)), direction);
+      s = slope != 0.0 ? s - LeafValue(leaf, primitives, at(s)) / slope : s;
+    }
     if (s > 0.0 && s < 1.0)
     {
       const Vec3 x = at(s);
@@ -254,34 +285,29 @@ std::optional<Vec3> CrossingOfTraces(const std::pair<CsgLeaf, CsgLeaf>& leaves, 
       CrossingsWithQuadric(m, other, primitives, axis, c, points);
     }
   }
-  const double width = tileBox.Width(U), height = tileBox.Width(V);
   std::optional<Vec3> found;
-  int inside = 0;
+  int near = 0;
   for (const auto& q : points)
   {
-    if (q[0] > tileBox.lo[U] - SideMargin * width && q[0] < tileBox.hi[U] + SideMargin * width &&
-      q[1] > tileBox.lo[V] - SideMargin * height && q[1] < tileBox.hi[V] + SideMargin * height)
+    Vec3 x;
+    x[axis] = c;
+    x[U] = q[0];
+    x[V] = q[1];
+    if (InsideTile(x, U, V, tileBox, -SideMargin))
     {
-      ++inside; // (near or in the tile: one more crossing the trace may bend at)
-      Vec3 x;
-      x[axis] = c;
-      x[U] = q[0];
-      x[V] = q[1];
+      ++near; // (near or in the tile: one more crossing the trace may bend at)
       found = x;
     }
   }
-  if (inside != 1 || !(found->x[U] > tileBox.lo[U] + SideMargin * width &&
-                        found->x[U] < tileBox.hi[U] - SideMargin * width &&
-                        found->x[V] > tileBox.lo[V] + SideMargin * height &&
-                        found->x[V] < tileBox.hi[V] - SideMargin * height))
+  if (near != 1 || !InsideTile(*found, U, V, tileBox, SideMargin))
   {
     return std::nullopt;
   }
   // Transversal: the two surfaces' normals projected on the plane.
-  const Vec3 df = LeafGradient(leaves.first, primitives, *found), dg = LeafGradient(leaves.second, primitives, *found);
-  const double det = df[U] * dg[V] - df[V] * dg[U];
-  const double sine = std::fabs(det) / (std::hypot(df[U], df[V]) * std::hypot(dg[U], dg[V]));
-  return sine >= Transversal ? found : std::nullopt;
+  return CrossingSine(LeafGradient(leaves.first, primitives, *found), LeafGradient(leaves.second, primitives, *found),
+           U, V) >= Transversal
+    ? found
+    : std::nullopt;
 }
 
 /// CrossingOfZeroCurvesFrom the tile's centre, else from its corners and

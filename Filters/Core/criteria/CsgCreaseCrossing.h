@@ -12,7 +12,7 @@
 //
 // A tile is a CSG crease tile when the cell's expression pruned to the tile
 // has exactly two leaves, both quadrics (planes, spheres, cylinders, a box's
-// faces), whose zero curves on the tile's plane cross transversally at a
+// faces; for a mesh among them see Meshes below), whose zero curves on the tile's plane cross transversally at a
 // point x that Newton's method (from the tile's centre, else its corners and
 // sides' middles, on the two leaves' values) finds strictly inside the
 // tile, at least a millionth of its width from every side. x is on the surface (both leaves vanish there, and only they
@@ -31,10 +31,11 @@
 // sine of at least Transversal (their normals projected on the plane). x is
 // then on both leaves, so on the surface, as above. A listed triangle that
 // touches the plane at a vertex or lies in it, or a second crossing, and the
-// tile is drawn straight, as before. Cells whose expression holds a mesh and
-// another leaf are never accepted larger than the tolerance (only one mesh's
-// or quadrics' cells are certified larger: MeshCellError.h,
-// QuadricCellError.h), so each such crease cell is bounded by its size, and
+// tile is drawn straight, as before. Surface cells whose expression holds a
+// mesh and another leaf are never accepted larger than the tolerance (only
+// one mesh's or quadrics' cells are certified larger: MeshCellError.h,
+// QuadricCellError.h, PlanarCell.h; a cell stopped by a limit may be, but is
+// not guaranteed), so each such crease cell is bounded by its size, and
 // the apex goes to the middle of the loop's two crease vertices
 // (LoopTriangulation.h, ApexOnCrease): the output's crease runs from crease
 // vertex to apex to crease vertex along the chord of the exact crease
@@ -42,6 +43,14 @@
 // (`Filter.Creases.MeshBooleanCreasesAreFollowedByOutputEdges`): the
 // output's 30-degree edges on the rims 0.24 -> 1.01 of their length at
 // 1/64, and beside them (a saw-tooth) 2.86 -> 0.22.
+// A cell of one mesh alone does not mark CSG crease tiles (its tiles are
+// decided as one mesh's, CreaseCrossing.h), while its neighbour across a
+// face, holding the mesh and another leaf, does: they still agree, since
+// the other leaf keeps one sign over the lone cell's closed box - so on the
+// tile it has no listed triangles (a mesh: no trace, no crossing), or it is
+// a quadric that at most touches zero there, whose gradient along the plane
+// then vanishes (the sine is 0 or NaN): the tile is drawn straight on both
+// sides.
 //
 // Why the output stays what the guarantee says. Embedded: a and b lie on the
 // tile's boundary and x strictly inside it, so the segments a -> x -> b lie

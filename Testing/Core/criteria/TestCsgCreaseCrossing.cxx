@@ -1,8 +1,9 @@
 // CSG crease tiles (CsgCreaseCrossing.h): the crossing of two primitives'
 // crease with a face tile is found where it is, named by its tile and placed
 // where it was found, and refused where the tile holds no crease of two
-// leaves or the crossing is within 1 % of a side; with quadric leaves, and
-// with mesh leaves (a Boolean of meshes, or of a mesh and a quadric).
+// leaves, the crossing lies past a side, or (mesh leaves) the traces cross
+// twice in it; with quadric leaves, and with mesh leaves (a Boolean of
+// meshes, or of a mesh and a quadric).
 #include "CsgCreaseCrossing.h"
 #include "MeshBuilders.h"
 #include "SceneBuilder.h"
@@ -237,4 +238,35 @@ TEST(CsgCreaseCrossing, MeshLeavesCreaseIsFoundWhereItCrossesTheTile)
     const int creaseTiles = CreaseTilesDecidedAlike(b.Scene, w.Grid);
     EXPECT_GT(creaseTiles, 10) << secondIsMesh;
   }
+}
+
+TEST(CsgCreaseCrossing, AMeshAndASphereCrossWhereTheirTracesDo)
+{
+  // A tetrahedron's face on the wedge's first plane and a sphere of radius
+  // 0.5 about the origin: on the plane z = c their traces, the line
+  // x = 0.1 - 0.3 c and a circle, cross twice, at y = +-sqrt(0.25 - x^2 -
+  // c^2) - a curved quadric, so the crossing is a root of a true quadratic
+  // along the mesh's segment (CrossingsWithQuadric). A small tile around one
+  // crossing finds it; a tile holding both is refused.
+  const Wedge w;
+  SceneBuilder b;
+  const auto mesh = b.Mesh(HalfSpaceTetrahedron({ 0.1, 0.0, 0.0 }, tpc::Normalized(w.N1)));
+  b.Finish(SceneBuilder::Intersection({ mesh, b.Sphere({ 0, 0, 0 }, 0.5) }));
+  const LatticeIndex plane = 600;
+  const double z = w.Grid.Coordinate(2, plane), x = 0.1 - 0.3 * z;
+  const Vec3 expected{ x, std::sqrt(0.25 - x * x - z * z), z };
+  const FaceTile tile = TileAround(w.Grid, expected, 16);
+  const auto found = tpc::CsgCreaseOnTile(b.Scene.Expression, b.Scene.Primitives, w.Grid, 2, plane, tile);
+  ASSERT_TRUE(found.has_value());
+  for (int a = 0; a < 3; ++a)
+  {
+    EXPECT_NEAR((*found)[a], expected[a], 1e-13);
+  }
+  const FaceTile both{ 512, 0, 1024, 1024 }; // x in [0, 1], y in [-1, 1]
+  EXPECT_FALSE(tpc::CsgCreaseOnTile(b.Scene.Expression, b.Scene.Primitives, w.Grid, 2, plane, both).has_value());
+  // The other crossing alone (y < 0) is found too.
+  const FaceTile lower = TileAround(w.Grid, { expected[0], -expected[1], z }, 16);
+  const auto other = tpc::CsgCreaseOnTile(b.Scene.Expression, b.Scene.Primitives, w.Grid, 2, plane, lower);
+  ASSERT_TRUE(other.has_value());
+  EXPECT_NEAR((*other)[1], -expected[1], 1e-13);
 }
