@@ -12,8 +12,8 @@
 //
 // A tile is a CSG crease tile when the cell's expression pruned to the tile
 // has exactly two leaves, both quadrics (planes, spheres, cylinders, a box's
-// faces; for a mesh among them see Meshes below), whose zero curves on the tile's plane cross transversally at a
-// point x that Newton's method (from the tile's centre, else its corners and
+// faces; a mesh among them: Meshes, below), whose zero curves on the tile's
+// plane cross transversally at a point x that Newton's method (from the tile's centre, else its corners and
 // sides' middles, on the two leaves' values) finds strictly inside the
 // tile, at least a millionth of its width from every side. x is on the surface (both leaves vanish there, and only they
 // are left), so the trace of the surface on the tile - one arc from a to b
@@ -37,7 +37,7 @@
 // QuadricCellError.h, PlanarCell.h; a cell stopped by a limit may be, but is
 // not guaranteed), so each such crease cell is bounded by its size, and
 // the apex goes to the middle of the loop's two crease vertices
-// (LoopTriangulation.h, ApexOnCrease): the output's crease runs from crease
+// (LoopTriangulation.cxx, ApexOnCrease): the output's crease runs from crease
 // vertex to apex to crease vertex along the chord of the exact crease
 // through the cell. A tilted box minus a 96-sided prism, as two meshes
 // (`Filter.Creases.MeshBooleanCreasesAreFollowedByOutputEdges`): the
