@@ -2,8 +2,8 @@
 // crease with a face tile is found where it is, named by its tile and placed
 // where it was found, and refused where the tile holds no crease of two
 // leaves, the crossing lies past a side, or (mesh leaves) the traces cross
-// twice in it; with quadric leaves, and with mesh leaves (a Boolean of
-// meshes, or of a mesh and a quadric).
+// twice in it or a mesh vertex lies on its plane; with quadric leaves, and
+// with mesh leaves (a Boolean of meshes, or of a mesh and a quadric).
 #include "CsgCreaseCrossing.h"
 #include "MeshBuilders.h"
 #include "SceneBuilder.h"
@@ -173,23 +173,34 @@ TEST(CsgCreaseCrossing, TilesWithoutACreaseOfTwoLeavesAreRefused)
                 .has_value());
 }
 
+
+
 namespace
 {
-/// A tetrahedron with a face of side 10 on the plane through `p0` with unit
-/// outward normal `n` (so the solid is the half-space n.(p - p0) <= 0 within
-/// 5 of p0), each face oriented away from its centroid.
-tpc::MeshSolid HalfSpaceTetrahedron(const Vec3& p0, const Vec3& n)
+/// The half-space n.(p - centre) <= 0 near `centre` (n a unit normal) as a
+/// closed mesh: a hexagon of side 6 on the plane, fanned from `centre`, and
+/// an apex 5 below it, each face oriented away from a point inside.
+tpc::MeshSolid FannedHalfSpace(const Vec3& centre, const Vec3& n)
 {
   const Vec3 u = tpc::Normalized(tpc::Cross(n, std::fabs(n[0]) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0)));
   const Vec3 v = tpc::Cross(n, u);
-  std::vector<Vec3> p = { p0 + u * 6.0, p0 + (u * -0.5 + v * (0.5 * std::sqrt(3.0))) * 6.0,
-    p0 + (u * -0.5 - v * (0.5 * std::sqrt(3.0))) * 6.0, p0 - n * 5.0 };
-  const Vec3 centroid = (p[0] + p[1] + p[2] + p[3]) * 0.25;
-  tpctest::Triangles t = { { 0, 1, 2 }, { 0, 1, 3 }, { 1, 2, 3 }, { 2, 0, 3 } };
+  std::vector<Vec3> p = { centre };
+  for (int k = 0; k < 6; ++k)
+  {
+    p.push_back(centre + (u * std::cos(k * M_PI / 3.0) + v * std::sin(k * M_PI / 3.0)) * 6.0);
+  }
+  p.push_back(centre - n * 5.0);
+  Vec3 inside = centre - n * 1.0;
+  tpctest::Triangles t;
+  for (std::uint32_t k = 0; k < 6; ++k)
+  {
+    t.push_back({ 0, 1 + k, 1 + (k + 1) % 6 });
+    t.push_back({ 7, 1 + (k + 1) % 6, 1 + k });
+  }
   for (auto& f : t)
   {
     const Vec3 normal = tpc::Cross(p[f[1]] - p[f[0]], p[f[2]] - p[f[0]]);
-    if (tpc::Dot(normal, p[f[0]] - centroid) < 0.0)
+    if (tpc::Dot(normal, p[f[0]] - inside) < 0.0)
     {
       std::swap(f[1], f[2]);
     }
@@ -198,10 +209,47 @@ tpc::MeshSolid HalfSpaceTetrahedron(const Vec3& p0, const Vec3& n)
 }
 } // namespace
 
+TEST(CsgCreaseCrossing, AMeshVertexOnTheTilesPlaneLeavesItStraight)
+{
+  // The wedge's first half-space as a mesh whose face on the plane is a fan
+  // around a vertex in the tile, near the crease. With that vertex exactly on
+  // the tile's plane the trace is not made of segments crossing it (the
+  // triangles around it touch the plane there): refused, the tile drawn
+  // straight (CsgCreaseCrossing.cxx, MeshTrace); a hair off the plane, the
+  // crossing is found where the crease is.
+  const Wedge w;
+  const LatticeIndex plane = 600;
+  const double z = w.Grid.Coordinate(2, plane);
+  const Vec3 expected = w.CreaseAt(z);
+  const FaceTile tile = TileAround(w.Grid, expected, 16);
+  const Vec3 n1 = tpc::Normalized(w.N1);
+  for (const double off : { 0.0, 1e-9 })
+  {
+    // On the first plane: x = 0.1 - 0.3 z' at height z'.
+    const double height = z + off;
+    const Vec3 centre{ 0.1 - 0.3 * height, expected[1] + 0.005, height };
+    SceneBuilder b;
+    const auto first = b.Mesh(FannedHalfSpace(centre, n1));
+    const auto second = b.Mesh(FannedHalfSpace({ 0.0, -0.05, 0.0 }, tpc::Normalized(w.N2)));
+    b.Finish(SceneBuilder::Intersection({ first, second }));
+    const auto x = tpc::CsgCreaseOnTile(b.Scene.Expression, b.Scene.Primitives, w.Grid, 2, plane, tile);
+    if (off == 0.0)
+    {
+      EXPECT_FALSE(x.has_value());
+      continue;
+    }
+    ASSERT_TRUE(x.has_value());
+    for (int a = 0; a < 3; ++a)
+    {
+      EXPECT_NEAR((*x)[a], expected[a], 1e-8);
+    }
+  }
+}
+
 TEST(CsgCreaseCrossing, MeshLeavesCreaseIsFoundWhereItCrossesTheTile)
 {
-  // The wedge again, each half-space a tetrahedron's face (two meshes), or
-  // one of them the plane (a mesh and a quadric): the crease is where the
+  // The wedge again, each half-space a mesh with a face on its plane (two
+  // meshes), or one of them the plane (a mesh and a quadric): the crease is where the
   // two leaves' traces on the tile cross (CsgCreaseCrossing.cxx,
   // CrossingOfTraces), at the same point; a tile beside it is refused, and
   // the cells on both sides of a tile decide alike.
@@ -210,9 +258,9 @@ TEST(CsgCreaseCrossing, MeshLeavesCreaseIsFoundWhereItCrossesTheTile)
   for (const bool secondIsMesh : { true, false })
   {
     SceneBuilder b;
-    const auto first = b.Mesh(HalfSpaceTetrahedron(p1, tpc::Normalized(w.N1)));
+    const auto first = b.Mesh(FannedHalfSpace(p1, tpc::Normalized(w.N1)));
     const auto second =
-      secondIsMesh ? b.Mesh(HalfSpaceTetrahedron(p2, tpc::Normalized(w.N2))) : b.Add(tpc::Quadric::Plane(p2, w.N2));
+      secondIsMesh ? b.Mesh(FannedHalfSpace(p2, tpc::Normalized(w.N2))) : b.Add(tpc::Quadric::Plane(p2, w.N2));
     b.Finish(SceneBuilder::Intersection({ first, second }));
     const LatticeIndex plane = 600;
     const Vec3 expected = w.CreaseAt(w.Grid.Coordinate(2, plane));
@@ -242,7 +290,7 @@ TEST(CsgCreaseCrossing, MeshLeavesCreaseIsFoundWhereItCrossesTheTile)
 
 TEST(CsgCreaseCrossing, AMeshAndASphereCrossWhereTheirTracesDo)
 {
-  // A tetrahedron's face on the wedge's first plane and a sphere of radius
+  // A mesh's face on the wedge's first plane and a sphere of radius
   // 0.5 about the origin: on the plane z = c their traces, the line
   // x = 0.1 - 0.3 c and a circle, cross twice, at y = +-sqrt(0.25 - x^2 -
   // c^2) - a curved quadric, so the crossing is a root of a true quadratic
@@ -250,7 +298,7 @@ TEST(CsgCreaseCrossing, AMeshAndASphereCrossWhereTheirTracesDo)
   // crossing finds it; a tile holding both is refused.
   const Wedge w;
   SceneBuilder b;
-  const auto mesh = b.Mesh(HalfSpaceTetrahedron({ 0.1, 0.0, 0.0 }, tpc::Normalized(w.N1)));
+  const auto mesh = b.Mesh(FannedHalfSpace({ 0.1, 0.0, 0.0 }, tpc::Normalized(w.N1)));
   b.Finish(SceneBuilder::Intersection({ mesh, b.Sphere({ 0, 0, 0 }, 0.5) }));
   const LatticeIndex plane = 600;
   const double z = w.Grid.Coordinate(2, plane), x = 0.1 - 0.3 * z;
