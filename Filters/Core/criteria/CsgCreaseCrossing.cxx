@@ -213,14 +213,14 @@ void CrossingsWithQuadric(const TraceSegment& m, const CsgLeaf& leaf, const Prim
       }
     }
   }
+  Vec3 direction; // (of the segment, along which the roots are polished)
+  direction[U] = m.B[0] - m.A[0];
+  direction[V] = m.B[1] - m.A[1];
   for (double s : roots)
   {
     // (Two Newton steps on the quadric itself: the three samples span the
     // whole segment, which may be far longer than the tile, and the fit's
     // coefficients lose digits to cancellation there.)
-    Vec3 direction;
-    direction[U] = m.B[0] - m.A[0];
-    direction[V] = m.B[1] - m.A[1];
     for (int step = 0; step < 2 && s > 0.0 && s < 1.0; ++step)
     {
       const double slope = Dot(LeafGradient(leaf, primitives, at(s)), direction);

@@ -261,10 +261,13 @@ std::optional<Vec3> ApexOnCrease(const std::vector<LoopPoint>& loop, const Box3&
   if (!quadrics)
   {
     // (The middle of the two crease vertices, above.)
-    const Vec3 middle = onBoth.size() == 2 ? (onBoth[0] + onBoth[1]) * 0.5 : Vec3();
-    return onBoth.size() == 2 && StrictlyInside(middle, inner) && FanIsConsistent(loop, middle)
-      ? std::optional<Vec3>(middle)
-      : std::nullopt;
+    if (onBoth.size() != 2)
+    {
+      return std::nullopt;
+    }
+    const Vec3 middle = (onBoth[0] + onBoth[1]) * 0.5;
+    return StrictlyInside(middle, inner) && FanIsConsistent(loop, middle) ? std::optional<Vec3>(middle)
+                                                                          : std::nullopt;
   }
   std::vector<Vec3> starts{ feature };
   if (onBoth.size() == 2)
