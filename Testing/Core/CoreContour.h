@@ -18,7 +18,10 @@ struct ContourRun
   tpc::SubdivisionResult Subdivision;
   tpc::ExtractionResult Extraction;
   tpc::EmbeddingReport Embedding;
-  tpc::TopologyReport Report;
+  tpc::TopologyReport Report; ///< of the surface as a mesh (an empty one: genus -1, not closed)
+  /// Components and genus as the output's report gives them (ContourReport:
+  /// 0 and 0 for an empty solid).
+  long long ReportedComponents = 0, ReportedGenus = -1;
   double Tolerance = 0.0; ///< absolute
   double HausdorffBound = 0.0; ///< the report's proven two-sided bound
   bool Guaranteed = false;
@@ -87,6 +90,8 @@ inline ContourRun Contour(const Scene& scene, const tpc::ContourParameters& p,
   r.Extraction = std::move(result.Extraction);
   r.Embedding = std::move(result.Embedding);
   r.Report = result.Topology;
+  r.ReportedComponents = result.Report.Components;
+  r.ReportedGenus = result.Report.Genus;
   r.Tolerance = result.Report.AbsoluteTolerance;
   r.HausdorffBound = result.Report.HausdorffBound;
   r.Guaranteed = result.Report.Guaranteed;

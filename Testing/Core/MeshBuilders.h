@@ -150,4 +150,20 @@ inline MeshSolid TiltedMesh(const MeshSolid& mesh)
   }
   return MeshSolid(points, mesh.Triangles());
 }
+
+/// `mesh` scaled along its axes by `scale`, turned by `angle` about the
+/// unit `axis` (Rodrigues' formula) and moved by `shift`: an affine map, so
+/// a valid mesh stays closed, manifold and free of self-intersections.
+inline MeshSolid AffineMesh(
+  const MeshSolid& mesh, const Vec3& scale, const Vec3& axis, double angle, const Vec3& shift)
+{
+  const double c = std::cos(angle), s = std::sin(angle);
+  std::vector<Vec3> points;
+  for (const Vec3& p : mesh.Points())
+  {
+    const Vec3 q(p[0] * scale[0], p[1] * scale[1], p[2] * scale[2]);
+    points.push_back(q * c + tpc::Cross(axis, q) * s + axis * (tpc::Dot(axis, q) * (1.0 - c)) + shift);
+  }
+  return MeshSolid(points, mesh.Triangles());
+}
 } // namespace tpctest

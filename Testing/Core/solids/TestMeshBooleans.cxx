@@ -1,0 +1,134 @@
+// Booleans of two meshes through the core's entry point against the exact
+// Boolean's topology, computed independently by CGAL's corefinement
+// (Testing/Oracles/CgalBoolean.h) - the oracle that the fuzz target
+// FuzzBooleans asks on random pairs, first checked here on Booleans whose
+// topology is known by construction.
+#include "CgalBoolean.h"
+#include "CoreContour.h"
+#include "MeshBuilders.h"
+#include "SceneBuilder.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+using tpc::CsgTerm;
+using tpc::MeshSolid;
+using tpc::Vec3;
+using tpcoracle::BooleanOperation;
+
+namespace
+{
+tpcoracle::BooleanTopology Exact(const MeshSolid& a, const MeshSolid& b, BooleanOperation operation)
+{
+  tpcoracle::OraclePoints pa, pb;
+  for (const Vec3& p : a.Points())
+  {
+    pa.push_back({ p[0], p[1], p[2] });
+  }
+  for (const Vec3& p : b.Points())
+  {
+    pb.push_back({ p[0], p[1], p[2] });
+  }
+  return tpcoracle::ExactBooleanTopology(pa, a.Triangles(), pb, b.Triangles(), operation);
+}
+
+/// Expects the oracle's answer `components`, `genus` (or no reference).
+void ExpectExact(const MeshSolid& a, const MeshSolid& b, BooleanOperation operation, bool valid,
+  long long components = 0, long long genus = 0)
+{
+  const tpcoracle::BooleanTopology exact = Exact(a, b, operation);
+  if (!exact.Checked)
+  {
+    GTEST_SKIP() << "TPC_SKIP_CGAL_ORACLE is set";
+  }
+  ASSERT_EQ(exact.Valid, valid);
+  if (valid)
+  {
+    EXPECT_EQ(exact.Components, components);
+    EXPECT_EQ(exact.Genus, genus);
+  }
+}
+
+tpctest::ContourRun ContourBoolean(const MeshSolid& a, const MeshSolid& b, CsgTerm::Op op, double tolerance)
+{
+  tpc::Box3 bounds = a.Bounds();
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    bounds.lo[axis] = std::min(bounds.lo[axis], b.Bounds().lo[axis]);
+    bounds.hi[axis] = std::max(bounds.hi[axis], b.Bounds().hi[axis]);
+  }
+  tpctest::SceneBuilder builder;
+  const CsgTerm ta = builder.Mesh(a), tb = builder.Mesh(b);
+  builder.Finish(CsgTerm::Combine(op, { ta, tb }));
+  return tpctest::Contour(builder.Scene, bounds, tolerance);
+}
+} // namespace
+
+TEST(MeshBooleans, TheOracleGivesTheTopologyOfBooleansKnownByConstruction)
+{
+  const MeshSolid cube = tpctest::CubeMesh({ -0.5, -0.5, -0.5 }, { 0.5, 0.5, 0.5 });
+  const MeshSolid overlapping = tpctest::CubeMesh({ -0.2, -0.3, -0.4 }, { 0.8, 0.7, 0.6 });
+  const MeshSolid far = tpctest::CubeMesh({ 2, 2, 2 }, { 3, 3, 3 });
+  ExpectExact(cube, overlapping, BooleanOperation::Union, true, 1, 0);
+  ExpectExact(cube, overlapping, BooleanOperation::Intersection, true, 1, 0);
+  ExpectExact(cube, far, BooleanOperation::Union, true, 2, 0);
+  ExpectExact(cube, far, BooleanOperation::Intersection, true, 0, 0); // (empty)
+  ExpectExact(cube, far, BooleanOperation::Difference, true, 1, 0);
+  // A box minus a torus inside it: the box's boundary and the void's, a torus.
+  const MeshSolid box = tpctest::CubeMesh({ -1, -1, -0.5 }, { 1, 1, 0.5 });
+  const MeshSolid ring = tpctest::TorusMesh({ 0, 0, 0 }, 0.6, 0.2, 16, 8);
+  ExpectExact(box, ring, BooleanOperation::Difference, true, 2, 1);
+  // A standing ring through a slab: its arcs above and below the slab are
+  // two handles of the union.
+  const MeshSolid slab = tpctest::CubeMesh({ -1, -1, -0.1 }, { 1, 1, 0.1 });
+  const MeshSolid standing = tpctest::AffineMesh(ring, { 1, 1, 1 }, { 1, 0, 0 }, 1.5707963267948966, { 0, 0, 0 });
+  ExpectExact(slab, standing, BooleanOperation::Union, true, 1, 2);
+  // Two boxes sharing only an edge: the union's boundary is pinched there.
+  const MeshSolid edgeNeighbour = tpctest::CubeMesh({ 0.5, 0.5, -0.5 }, { 1.5, 1.5, 0.5 });
+  ExpectExact(cube, edgeNeighbour, BooleanOperation::Union, false);
+}
+
+TEST(MeshBooleans, GuaranteedBooleansOfTurnedSolidsHaveTheExactTopology)
+{
+  // Tilted pairs whose surfaces cross at every angle: an icosphere through a
+  // torus's ring, a box through a torus, two tori linked.
+  const MeshSolid sphere = tpctest::SphereMesh({ 0, 0, 0 }, 0.5, 2);
+  const MeshSolid torus = tpctest::TorusMesh({ 0, 0, 0 }, 0.45, 0.18, 16, 10);
+  const MeshSolid cube = tpctest::CubeMesh({ -0.5, -0.5, -0.5 }, { 0.5, 0.5, 0.5 });
+  const Vec3 tilt = tpc::Normalized(Vec3(0.3, 1.0, 0.2));
+  struct Case
+  {
+    MeshSolid A, B;
+  };
+  const std::vector<Case> cases = {
+    { tpctest::AffineMesh(torus, { 1, 1, 1 }, tilt, 0.4, { 0, 0, 0 }),
+      tpctest::AffineMesh(sphere, { 0.4, 0.4, 1.0 }, tilt, 1.1, { 0.45, 0.05, 0.02 }) },
+    { tpctest::AffineMesh(cube, { 0.3, 0.3, 1.2 }, tilt, 0.7, { 0.43, 0.02, 0.01 }),
+      tpctest::AffineMesh(torus, { 1, 1, 1 }, tilt, 0.2, { 0, 0, 0 }) },
+    { tpctest::AffineMesh(torus, { 1, 1, 1 }, { 1, 0, 0 }, 1.5707963, { 0.45, 0.01, 0.02 }),
+      tpctest::AffineMesh(torus, { 1, 1, 1 }, tilt, 0.05, { 0, 0, 0 }) },
+  };
+  const std::pair<CsgTerm::Op, BooleanOperation> ops[] = { { CsgTerm::Op::Union, BooleanOperation::Union },
+    { CsgTerm::Op::Intersection, BooleanOperation::Intersection },
+    { CsgTerm::Op::Difference, BooleanOperation::Difference } };
+  int compared = 0;
+  for (std::size_t k = 0; k < cases.size(); ++k)
+  {
+    for (const auto& [op, exactOp] : ops)
+    {
+      const tpcoracle::BooleanTopology exact = Exact(cases[k].A, cases[k].B, exactOp);
+      if (!exact.Checked)
+      {
+        GTEST_SKIP() << "TPC_SKIP_CGAL_ORACLE is set";
+      }
+      ASSERT_TRUE(exact.Valid) << "case " << k; // (they cross transversally)
+      const tpctest::ContourRun r = ContourBoolean(cases[k].A, cases[k].B, op, 1.0 / 32.0);
+      ASSERT_TRUE(r.Guaranteed) << "case " << k << ", operation " << static_cast<int>(exactOp);
+      EXPECT_EQ(r.ReportedComponents, exact.Components) << "case " << k << ", operation " << static_cast<int>(exactOp);
+      EXPECT_EQ(r.ReportedGenus, exact.Genus) << "case " << k << ", operation " << static_cast<int>(exactOp);
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 9);
+}

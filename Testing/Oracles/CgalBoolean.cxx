@@ -1,0 +1,85 @@
+#include "CgalBoolean.h"
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/corefinement.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <cstdlib>
+#include <iterator>
+
+namespace tpcoracle
+{
+namespace
+{
+using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
+using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+/// The solid bounded by the triangles, as a closed mesh oriented to bound
+/// its volume; false where the triangles are not a closed manifold mesh
+/// free of self-intersections.
+bool SolidMesh(const OraclePoints& points, const OracleTriangles& triangles, Mesh& mesh)
+{
+  std::vector<Kernel::Point_3> exact;
+  for (const auto& p : points)
+  {
+    exact.emplace_back(p[0], p[1], p[2]);
+  }
+  std::vector<std::vector<std::size_t>> faces;
+  for (const auto& t : triangles)
+  {
+    faces.push_back({ t[0], t[1], t[2] });
+  }
+  if (faces.empty() || !PMP::is_polygon_soup_a_polygon_mesh(faces))
+  {
+    return false;
+  }
+  PMP::polygon_soup_to_polygon_mesh(exact, faces, mesh);
+  if (!CGAL::is_closed(mesh) || PMP::does_self_intersect(mesh))
+  {
+    return false;
+  }
+  PMP::orient_to_bound_a_volume(mesh);
+  return true;
+}
+} // namespace
+
+BooleanTopology ExactBooleanTopology(const OraclePoints& pointsA, const OracleTriangles& trianglesA,
+  const OraclePoints& pointsB, const OracleTriangles& trianglesB, BooleanOperation operation)
+{
+  BooleanTopology result;
+  if (std::getenv("TPC_SKIP_CGAL_ORACLE"))
+  {
+    result.Checked = false;
+    return result;
+  }
+  Mesh a, b, out;
+  if (!SolidMesh(pointsA, trianglesA, a) || !SolidMesh(pointsB, trianglesB, b))
+  {
+    return result;
+  }
+  // (Each returns false when the result is not a 2-manifold.)
+  const bool manifold = operation == BooleanOperation::Union ? PMP::corefine_and_compute_union(a, b, out)
+    : operation == BooleanOperation::Intersection          ? PMP::corefine_and_compute_intersection(a, b, out)
+                                                            : PMP::corefine_and_compute_difference(a, b, out);
+  std::vector<Mesh::Halfedge_index> pinched; // (a halfedge per umbrella of each pinched vertex)
+  PMP::non_manifold_vertices(out, std::back_inserter(pinched));
+  if (!manifold || !pinched.empty() || !CGAL::is_closed(out))
+  {
+    return result;
+  }
+  auto component = out.add_property_map<Mesh::Face_index, std::size_t>("f:component", 0).first;
+  result.Components = static_cast<long long>(PMP::connected_components(out, component));
+  const long long euler = static_cast<long long>(out.number_of_vertices()) -
+    static_cast<long long>(out.number_of_edges()) + static_cast<long long>(out.number_of_faces());
+  result.Genus = (2 * result.Components - euler) / 2;
+  result.Valid = true;
+  return result;
+}
+
+} // namespace tpcoracle

@@ -1,0 +1,47 @@
+// An oracle for the tests: the topology of the exact Boolean of two closed
+// triangle meshes, computed independently of the core by CGAL's corefinement
+// (Polygon Mesh Processing) on a kernel with exact constructions - as
+// Testing/Reference/CsgReference.cxx computed Data/CsgReference.csv, here for
+// meshes made at run time (Testing/Fuzz/FuzzBooleans.cxx). CGAL is GPL: it
+// is linked into test programs only, never into the product.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace tpcoracle
+{
+
+enum class BooleanOperation
+{
+  Union,
+  Intersection,
+  Difference ///< the first mesh's solid minus the second's
+};
+
+struct BooleanTopology
+{
+  /// False where there is no reference to compare with: an operand is not a
+  /// closed manifold triangle mesh free of self-intersections, or the
+  /// Boolean's boundary is not a 2-manifold (the operands touch along a
+  /// point, an edge or a face: CGAL refuses such a result, or it has a
+  /// pinched vertex).
+  bool Valid = false;
+  long long Components = 0;
+  /// Total genus of the boundary: (2 Components - Euler characteristic) / 2.
+  long long Genus = 0;
+  /// False when TPC_SKIP_CGAL_ORACLE is set (CgalEmbedding.h: under
+  /// valgrind CGAL's interval filters give wrong answers).
+  bool Checked = true;
+};
+
+using OraclePoints = std::vector<std::array<double, 3>>;
+using OracleTriangles = std::vector<std::array<std::uint32_t, 3>>;
+
+/// The components and genus of the boundary of A op B, A and B the solids
+/// bounded by the two meshes (each oriented here to bound its volume).
+BooleanTopology ExactBooleanTopology(const OraclePoints& pointsA, const OracleTriangles& trianglesA,
+  const OraclePoints& pointsB, const OracleTriangles& trianglesB, BooleanOperation operation);
+
+} // namespace tpcoracle
