@@ -1,7 +1,7 @@
 // libFuzzer target over the core's mesh Booleans (issue 17: everything the
 // guarantee says stays true, creases where two meshes meet included). Each
-// input is decoded into two valid closed meshes - icospheres, tori, cubes -
-// each scaled along its axes, rotated and moved, and one of union,
+// input is decoded into two valid closed meshes - icospheres, tori, cubes,
+// prisms - each scaled along its axes, rotated and moved, and one of union,
 // intersection and difference of their solids. The properties every
 // contoured scene must have are FuzzChecks.h's (closed, manifold, oriented,
 // embedded where every cell passed, the exact embedding check agreeing with
@@ -17,6 +17,7 @@
 #include "SceneBuilder.h"
 
 #include <algorithm>
+#include <cmath>
 
 using tpc::Vec3;
 
@@ -40,17 +41,30 @@ struct Tally
   }
 } tally;
 
+/// The regular polygon of `n` corners on the circle of radius `r` (a
+/// prism's section: CAD-like sharp edges, flat faces split by diagonals).
+std::vector<std::array<double, 2>> RegularPolygon(int n, double r)
+{
+  std::vector<std::array<double, 2>> corners;
+  for (int k = 0; k < n; ++k)
+  {
+    corners.push_back({ r * std::cos(2 * M_PI * k / n), r * std::sin(2 * M_PI * k / n) });
+  }
+  return corners;
+}
+
 /// A valid closed mesh from the bytes: an icosphere (20 to 320 triangles), a
-/// torus or a cube, scaled along its axes, rotated and moved - an affine map
+/// torus, a cube or a prism over a regular polygon, scaled along its axes, rotated and moved - an affine map
 /// of a valid mesh, so still closed, manifold and free of
 /// self-intersections (checked: RepairMesh, as the filter checks its
 /// inputs).
 bool SolidMeshFromBytes(FuzzedDataProvider& in, tpc::MeshSolid& solid)
 {
-  const int kind = in.ConsumeIntegralInRange<int>(0, 2);
+  const int kind = in.ConsumeIntegralInRange<int>(0, 3);
   const tpc::MeshSolid base = kind == 0 ? tpctest::SphereMesh({ 0, 0, 0 }, 0.5, in.ConsumeIntegralInRange<int>(0, 2))
     : kind == 1 ? tpctest::TorusMesh({ 0, 0, 0 }, 0.45, tpcfuzz::Number(in, 0.08, 0.3), 12, 8)
-                : tpctest::CubeMesh({ -0.5, -0.5, -0.5 }, { 0.5, 0.5, 0.5 });
+    : kind == 2 ? tpctest::CubeMesh({ -0.5, -0.5, -0.5 }, { 0.5, 0.5, 0.5 })
+                : tpctest::PrismMesh(RegularPolygon(in.ConsumeIntegralInRange<int>(3, 12), 0.5), -0.5, 0.5);
   const Vec3 scale{ tpcfuzz::Number(in, 0.3, 1.2), tpcfuzz::Number(in, 0.3, 1.2), tpcfuzz::Number(in, 0.3, 1.2) };
   const Vec3 axis = tpc::Normalized(tpcfuzz::Direction(in));
   const double angle = tpcfuzz::Number(in, 0.0, 3.14159);
