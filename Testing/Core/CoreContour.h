@@ -4,6 +4,7 @@
 #pragma once
 
 #include "CgalEmbedding.h"
+#include "CgalHausdorff.h"
 #include "Contour.h"
 #include "SceneBuilder.h"
 
@@ -30,6 +31,31 @@ struct ContourRun
   int RepairRuns = 0;     ///< ContourResult::RepairRuns
   std::vector<tpc::ContourMessage> Messages;
 };
+
+/// Whether the run's surface and `exact` (another surface, as a triangle
+/// soup) are within the run's reported HausdorffBound of each other, both
+/// ways, by CGAL's certified distance (CgalHausdorff.h): the lower end of
+/// its estimate - the distance is at least that - at most the bound (up to
+/// a billionth of the tolerance: `exact`'s points are rounded). Two empty
+/// surfaces are; one empty and one not are not.
+inline bool DistanceWithinBound(const ContourRun& r, const tpcoracle::TriangleSoup& exact)
+{
+  const tpc::TriangleMesh& mesh = r.Extraction.Mesh;
+  if (exact.Triangles.empty() || mesh.Triangles.empty())
+  {
+    return exact.Triangles.empty() == mesh.Triangles.empty();
+  }
+  tpcoracle::TriangleSoup surface;
+  for (const tpc::Vec3& p : mesh.Points)
+  {
+    surface.Points.push_back({ p[0], p[1], p[2] });
+  }
+  surface.Triangles.assign(mesh.Triangles.begin(), mesh.Triangles.end());
+  const double errorBound = 0.01 * r.Tolerance;
+  const double there = tpcoracle::DirectedHausdorffWithCgal(surface, exact, errorBound).Lower;
+  const double back = tpcoracle::DirectedHausdorffWithCgal(exact, surface, errorBound).Lower;
+  return std::max(there, back) <= r.HausdorffBound + 1e-9 * r.Tolerance;
+}
 
 /// CGAL's verdict on a mesh, with the mesh's own vertex ids.
 inline tpcoracle::EmbeddingVerdict CgalVerdict(const tpc::TriangleMesh& mesh)

@@ -3,6 +3,7 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
+#include <CGAL/Polygon_mesh_processing/intersection.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair.h>
@@ -63,13 +64,18 @@ BooleanTopology ExactBooleanTopology(const OraclePoints& pointsA, const OracleTr
   {
     return result;
   }
+  result.SurfacesMeet = PMP::do_intersect(a, b); // (the surfaces only: bounded sides not tested)
   // (Each returns false when the result is not a 2-manifold.)
   const bool manifold = operation == BooleanOperation::Union ? PMP::corefine_and_compute_union(a, b, out)
     : operation == BooleanOperation::Intersection          ? PMP::corefine_and_compute_intersection(a, b, out)
                                                             : PMP::corefine_and_compute_difference(a, b, out);
+  // (Surfaces touching at a point - a vertex on a face, two edges crossing
+  // - make no intersection line: corefinement copies both sides with
+  // coincident but separate vertices, a closed manifold mesh that touches
+  // itself. Its self-intersection says so.)
   std::vector<Mesh::Halfedge_index> pinched; // (a halfedge per umbrella of each pinched vertex)
   PMP::non_manifold_vertices(out, std::back_inserter(pinched));
-  if (!manifold || !pinched.empty() || !CGAL::is_closed(out))
+  if (!manifold || !pinched.empty() || !CGAL::is_closed(out) || PMP::does_self_intersect(out))
   {
     return result;
   }
@@ -77,7 +83,31 @@ BooleanTopology ExactBooleanTopology(const OraclePoints& pointsA, const OracleTr
   result.Components = static_cast<long long>(PMP::connected_components(out, component));
   const long long euler = static_cast<long long>(out.number_of_vertices()) -
     static_cast<long long>(out.number_of_edges()) + static_cast<long long>(out.number_of_faces());
+  if ((2 * result.Components - euler) % 2 != 0)
+  {
+    return BooleanTopology{}; // (not a closed orientable surface after all)
+  }
   result.Genus = (2 * result.Components - euler) / 2;
+  std::vector<std::uint32_t> index(out.num_vertices(), 0); // (by vertex index: the mesh may have holes in its numbering)
+  for (const Mesh::Vertex_index v : out.vertices())
+  {
+    index[v] = static_cast<std::uint32_t>(result.Surface.Points.size());
+    const Kernel::Point_3& p = out.point(v);
+    result.Surface.Points.push_back({ CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()) });
+  }
+  for (const Mesh::Face_index f : out.faces())
+  {
+    std::vector<std::uint32_t> corners;
+    for (const Mesh::Vertex_index v : CGAL::vertices_around_face(out.halfedge(f), out))
+    {
+      corners.push_back(index[v]);
+    }
+    if (corners.size() != 3)
+    {
+      return BooleanTopology{}; // (corefinement keeps triangle meshes triangulated)
+    }
+    result.Surface.Triangles.push_back({ corners[0], corners[1], corners[2] });
+  }
   result.Valid = true;
   return result;
 }
