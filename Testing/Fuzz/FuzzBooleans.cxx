@@ -9,9 +9,9 @@
 // the components and genus must be those of the exact Boolean, computed
 // independently by CGAL's corefinement on an exact kernel, and the two-sided
 // distance to it within the reported bound (CGAL's certified estimate: its
-// lower end at most the bound; CgalBoolean.h, CgalHausdorff.h;
-// where that Boolean's boundary is not a 2-manifold - the solids touch -
-// there is no reference, and none is asked for).
+// lower end at most the bound; CgalBoolean.h, CgalHausdorff.h). Where the
+// Boolean's boundary is not an embedded 2-manifold - the solids touch -
+// there is no reference, and none is asked for.
 #include "CgalBoolean.h"
 #include "FuzzChecks.h"
 #include "MeshBuilders.h"
@@ -36,10 +36,12 @@ struct Tally
     std::fprintf(stderr,
       "FuzzBooleans: %ld unions, %ld intersections, %ld differences of two meshes; %ld contoured (%ld non-empty, "
       "%ld guaranteed, %ld not embedded where a limit stopped cells, %ld with exact cells), %ld topologies equal "
-      "to CGAL's exact Boolean and within the reported bound of it (%ld where the surfaces meet), %ld guaranteed without a reference (the solids touch); %ld inputs with tight "
-      "limits; %ld stopped after %d s; %ld decimated\n",
+      "to CGAL's exact Boolean and within the reported bound of it (%ld where the surfaces meet), %ld "
+      "guaranteed without a reference (the solids touch); %ld inputs with tight limits; %ld stopped after %d s; "
+      "%ld decimated\n",
       Operations[0], Operations[1], Operations[2], Runs.Contoured, Runs.NonEmpty, Runs.Guaranteed, Runs.NotEmbedded,
-      Runs.WithExactCells, Compared, Crossing, NoReference, TightLimits, Runs.OverTime, tpcfuzz::SceneSeconds, Runs.Decimated);
+      Runs.WithExactCells, Compared, Crossing, NoReference, TightLimits, Runs.OverTime, tpcfuzz::SceneSeconds,
+      Runs.Decimated);
   }
 } tally;
 
@@ -149,7 +151,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // components and genus 0 there.)
   tpcfuzz::Require(r.ReportedComponents == exact.Components, "components of the exact Boolean (CGAL)");
   tpcfuzz::Require(r.ReportedGenus == exact.Genus, "genus of the exact Boolean (CGAL)");
-  tpcfuzz::Require(tpctest::DistanceWithinBound(r, exact.Surface), "the exact Boolean within the reported bound (CGAL)");
+  tpcfuzz::Require(
+    tpctest::DistanceWithinBound(r, exact.Surface), "the exact Boolean within the reported bound (CGAL)");
   ++tally.Compared;
   tally.Crossing += exact.SurfacesMeet ? 1 : 0;
   return 0;

@@ -88,7 +88,8 @@ BooleanTopology ExactBooleanTopology(const OraclePoints& pointsA, const OracleTr
     return BooleanTopology{}; // (not a closed orientable surface after all)
   }
   result.Genus = (2 * result.Components - euler) / 2;
-  std::vector<std::uint32_t> index(out.num_vertices(), 0); // (by vertex index: the mesh may have holes in its numbering)
+  // (Indexed by vertex: the mesh may have holes in its numbering.)
+  std::vector<std::uint32_t> index(out.num_vertices(), 0);
   for (const Mesh::Vertex_index v : out.vertices())
   {
     index[v] = static_cast<std::uint32_t>(result.Surface.Points.size());
