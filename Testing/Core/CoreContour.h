@@ -1,12 +1,15 @@
 // Runs a scene through the core's entry point, tpc::Contour, for the tests.
 // Every run's embedding verdict is held against CGAL's independent
-// self-intersection test.
+// self-intersection test; DistanceWithinBound holds a surface against the
+// reported bound with CGAL's certified distance.
 #pragma once
 
 #include "CgalEmbedding.h"
 #include "CgalHausdorff.h"
 #include "Contour.h"
 #include "SceneBuilder.h"
+
+#include <algorithm>
 
 #ifndef TPC_TESTS_WITHOUT_GTEST
 #include <gtest/gtest.h>

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <string>
 
 using tpc::CsgTerm;
 using tpc::MeshSolid;
@@ -98,8 +99,8 @@ TEST(MeshBooleans, GuaranteedBooleansOfTurnedSolidsHaveTheExactTopologyWithinThe
 {
   // Tilted pairs whose surfaces cross: an icosphere through a torus's ring,
   // a box through a torus, two linked tori whose tubes overlap (each core
-  // circle passes through the other's centre, at least 0.45 from it: tubes
-  // of 0.26).
+  // circle passes through the other's centre; the circles come within 0.45
+  // of each other, less than the two tubes' radii of 0.26).
   const MeshSolid sphere = tpctest::SphereMesh({ 0, 0, 0 }, 0.5, 2);
   const MeshSolid torus = tpctest::TorusMesh({ 0, 0, 0 }, 0.45, 0.18, 16, 10);
   const MeshSolid thick = tpctest::TorusMesh({ 0, 0, 0 }, 0.45, 0.26, 16, 10);
@@ -132,11 +133,11 @@ TEST(MeshBooleans, GuaranteedBooleansOfTurnedSolidsHaveTheExactTopologyWithinThe
       ASSERT_TRUE(exact.Valid) << "case " << k;
       ASSERT_TRUE(exact.SurfacesMeet) << "case " << k;
       const tpctest::ContourRun r = ContourBoolean(cases[k].A, cases[k].B, op, 1.0 / 32.0);
-      ASSERT_TRUE(r.Guaranteed) << "case " << k << ", operation " << static_cast<int>(exactOp);
-      EXPECT_EQ(r.ReportedComponents, exact.Components) << "case " << k << ", operation " << static_cast<int>(exactOp);
-      EXPECT_EQ(r.ReportedGenus, exact.Genus) << "case " << k << ", operation " << static_cast<int>(exactOp);
-      EXPECT_TRUE(tpctest::DistanceWithinBound(r, exact.Surface))
-        << "case " << k << ", operation " << static_cast<int>(exactOp) << ": bound " << r.HausdorffBound;
+      const std::string which = "case " + std::to_string(k) + ", operation " + std::to_string(static_cast<int>(op));
+      ASSERT_TRUE(r.Guaranteed) << which;
+      EXPECT_EQ(r.ReportedComponents, exact.Components) << which;
+      EXPECT_EQ(r.ReportedGenus, exact.Genus) << which;
+      EXPECT_TRUE(tpctest::DistanceWithinBound(r, exact.Surface)) << which << ": bound " << r.HausdorffBound;
     }
   }
 }
