@@ -35,6 +35,30 @@ struct ContourRun
   std::vector<tpc::ContourMessage> Messages;
 };
 
+/// Points and triangles as CGAL's oracles take them.
+template <typename Points, typename Triangles>
+tpcoracle::TriangleSoup SoupOf(const Points& points, const Triangles& triangles)
+{
+  tpcoracle::TriangleSoup soup;
+  for (const tpc::Vec3& p : points)
+  {
+    soup.Points.push_back({ p[0], p[1], p[2] });
+  }
+  soup.Triangles.assign(triangles.begin(), triangles.end());
+  return soup;
+}
+
+/// CGAL's certified two-sided distance between `a` and `b` within
+/// `errorBound`: the larger directed estimate's lower and upper ends (the
+/// distance is at least Lower, at most Upper).
+inline tpcoracle::HausdorffEstimate TwoSidedDistanceWithCgal(
+  const tpcoracle::TriangleSoup& a, const tpcoracle::TriangleSoup& b, double errorBound)
+{
+  const tpcoracle::HausdorffEstimate there = tpcoracle::DirectedHausdorffWithCgal(a, b, errorBound);
+  const tpcoracle::HausdorffEstimate back = tpcoracle::DirectedHausdorffWithCgal(b, a, errorBound);
+  return { std::max(there.Lower, back.Lower), std::max(there.Upper, back.Upper) };
+}
+
 /// Whether the run's surface and `exact` (another surface, as a triangle
 /// soup) are within the run's reported HausdorffBound of each other, both
 /// ways, by CGAL's certified distance (CgalHausdorff.h): the lower end of
@@ -48,27 +72,15 @@ inline bool DistanceWithinBound(const ContourRun& r, const tpcoracle::TriangleSo
   {
     return exact.Triangles.empty() == mesh.Triangles.empty();
   }
-  tpcoracle::TriangleSoup surface;
-  for (const tpc::Vec3& p : mesh.Points)
-  {
-    surface.Points.push_back({ p[0], p[1], p[2] });
-  }
-  surface.Triangles.assign(mesh.Triangles.begin(), mesh.Triangles.end());
-  const double errorBound = 0.01 * r.Tolerance;
-  const double there = tpcoracle::DirectedHausdorffWithCgal(surface, exact, errorBound).Lower;
-  const double back = tpcoracle::DirectedHausdorffWithCgal(exact, surface, errorBound).Lower;
-  return std::max(there, back) <= r.HausdorffBound + 1e-9 * r.Tolerance;
+  const double lower = TwoSidedDistanceWithCgal(SoupOf(mesh.Points, mesh.Triangles), exact, 0.01 * r.Tolerance).Lower;
+  return lower <= r.HausdorffBound + 1e-9 * r.Tolerance;
 }
 
 /// CGAL's verdict on a mesh, with the mesh's own vertex ids.
 inline tpcoracle::EmbeddingVerdict CgalVerdict(const tpc::TriangleMesh& mesh)
 {
-  std::vector<std::array<double, 3>> points;
-  for (const tpc::Vec3& p : mesh.Points)
-  {
-    points.push_back({ p[0], p[1], p[2] });
-  }
-  return tpcoracle::CheckEmbeddingWithCgal(points, mesh.Triangles.ToVector());
+  const tpcoracle::TriangleSoup soup = SoupOf(mesh.Points, mesh.Triangles);
+  return tpcoracle::CheckEmbeddingWithCgal(soup.Points, soup.Triangles);
 }
 
 #ifndef TPC_TESTS_WITHOUT_GTEST

@@ -5,6 +5,7 @@
 
 #include "MeshSolid.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
@@ -149,6 +150,18 @@ inline MeshSolid TiltedMesh(const MeshSolid& mesh)
     points.push_back({ q[0], c2 * q[1] - s2 * q[2], s2 * q[1] + c2 * q[2] });
   }
   return MeshSolid(points, mesh.Triangles());
+}
+
+/// The box holding both meshes (the domain of their Boolean).
+inline tpc::Box3 BoundsOfBoth(const MeshSolid& a, const MeshSolid& b)
+{
+  tpc::Box3 box = a.Bounds();
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    box.lo[axis] = std::min(box.lo[axis], b.Bounds().lo[axis]);
+    box.hi[axis] = std::max(box.hi[axis], b.Bounds().hi[axis]);
+  }
+  return box;
 }
 
 /// `mesh` scaled along its axes by `scale`, turned by `angle` about the

@@ -18,7 +18,6 @@
 #include "MeshRepair.h"
 #include "SceneBuilder.h"
 
-#include <algorithm>
 #include <cmath>
 
 using tpc::Vec3;
@@ -84,15 +83,6 @@ bool SolidMeshFromBytes(FuzzedDataProvider& in, tpc::MeshSolid& solid)
   return true;
 }
 
-/// The mesh's points and triangles as the oracle takes them.
-void ForOracle(const tpc::MeshSolid& mesh, tpcoracle::OraclePoints& points, tpcoracle::OracleTriangles& triangles)
-{
-  for (const Vec3& p : mesh.Points())
-  {
-    points.push_back({ p[0], p[1], p[2] });
-  }
-  triangles = mesh.Triangles();
-}
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
@@ -108,16 +98,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   ++tally.Operations[operation];
   tally.TightLimits += tightLimits ? 1 : 0;
-  tpcoracle::OraclePoints pointsA, pointsB;
-  tpcoracle::OracleTriangles trianglesA, trianglesB;
-  ForOracle(a, pointsA, trianglesA);
-  ForOracle(b, pointsB, trianglesB);
-  tpc::Box3 bounds = a.Bounds();
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    bounds.lo[axis] = std::min(bounds.lo[axis], b.Bounds().lo[axis]);
-    bounds.hi[axis] = std::max(bounds.hi[axis], b.Bounds().hi[axis]);
-  }
+  const tpcoracle::TriangleSoup soupA = tpctest::SoupOf(a.Points(), a.Triangles());
+  const tpcoracle::TriangleSoup soupB = tpctest::SoupOf(b.Points(), b.Triangles());
+  const tpc::Box3 bounds = tpctest::BoundsOfBoth(a, b);
   const tpc::CsgTerm::Op ops[] = { tpc::CsgTerm::Op::Union, tpc::CsgTerm::Op::Intersection,
     tpc::CsgTerm::Op::Difference };
   tpctest::SceneBuilder builder;
@@ -132,7 +115,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const tpcoracle::BooleanOperation exactOps[] = { tpcoracle::BooleanOperation::Union,
     tpcoracle::BooleanOperation::Intersection, tpcoracle::BooleanOperation::Difference };
   const tpcoracle::BooleanTopology exact =
-    tpcoracle::ExactBooleanTopology(pointsA, trianglesA, pointsB, trianglesB, exactOps[operation]);
+    tpcoracle::ExactBooleanTopology(soupA, soupB, exactOps[operation]);
   if (!exact.Checked)
   {
     return 0;

@@ -24,15 +24,15 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 /// The solid bounded by the triangles, as a closed mesh oriented to bound
 /// its volume; false where the triangles are not a closed manifold mesh
 /// free of self-intersections.
-bool SolidMesh(const OraclePoints& points, const OracleTriangles& triangles, Mesh& mesh)
+bool SolidMesh(const TriangleSoup& soup, Mesh& mesh)
 {
   std::vector<Kernel::Point_3> exact;
-  for (const auto& p : points)
+  for (const auto& p : soup.Points)
   {
     exact.emplace_back(p[0], p[1], p[2]);
   }
   std::vector<std::vector<std::size_t>> faces;
-  for (const auto& t : triangles)
+  for (const auto& t : soup.Triangles)
   {
     faces.push_back({ t[0], t[1], t[2] });
   }
@@ -50,8 +50,7 @@ bool SolidMesh(const OraclePoints& points, const OracleTriangles& triangles, Mes
 }
 } // namespace
 
-BooleanTopology ExactBooleanTopology(const OraclePoints& pointsA, const OracleTriangles& trianglesA,
-  const OraclePoints& pointsB, const OracleTriangles& trianglesB, BooleanOperation operation)
+BooleanTopology ExactBooleanTopology(const TriangleSoup& soupA, const TriangleSoup& soupB, BooleanOperation operation)
 {
   BooleanTopology result;
   if (std::getenv("TPC_SKIP_CGAL_ORACLE"))
@@ -60,7 +59,7 @@ BooleanTopology ExactBooleanTopology(const OraclePoints& pointsA, const OracleTr
     return result;
   }
   Mesh a, b, out;
-  if (!SolidMesh(pointsA, trianglesA, a) || !SolidMesh(pointsB, trianglesB, b))
+  if (!SolidMesh(soupA, a) || !SolidMesh(soupB, b))
   {
     return result;
   }

@@ -8,10 +8,6 @@
 
 #include "CgalHausdorff.h"
 
-#include <array>
-#include <cstdint>
-#include <vector>
-
 namespace tpcoracle
 {
 
@@ -44,12 +40,8 @@ struct BooleanTopology
   bool Checked = true;
 };
 
-using OraclePoints = std::vector<std::array<double, 3>>;
-using OracleTriangles = std::vector<std::array<std::uint32_t, 3>>;
-
 /// The components and genus of the boundary of A op B, A and B the solids
 /// bounded by the two meshes (each oriented here to bound its volume).
-BooleanTopology ExactBooleanTopology(const OraclePoints& pointsA, const OracleTriangles& trianglesA,
-  const OraclePoints& pointsB, const OracleTriangles& trianglesB, BooleanOperation operation);
+BooleanTopology ExactBooleanTopology(const TriangleSoup& a, const TriangleSoup& b, BooleanOperation operation);
 
 } // namespace tpcoracle

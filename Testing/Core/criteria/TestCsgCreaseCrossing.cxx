@@ -173,8 +173,6 @@ TEST(CsgCreaseCrossing, TilesWithoutACreaseOfTwoLeavesAreRefused)
                 .has_value());
 }
 
-
-
 namespace
 {
 /// The half-space n.(p - centre) <= 0 near `centre` (n a unit normal) as a
@@ -190,7 +188,7 @@ tpc::MeshSolid FannedHalfSpace(const Vec3& centre, const Vec3& n)
     p.push_back(centre + (u * std::cos(k * M_PI / 3.0) + v * std::sin(k * M_PI / 3.0)) * 6.0);
   }
   p.push_back(centre - n * 5.0);
-  Vec3 inside = centre - n * 1.0;
+  const Vec3 inside = centre - n * 1.0;
   tpctest::Triangles t;
   for (std::uint32_t k = 0; k < 6; ++k)
   {

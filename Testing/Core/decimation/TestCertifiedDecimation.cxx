@@ -55,32 +55,17 @@ tpc::ContourResult ContourMesh(const tpc::MeshSolid& mesh, double tolerance, boo
   return tpc::Contour(std::move(scene), p);
 }
 
-tpcoracle::TriangleSoup Soup(
-  const std::vector<Vec3>& points, const std::vector<std::array<std::uint32_t, 3>>& triangles)
-{
-  tpcoracle::TriangleSoup soup;
-  for (const Vec3& p : points)
-  {
-    soup.Points.push_back({ p[0], p[1], p[2] });
-  }
-  soup.Triangles = triangles;
-  return soup;
-}
-
 /// The two-sided Hausdorff distance between `exact` and `surface` by CGAL
 /// (within 1 % of the tolerance), held against the proven bound: its lower
 /// end may not pass the bound. Returns the upper end.
 double ExpectWithinBound(const tpc::MeshSolid& exact, const tpc::TriangleMesh& surface, double bound,
   double tolerance, const char* name)
 {
-  const tpcoracle::TriangleSoup s = Soup(exact.Points(), exact.Triangles());
-  const tpcoracle::TriangleSoup a = Soup(surface.Points.ToVector(), surface.Triangles.ToVector());
-  const double error = tolerance / 100;
-  const tpcoracle::HausdorffEstimate toSurface = tpcoracle::DirectedHausdorffWithCgal(s, a, error);
-  const tpcoracle::HausdorffEstimate toExact = tpcoracle::DirectedHausdorffWithCgal(a, s, error);
-  EXPECT_LE(toSurface.Lower, bound) << name;
-  EXPECT_LE(toExact.Lower, bound) << name;
-  return std::max(toSurface.Upper, toExact.Upper);
+  const tpcoracle::HausdorffEstimate d = tpctest::TwoSidedDistanceWithCgal(
+    tpctest::SoupOf(exact.Points(), exact.Triangles()), tpctest::SoupOf(surface.Points, surface.Triangles),
+    tolerance / 100);
+  EXPECT_LE(d.Lower, bound) << name; // (both ways: the larger lower end)
+  return d.Upper;
 }
 
 /// Every edge of `mesh` in exactly two triangles, once each way.

@@ -11,7 +11,6 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <string>
 
 using tpc::CsgTerm;
@@ -23,16 +22,8 @@ namespace
 {
 tpcoracle::BooleanTopology Exact(const MeshSolid& a, const MeshSolid& b, BooleanOperation operation)
 {
-  tpcoracle::OraclePoints pa, pb;
-  for (const Vec3& p : a.Points())
-  {
-    pa.push_back({ p[0], p[1], p[2] });
-  }
-  for (const Vec3& p : b.Points())
-  {
-    pb.push_back({ p[0], p[1], p[2] });
-  }
-  return tpcoracle::ExactBooleanTopology(pa, a.Triangles(), pb, b.Triangles(), operation);
+  return tpcoracle::ExactBooleanTopology(
+    tpctest::SoupOf(a.Points(), a.Triangles()), tpctest::SoupOf(b.Points(), b.Triangles()), operation);
 }
 
 /// Expects the oracle's answer `components`, `genus` (or no reference).
@@ -54,16 +45,10 @@ void ExpectExact(const MeshSolid& a, const MeshSolid& b, BooleanOperation operat
 
 tpctest::ContourRun ContourBoolean(const MeshSolid& a, const MeshSolid& b, CsgTerm::Op op, double tolerance)
 {
-  tpc::Box3 bounds = a.Bounds();
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    bounds.lo[axis] = std::min(bounds.lo[axis], b.Bounds().lo[axis]);
-    bounds.hi[axis] = std::max(bounds.hi[axis], b.Bounds().hi[axis]);
-  }
   tpctest::SceneBuilder builder;
   const CsgTerm ta = builder.Mesh(a), tb = builder.Mesh(b);
   builder.Finish(CsgTerm::Combine(op, { ta, tb }));
-  return tpctest::Contour(builder.Scene, bounds, tolerance);
+  return tpctest::Contour(builder.Scene, tpctest::BoundsOfBoth(a, b), tolerance);
 }
 } // namespace
 
