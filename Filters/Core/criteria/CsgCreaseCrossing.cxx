@@ -1,5 +1,6 @@
 #include "CsgCreaseCrossing.h"
 
+#include "EdgeCrossings.h"
 #include "MeshSolid.h"
 
 #include <algorithm>
@@ -396,6 +397,33 @@ std::optional<std::pair<Vec3, Vec3>> CsgCreaseVertex(
   const Vec3 normal = Normalized(Normalized(LeafGradient(two->Leaves.first, primitives, *position)) +
     Normalized(LeafGradient(two->Leaves.second, primitives, *position)));
   return std::make_pair(*position, normal);
+}
+
+bool PlaceCsgLoopPoints(const std::vector<Crossing>& loop, const CsgExpressionPtr& expression,
+  const PrimitiveSet& primitives, const RootGrid& grid, std::vector<Vec3>& points)
+{
+  points.clear();
+  for (const Crossing& c : loop)
+  {
+    if (c.Kind == CrossingKind::SubEdge)
+    {
+      points.push_back(PlaceSubEdgeCrossing(c, grid, *expression, primitives));
+    }
+    else if (c.Kind == CrossingKind::CsgCrease)
+    {
+      const auto x = CsgCreaseVertex(c, expression, primitives, grid);
+      if (!x)
+      {
+        return false;
+      }
+      points.push_back(x->first);
+    }
+    else
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
 } // namespace tpc

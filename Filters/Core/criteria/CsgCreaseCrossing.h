@@ -31,18 +31,21 @@
 // sine of at least Transversal (their normals projected on the plane). x is
 // then on both leaves, so on the surface, as above. A listed triangle that
 // touches the plane at a vertex or lies in it, or a second crossing, and the
-// tile is drawn straight, as before. Surface cells whose expression holds a
-// mesh and another leaf are never accepted larger than the tolerance (only
-// one mesh's or quadrics' cells are certified larger: MeshCellError.h,
-// QuadricCellError.h, PlanarCell.h; a cell stopped by a limit may be, but is
-// not guaranteed), so each such crease cell is bounded by its size, and
-// the apex goes to the middle of the loop's two crease vertices
-// (LoopTriangulation.cxx, ApexOnCrease): the output's crease runs from crease
-// vertex to apex to crease vertex along the chord of the exact crease
-// through the cell. A tilted box minus a 96-sided prism, as two meshes
-// (`Filter.Creases.MeshBooleanCreasesAreFollowedByOutputEdges`): the
-// output's 30-degree edges on the rims 0.24 -> 1.01 of their length at
-// 1/64, and beside them (a saw-tooth) 2.86 -> 0.22.
+// tile is drawn straight, as before. A surface cell whose expression holds a
+// mesh and a quadric is never accepted larger than the tolerance (a cell
+// stopped by a limit may be, but is not guaranteed), nor one where meshes
+// meet unless its fan was predicted (MeshBooleanCellError.h): a crease cell
+// of the tolerance's size is bounded by its size, and its apex goes to the
+// middle of the loop's two crease vertices (LoopTriangulation.cxx,
+// ApexOnCrease), so the output's crease runs from crease vertex to apex to
+// crease vertex along the chord of the exact crease through the cell; a
+// larger one where meshes meet draws its fan around the point of the crease
+// it was accepted with, its patch certified (and following the crease
+// within a tenth of the tolerance). A tilted box minus a 96-sided prism, as
+// two meshes (`Filter.Creases.MeshBooleanCreasesAreFollowedByOutputEdges`):
+// the output's 30-degree edges on the rims 0.24 -> 1.01 of their length at
+// 1/64, and beside them (a saw-tooth) 2.86 -> 0.22; with larger cells where
+// the meshes meet, 1.02 and 0.23.
 // A cell of one mesh alone does not mark CSG crease tiles (its tiles are
 // decided as one mesh's, CreaseCrossing.h), while its neighbour across a
 // face, holding the mesh and another leaf, does: they still agree, since
@@ -93,6 +96,13 @@ std::optional<Vec3> CsgCreaseOnTile(const CsgExpressionPtr& expression, const Pr
 /// is not a crease tile of `expression`.
 std::optional<std::pair<Vec3, Vec3>> CsgCreaseVertex(
   const Crossing& x, const CsgExpressionPtr& expression, const PrimitiveSet& primitives, const RootGrid& grid);
+
+/// The points of the loop `loop` (sub-edge crossings and CSG crease
+/// crossings of `expression`'s crease tiles) as the extraction places them,
+/// in `points`; false when a crossing is of another kind or its tile is no
+/// crease tile.
+bool PlaceCsgLoopPoints(const std::vector<Crossing>& loop, const CsgExpressionPtr& expression,
+  const PrimitiveSet& primitives, const RootGrid& grid, std::vector<Vec3>& points);
 
 /// The centre of a CsgCrease crossing's tile.
 Vec3 CsgCreaseTileCentre(const Crossing& x, const RootGrid& grid);

@@ -8,6 +8,8 @@
 #include "EdgeCrossings.h"
 #include "ExactCellCriterion.h"
 #include "FaceRefinement.h"
+#include "MeshBooleanCellError.h"
+#include "MeshBooleanSurface.h"
 #include "MeshCellError.h"
 #include "PlanarCell.h"
 #include "QuadricCellError.h"
@@ -128,25 +130,9 @@ bool CreaseFanWithinTolerance(const QuadricCellError& bound, const Vec3& apex, c
     return false;
   }
   std::vector<Vec3> loop;
-  for (const Crossing& c : loops.Crossings)
+  if (!PlaceCsgLoopPoints(loops.Crossings, expression, prims, grid, loop))
   {
-    if (c.Kind == CrossingKind::SubEdge)
-    {
-      loop.push_back(PlaceSubEdgeCrossing(c, grid, *expression, prims));
-    }
-    else if (c.Kind == CrossingKind::CsgCrease)
-    {
-      const auto x = CsgCreaseVertex(c, expression, prims, grid);
-      if (!x)
-      {
-        return false;
-      }
-      loop.push_back(x->first);
-    }
-    else
-    {
-      return false;
-    }
+    return false;
   }
   if (ownLoop)
   {
@@ -261,7 +247,11 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   // once the tests traced it.)
   const bool quadricFan = v.Oversized && !uniform && !planar && !v.ErrorBounded && quadric && !quadric->Crease &&
     v.PredictedError <= FanPredictionReach * tolerance;
-  if (v.Oversized && !planar && !v.ErrorBounded && !meshBounded && !quadricFan && !creaseFanOwnLoop)
+  // (Meshes meeting: perhaps the fan over its own loop too,
+  // MeshBooleanCellError.h.)
+  const bool booleanFan =
+    v.Oversized && !uniform && !planar && !v.ErrorBounded && !meshBounded && MayPredictMeshBooleanFan(*expression);
+  if (v.Oversized && !planar && !v.ErrorBounded && !meshBounded && !quadricFan && !creaseFanOwnLoop && !booleanFan)
   {
     v.Reason = uniform ? SplitReason::ComplexVoxel : SplitReason::HausdorffSize;
     return v;
@@ -386,11 +376,24 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     }
     v.ErrorBounded = true;
   }
-  else if (!v.Oversized && !v.ErrorBounded && LoneMeshLeaf(*expression))
+  else if (booleanFan)
+  {
+    v.BooleanFanApex = PredictMeshBooleanFan(expression, prims, grid, box, boundary, tolerance, v.PredictedError);
+    if (!v.BooleanFanApex)
+    {
+      v.Reason = SplitReason::HausdorffSize;
+      return v;
+    }
+    // (Its faces' CSG crease tiles decided with its own expression, as the
+    // prediction drew them: CsgCreaseCrossing.h.)
+    v.ErrorBounded = v.CreaseFan = true;
+  }
+  else if (!v.Oversized && !v.ErrorBounded && (LoneMeshLeaf(*expression) || IsMeshBoolean(*expression)))
   {
     // Within the tolerance by its size, whatever its patch; the extraction
-    // certifies the patch's distance to the mesh too (MeshCellError.h), so
-    // that the reported bound is what the cells' patches need.
+    // certifies the patch's distance to the mesh too (MeshCellError.h), or
+    // to the meshes where they meet (MeshBooleanSurface.h), so that the
+    // reported bound is what the cells' patches need.
     v.ErrorBounded = true;
     v.PredictedError = grid.CellDiagonal(node.Level);
   }

@@ -40,9 +40,9 @@ struct McCompatibility
   double PredictedError = HUGE_VAL;
   /// ErrorBounded where one mesh is the surface in a cell larger than the
   /// tolerance (MeshCellError.h): the prediction holds for the fan around
-  /// MeshCellApex over the final loop. (Cells of one mesh within the
-  /// tolerance are ErrorBounded too, predicted by their diagonal, with their
-  /// own patch.)
+  /// MeshCellApex over the final loop. (Cells of one mesh, or where meshes
+  /// meet - MeshBooleanSurface.h - within the tolerance are ErrorBounded
+  /// too, predicted by their diagonal, with their own patch.)
   bool MeshSurface = false;
   /// For MeshSurface: the prediction (its Bound is PredictedError), kept
   /// for the extraction.
@@ -59,6 +59,11 @@ struct McCompatibility
   /// the cell's own loop): ErrorBounded then, the apex kept for the
   /// extraction.
   std::optional<Vec3> QuadricFanApex;
+  /// Set where meshes meet in a cell larger than the tolerance whose fan
+  /// around this apex over its own loop is predicted within the tolerance
+  /// (MeshBooleanCellError.h): ErrorBounded and CreaseFan then, the apex
+  /// kept for the extraction, which certifies the final patch.
+  std::optional<Vec3> BooleanFanApex;
   /// Larger than the tolerance (the Hausdorff size test's own comparison).
   bool Oversized = false;
   /// Split for its size before the other tests: a spoke of every fan its

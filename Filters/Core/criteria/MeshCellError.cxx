@@ -233,25 +233,32 @@ HausdorffEstimate CertifiedMeshPatchError(const PolygonSet& surface,
   const std::vector<SourceTriangle>& patch, double slack, double enough, double giveUp, std::size_t budget,
   const std::vector<double>* patchOffsets)
 {
+  return CertifiedSurfacePatchError(surface, surface, patch, slack, enough, giveUp, budget, patchOffsets);
+}
+
+HausdorffEstimate CertifiedSurfacePatchError(const PolygonSet& onSurface, const PolygonSet& covering,
+  const std::vector<SourceTriangle>& patch, double slack, double enough, double giveUp, std::size_t budget,
+  const std::vector<double>* patchOffsets)
+{
   HausdorffEstimate error{ HUGE_VAL, 0.0 };
-  if (surface.empty() || patch.empty())
+  if (onSurface.empty() || patch.empty())
   {
     return error;
   }
   const HausdorffEstimate toSurface =
-    OneSidedHausdorff(patch, surface, enough - slack, giveUp - slack, budget, { patchOffsets, nullptr });
+    OneSidedHausdorff(patch, onSurface, enough - slack, giveUp - slack, budget, { patchOffsets, nullptr });
   error.Lower = toSurface.Lower;
   if (!(toSurface.Upper + slack <= giveUp))
   {
     return error;
   }
   std::vector<SourceTriangle> pieces;
-  for (const ConvexPolygon& q : surface)
+  for (const ConvexPolygon& q : covering)
   {
     AppendAsSources(q.Points.begin(), q.Points.size(), pieces);
   }
   PolygonSet targets;
-  targets.SetSlackMagnitude(surface.GetSlackMagnitude()); // (the patch lies in the same cell)
+  targets.SetSlackMagnitude(covering.GetSlackMagnitude()); // (the patch lies in the same cell)
   targets.reserve(patch.size(), 3 * patch.size());
   for (const SourceTriangle& t : patch)
   {

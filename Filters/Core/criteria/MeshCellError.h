@@ -296,6 +296,13 @@ int RefineChordTiles(const CsgExpressionPtr& expression, const PrimitiveSet& pri
 HausdorffEstimate CertifiedMeshPatchError(const PolygonSet& surface,
   const std::vector<SourceTriangle>& patch, double slack, double enough, double giveUp,
   std::size_t budget = 4096, const std::vector<double>* patchOffsets = nullptr);
+/// The same where S is known from two sides, `onSurface` ⊆ S and `covering`
+/// ⊇ S_C (MeshBooleanSurface.h): h(patch, onSurface) and h(covering,
+/// patch) bounded (one mesh: both S_C). Lower is then what the branch and
+/// bound came upon, a distance attained only where the two sets are S_C.
+HausdorffEstimate CertifiedSurfacePatchError(const PolygonSet& onSurface, const PolygonSet& covering,
+  const std::vector<SourceTriangle>& patch, double slack, double enough, double giveUp, std::size_t budget,
+  const std::vector<double>* patchOffsets = nullptr);
 
 /// The slack for rounding in a cell of the mesh of `leaf` (header: Rounding),
 /// and the largest coordinate M it is taken of.

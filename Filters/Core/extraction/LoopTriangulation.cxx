@@ -226,7 +226,8 @@ std::optional<Vec3> ApexOnSurface(const std::vector<LoopPoint>& loop, const Box3
 /// are (a corner), at their common point. Where two leaves are and one is a
 /// mesh, the middle of those two points (no projection: a mesh's crease
 /// with another surface is a chain of pieces; such a surface cell is no
-/// larger than the tolerance, CsgCreaseCrossing.h). Kept if it lands inside the
+/// larger than the tolerance, CsgCreaseCrossing.h - a larger one where
+/// meshes meet is given its apex, MeshBooleanCellError.h). Kept if it lands inside the
 /// region (but for 1/1024 of its width) with the fan consistent. The output's
 /// crease then runs from crease vertex to apex to crease vertex, on the
 /// crease (or, with a mesh, along its chord through the cell).

@@ -6,6 +6,7 @@
 #include "CreaseFollowing.h"
 #include "CrossingVertices.h"
 #include "ExactCellCriterion.h"
+#include "MeshBooleanCellError.h"
 #include "ScratchPool.h"
 
 #include <algorithm>
@@ -169,11 +170,50 @@ double FirstCertificateAim(const AdaptiveOctree& tree)
                                           : std::min(std::max(1.1 * attained, 0.25 * tolerance), tolerance);
 }
 
-/// S in leaf `n`, which is one mesh's (MeshCellError.h), in `surface`.
-void MeshInCell(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& prims, PolygonSet& surface)
+/// S in a surface leaf whose patch is certified against it: where one mesh
+/// is the surface S_C (MeshCellError.h), where meshes meet S from both
+/// sides (MeshBooleanSurface.h); the memory reused from cell to cell
+/// (ScratchPool.h).
+struct CellSurface
+{
+  PolygonSet Mesh;
+  MeshBooleanSurface Boolean;
+  bool OneMesh = true;
+  double Slack = 0.0;
+
+  const PolygonSet& OnSurface() const { return this->OneMesh ? this->Mesh : this->Boolean.OnSurface; }
+  const PolygonSet& Covering() const { return this->OneMesh ? this->Mesh : this->Boolean.Covering; }
+};
+
+/// S in leaf `n`, where one mesh is the surface or meshes meet, in
+/// `surface`; false where it is neither.
+bool SurfaceOfCell(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& prims, CellSurface& surface)
 {
   const OctreeNode& node = tree.Nodes[n];
-  SurfaceInCell(*LoneMeshLeaf(*tree.Expressions[n]), prims, tree.Grid.CellBox(node.Level, node.Ijk), surface);
+  const CsgExpression& expression = *tree.Expressions[n];
+  const Box3 box = tree.Grid.CellBox(node.Level, node.Ijk);
+  if (const CsgLeaf* leaf = LoneMeshLeaf(expression))
+  {
+    surface.OneMesh = true;
+    surface.Slack = RoundingSlack(*leaf, prims, box);
+    SurfaceInCell(*leaf, prims, box, surface.Mesh);
+    return true;
+  }
+  surface.OneMesh = false;
+  const bool boolean = MeshBooleanSurfaceForTolerance(expression, prims, box, tree.HausdorffTolerance, surface.Boolean);
+  surface.Slack = surface.Boolean.Slack;
+  return boolean;
+}
+
+/// E(P) of `patches` against `surface` (CertifiedSurfacePatchError); Lower
+/// kept only where it is a distance the patch attains (one mesh), else 0.
+HausdorffEstimate CertifiedCellError(const CellSurface& surface, const CellPatches& patches, const TriangleMesh& mesh,
+  double enough, double giveUp, std::size_t budget)
+{
+  HausdorffEstimate e = CertifiedSurfacePatchError(surface.OnSurface(), surface.Covering(),
+    PatchTriangles(patches, mesh), surface.Slack, enough, giveUp, budget);
+  e.Lower = surface.OneMesh ? e.Lower : 0.0;
+  return e;
 }
 
 /// A mesh cell larger than the tolerance (its prediction `prediction`)
@@ -276,21 +316,21 @@ bool MeshCellFromOtherApex(const AdaptiveOctree& tree, std::uint32_t n, const Bo
 /// Surface leaf `n`'s patches (CellPatches.h) and what they are certified to.
 /// A mesh cell's error is first bounded with a small budget of pieces
 /// (FirstCertificateBudget); RefineMeshCertificates refines the ones that
-/// matter. `surface`: where S_C is built (ScratchPool.h).
+/// matter. `surface`: where S in the cell is built (ScratchPool.h).
 CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t n, const BoundaryLoopSet& loops,
   const PrimitiveSet& prims, const CrossingVertices& vertices, const TriangleMesh& mesh, bool predictionsHold,
-  double aim, CellPatches& patches, PolygonSet& surface)
+  double aim, CellPatches& patches, CellSurface& surface)
 {
   const OctreeNode& node = tree.Nodes[n];
   const CsgExpression& expression = *tree.Expressions[n];
   const Box3 box = tree.Grid.CellBox(node.Level, node.Ijk);
   const bool bounded = node.State == CellState::Surface && node.ErrorBounded;
   CellCertificate certificate;
-  if (bounded && LoneMeshLeaf(expression))
+  if (bounded && SurfaceOfCell(tree, n, prims, surface))
   {
-    MeshInCell(tree, n, prims, surface);
+    // (Predictions are made where one mesh is the surface only.)
     const auto prediction = tree.MeshCellPredictions.find(n);
-    const double slack = RoundingSlack(*LoneMeshLeaf(expression), prims, box);
+    const double slack = surface.Slack;
     certificate.Mesh = true;
     if (prediction != tree.MeshCellPredictions.end())
     {
@@ -300,8 +340,8 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
       const std::vector<CreaseSegment> creases = IsOneMesh(*tree.SceneExpression)
         ? CreasesInCell(*LoneMeshLeaf(expression), prims, box)
         : std::vector<CreaseSegment>();
-      if (MeshCellFromLoopPoint(
-            tree, n, loops, vertices, mesh, surface, creases, slack, aim, prediction->second, patches, certificate))
+      if (MeshCellFromLoopPoint(tree, n, loops, vertices, mesh, surface.Mesh, creases, slack, aim, prediction->second,
+            patches, certificate))
       {
         return certificate;
       }
@@ -312,7 +352,7 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
       // certified on its own anyway.
       TriangulateCell(
         loops, node, expression, prims, tree.Grid, vertices, mesh, patches, nullptr, &prediction->second.Apex);
-      if (MeshCellFromOtherApex(tree, n, loops, prims, vertices, mesh, surface, creases, slack, aim,
+      if (MeshCellFromOtherApex(tree, n, loops, prims, vertices, mesh, surface.Mesh, creases, slack, aim,
             prediction->second.Apex, patches, certificate))
       {
         return certificate;
@@ -335,14 +375,22 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
         return certificate;
       }
     }
+    else if (const auto fan = tree.BooleanFanApexes.find(n); fan != tree.BooleanFanApexes.end())
+    {
+      // Meshes meeting in a cell larger than the tolerance: the fan around
+      // the apex it was accepted with, over the final loop, bounded by its
+      // certificate alone (MeshBooleanCellError.h).
+      TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches, nullptr, &fan->second);
+    }
     else
     {
-      // Within the tolerance: its own patch, bounded by its diagonal.
+      // Within the tolerance (one mesh, or meshes meeting): its own patch,
+      // bounded by its diagonal.
       TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches);
       certificate.Bound = tree.Grid.CellDiagonal(node.Level);
     }
-    const HausdorffEstimate e = CertifiedMeshCellError(surface, patches, mesh, slack, aim,
-      std::min(certificate.Bound, tree.HausdorffTolerance), FirstCertificateBudget);
+    const HausdorffEstimate e = CertifiedCellError(
+      surface, patches, mesh, aim, std::min(certificate.Bound, tree.HausdorffTolerance), FirstCertificateBudget);
     certificate.Error = std::min(certificate.Bound, e.Upper);
     certificate.Lower = e.Lower;
     return certificate;
@@ -385,7 +433,7 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
 /// threshold, so the result does not depend on the threads.
 bool RefineMeshCertificates(const AdaptiveOctree& tree, const std::vector<std::uint32_t>& cells,
   const std::vector<std::uint8_t>& own, const std::vector<CellPatches>& patches, const TriangleMesh& mesh,
-  const PrimitiveSet& prims, std::vector<CellCertificate>& certificates, ScratchPool<PolygonSet>& surfaces,
+  const PrimitiveSet& prims, std::vector<CellCertificate>& certificates, ScratchPool<CellSurface>& surfaces,
   const ParallelFor& parallelFor, const ProgressCallback& progress)
 {
   double attained = 0.0;
@@ -419,19 +467,15 @@ bool RefineMeshCertificates(const AdaptiveOctree& tree, const std::vector<std::u
         })
       : ProgressCallback();
     if (!ChunkedFor(last - first, Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
-          ScratchPool<PolygonSet>::Lease surface(surfaces);
+          ScratchPool<CellSurface>::Lease surface(surfaces);
           for (std::size_t k = first + begin; k < first + end; ++k)
           {
             CellCertificate& c = certificates[pending[k]];
             if (c.Error > enough)
             {
-              const std::uint32_t n = cells[pending[k]];
-              const OctreeNode& node = tree.Nodes[n];
-              const double slack = RoundingSlack(
-                *LoneMeshLeaf(*tree.Expressions[n]), prims, tree.Grid.CellBox(node.Level, node.Ijk));
-              MeshInCell(tree, n, prims, *surface);
-              const HausdorffEstimate e = CertifiedMeshCellError(*surface, patches[pending[k]],
-                mesh, slack, enough, std::min(c.Bound, tree.HausdorffTolerance), 4096);
+              SurfaceOfCell(tree, cells[pending[k]], prims, *surface);
+              const HausdorffEstimate e = CertifiedCellError(
+                *surface, patches[pending[k]], mesh, enough, std::min(c.Bound, tree.HausdorffTolerance), 4096);
               c.Error = std::min(c.Error, e.Upper);
               c.Lower = std::max(c.Lower, e.Lower);
             }
@@ -508,9 +552,9 @@ ExtractionResult ExtractSurface(const AdaptiveOctree& tree, const ImplicitScene&
   const bool predictionsHold = std::none_of(cells.begin(), cells.end(),
     [&](std::uint32_t n) { return tree.Nodes[n].State == CellState::Unresolved; });
   const double aim = FirstCertificateAim(tree);
-  ScratchPool<PolygonSet> surfaces; // (S_C of the mesh cells, MeshCellError.h)
+  ScratchPool<CellSurface> surfaces; // (S in the mesh cells, MeshCellError.h, MeshBooleanSurface.h)
   if (!ChunkedFor(cells.size(), Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
-        ScratchPool<PolygonSet>::Lease surface(surfaces);
+        ScratchPool<CellSurface>::Lease surface(surfaces);
         for (std::size_t i = begin; i < end; ++i)
         {
           if (own[i] && tree.Nodes[cells[i]].State == CellState::Exact)

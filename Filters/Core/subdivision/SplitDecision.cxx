@@ -70,6 +70,10 @@ bool DecideCell(AdaptiveOctree& tree, std::uint32_t n, const CellTests& tests, c
     {
       tree.QuadricFanApexes[n] = *v.QuadricFanApex;
     }
+    if (v.BooleanFanApex)
+    {
+      tree.BooleanFanApexes[n] = *v.BooleanFanApex;
+    }
     result.SurfaceCells += mine;
     result.ChordRefinedCells += v.ChordsRefined ? mine : 0;
     result.PlanarSurfaceCells += v.Planar ? mine : 0;

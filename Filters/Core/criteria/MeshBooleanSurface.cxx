@@ -1,0 +1,433 @@
+#include "MeshBooleanSurface.h"
+
+#include "MeshCellError.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace tpc
+{
+namespace
+{
+/// The most cuts a piece takes (header: Rounding).
+constexpr int MostCuts = 48;
+
+/// A piece of a mesh's surface in the cell still to be decided: its
+/// corners, its mesh (an index in the expression's leaves) and the cuts
+/// that made it.
+struct Piece
+{
+  ClippedCorners Corners;
+  std::size_t Leaf = 0;
+  int Cuts = 0;
+  bool Strip = false; ///< the strip along another mesh's plane: left undecided
+};
+
+Box3 BoundsOf(const PointSpan& corners)
+{
+  Box3 box{ corners.front(), corners.front() };
+  for (const Vec3& p : corners)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      box.lo[a] = std::min(box.lo[a], p[a]);
+      box.hi[a] = std::max(box.hi[a], p[a]);
+    }
+  }
+  return box;
+}
+
+PointSpan SpanOf(const ClippedCorners& corners)
+{
+  return { corners.data(), corners.size() };
+}
+
+/// The Newell vector of the polygon: its normal, of length twice its area.
+Vec3 NewellVector(const PointSpan& p)
+{
+  Vec3 n;
+  for (std::size_t i = 1; i + 1 < p.size(); ++i)
+  {
+    n += Cross(p[i] - p[0], p[i + 1] - p[0]);
+  }
+  return n;
+}
+
+/// The polygon's edges (a segment has one).
+std::size_t EdgeCount(const PointSpan& p)
+{
+  return p.size() == 2 ? 1 : p.size() < 2 ? 0 : p.size();
+}
+
+Vec3 Edge(const PointSpan& p, std::size_t i)
+{
+  return p[(i + 1) % p.size()] - p[i];
+}
+
+/// Whether the projections of `p` and `q` on `axis` are more than `margin`
+/// times |axis| apart.
+bool ApartAlong(const Vec3& axis, const PointSpan& p, const PointSpan& q, double margin)
+{
+  const double length = Norm(axis);
+  if (!(length > 0.0))
+  {
+    return false;
+  }
+  double pLo = HUGE_VAL, pHi = -HUGE_VAL, qLo = HUGE_VAL, qHi = -HUGE_VAL;
+  for (const Vec3& x : p)
+  {
+    const double d = Dot(axis, x);
+    pLo = std::min(pLo, d);
+    pHi = std::max(pHi, d);
+  }
+  for (const Vec3& x : q)
+  {
+    const double d = Dot(axis, x);
+    qLo = std::min(qLo, d);
+    qHi = std::max(qHi, d);
+  }
+  const double gap = margin * length;
+  return qLo - pHi > gap || pLo - qHi > gap;
+}
+
+/// Whether Phi changes with mesh `mesh`'s sign at `point`, every other
+/// leaf's exact sign read there (header: Deciding a piece).
+bool OnSurfaceAt(const CsgExpression& expression, const PrimitiveSet& primitives, std::uint32_t mesh,
+  const Vec3& point)
+{
+  std::vector<signed char> inside(expression.NodeCount(), -1); // (each other leaf read once)
+  const auto evaluate = [&](bool meshInside) {
+    return expression.Evaluate([&](std::uint32_t i, const CsgExpression::Node& n) {
+      const CsgLeaf& leaf = n.LeafData;
+      if (leaf.Primitive == mesh)
+      {
+        return meshInside == (leaf.Sigma > 0);
+      }
+      if (inside[i] < 0)
+      {
+        inside[i] = LeafIsInside(leaf, primitives, point) ? 1 : 0;
+      }
+      return inside[i] == 1;
+    });
+  };
+  return evaluate(true) != evaluate(false);
+}
+
+/// How many polygons of the other meshes' surfaces in the cell
+/// (`meshSurfaces`, one set per leaf) piece `corners` of leaf `leaf` is not
+/// proven more than `margin` from, counted up to 2; the first in `nearest`
+/// (mesh, polygon).
+int NearPolygons(const PointSpan& corners, std::size_t leaf, const std::vector<PolygonSet>& meshSurfaces,
+  double margin, std::pair<std::size_t, std::size_t>& nearest)
+{
+  Box3 reach = BoundsOf(corners);
+  for (int a = 0; a < 3; ++a)
+  {
+    reach.lo[a] -= margin;
+    reach.hi[a] += margin;
+  }
+  int near = 0;
+  for (std::size_t j = 0; j < meshSurfaces.size() && near < 2; ++j)
+  {
+    const PolygonSet& other = meshSurfaces[j];
+    for (std::size_t r = 0; j != leaf && r < other.size() && near < 2; ++r)
+    {
+      if (other.Bounds(r).Overlaps(reach) && !PolygonsApart(corners, other[r].Points, margin))
+      {
+        nearest = near == 0 ? std::make_pair(j, r) : nearest;
+        ++near;
+      }
+    }
+  }
+  return near;
+}
+
+/// The part of polygon `points` where Dot(normal, x) - offset is >= 0
+/// (`above`) or <= 0, in `out` (Sutherland-Hodgman).
+void ClipToPlane(const ClippedCorners& points, ClippedCorners& out, const Vec3& normal, double offset, bool above)
+{
+  out.clear();
+  const std::size_t m = points.size();
+  const auto side = [&](const Vec3& p) { return (Dot(normal, p) - offset) * (above ? 1.0 : -1.0); };
+  for (std::size_t i = 0; i < m; ++i)
+  {
+    const Vec3& a = points[i];
+    const Vec3& b = points[(i + 1) % m];
+    const double sa = side(a), sb = side(b);
+    if (sa >= 0.0)
+    {
+      out.push_back(a);
+    }
+    if ((sa >= 0.0) != (sb >= 0.0) && m > 1)
+    {
+      out.push_back(a + (b - a) * (sa / (sa - sb)));
+    }
+  }
+}
+/// The part of polygon `q` in the plane of polygon `p` (unit normal `n`):
+/// the segment between the points where its sides cross the plane, in `a`
+/// and `b`; false where it does not reach across.
+bool SectionByPlane(const ConvexPolygon& q, const Vec3& n, double offset, Vec3& a, Vec3& b)
+{
+  int found = 0;
+  const std::size_t m = q.Points.size();
+  for (std::size_t i = 0; i < m && found < 2; ++i)
+  {
+    const Vec3 &x = q.Points[i], &y = q.Points[(i + 1) % m];
+    const double sx = Dot(n, x) - offset, sy = Dot(n, y) - offset;
+    if ((sx < 0.0) != (sy < 0.0))
+    {
+      (found++ == 0 ? a : b) = x + (y - x) * (sx / (sx - sy));
+    }
+  }
+  return found == 2;
+}
+
+/// The segment [a, b] clipped to convex polygon `p` within its plane (both
+/// in it up to rounding), in place; false where nothing is left.
+bool ClipSegmentToPolygon(const ConvexPolygon& p, Vec3& a, Vec3& b)
+{
+  double t0 = 0.0, t1 = 1.0;
+  const std::size_t m = p.Points.size();
+  for (std::size_t i = 0; i < m; ++i)
+  {
+    const Vec3 inward = Cross(p.Normal, p.Points[(i + 1) % m] - p.Points[i]);
+    const double da = Dot(inward, a - p.Points[i]), db = Dot(inward, b - p.Points[i]);
+    if (da < 0.0 && db < 0.0)
+    {
+      return false;
+    }
+    if (da < 0.0 || db < 0.0)
+    {
+      const double t = da / (da - db);
+      if (da < 0.0)
+      {
+        t0 = std::max(t0, t); // (enters the polygon's side at t)
+      }
+      else
+      {
+        t1 = std::min(t1, t); // (leaves it)
+      }
+    }
+  }
+  if (!(t0 < t1))
+  {
+    return false;
+  }
+  const Vec3 d = b - a;
+  b = a + d * t1;
+  a = a + d * t0;
+  return true;
+}
+
+/// The segments where two meshes' polygons in the cell cross at
+/// FollowedCreaseDegrees or more between their planes (header of
+/// MeshBooleanSurfaceInCell), appended to `creases`.
+void CrossingCreases(const std::vector<PolygonSet>& meshSurfaces, std::vector<CreaseSegment>& creases)
+{
+  const double parallel = std::cos(FollowedCreaseDegrees * M_PI / 180.0);
+  for (std::size_t i = 0; i < meshSurfaces.size(); ++i)
+  {
+    for (std::size_t j = i + 1; j < meshSurfaces.size(); ++j)
+    {
+      for (const ConvexPolygon& p : meshSurfaces[i])
+      {
+        for (std::size_t k = 0; k < meshSurfaces[j].size(); ++k)
+        {
+          if (!meshSurfaces[j].Bounds(k).Overlaps(p.Bounds) || p.TwiceArea <= 0.0)
+          {
+            continue;
+          }
+          const ConvexPolygon q = meshSurfaces[j][k];
+          Vec3 a, b;
+          if (q.TwiceArea > 0.0 && std::fabs(Dot(p.Normal, q.Normal)) <= parallel &&
+            SectionByPlane(q, p.Normal, Dot(p.Normal, p.Points[0]), a, b) && ClipSegmentToPolygon(p, a, b))
+          {
+            creases.push_back({ a, b });
+          }
+        }
+      }
+    }
+  }
+}
+} // namespace
+
+bool PolygonsApart(const PointSpan& p, const PointSpan& q, double margin)
+{
+  if (p.empty() || q.empty())
+  {
+    return true;
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    Vec3 axis;
+    axis[a] = 1.0;
+    if (ApartAlong(axis, p, q, margin))
+    {
+      return true;
+    }
+  }
+  if (ApartAlong(NewellVector(p), p, q, margin) || ApartAlong(NewellVector(q), p, q, margin))
+  {
+    return true;
+  }
+  for (std::size_t i = 0; i < EdgeCount(p); ++i)
+  {
+    for (std::size_t k = 0; k < EdgeCount(q); ++k)
+    {
+      if (ApartAlong(Cross(Edge(p, i), Edge(q, k)), p, q, margin))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+bool IsMeshBoolean(const CsgExpression& expression)
+{
+  const std::vector<CsgLeaf> leaves = expression.Leaves();
+  if (leaves.size() < 2)
+  {
+    return false;
+  }
+  for (std::size_t k = 0; k < leaves.size(); ++k)
+  {
+    if (leaves[k].Kind != PrimitiveKind::Mesh || !leaves[k].Triangles)
+    {
+      return false;
+    }
+    for (std::size_t j = 0; j < k; ++j)
+    {
+      if (leaves[j].Primitive == leaves[k].Primitive)
+      {
+        return false; // (a mesh and its complement: Phi of one mesh in two leaves)
+      }
+    }
+  }
+  return true;
+}
+
+bool MeshBooleanSurfaceInCell(const CsgExpression& expression, const PrimitiveSet& primitives, const Box3& cell,
+  double width, std::size_t pieceBudget, MeshBooleanSurface& surface, std::vector<CreaseSegment>* creases)
+{
+  surface.OnSurface.clear();
+  surface.Covering.clear();
+  surface.Undecided = 0;
+  surface.Slack = 0.0;
+  if (!IsMeshBoolean(expression))
+  {
+    return false;
+  }
+  const std::vector<CsgLeaf> leaves = expression.Leaves();
+  std::vector<PolygonSet> meshSurfaces(leaves.size());
+  double magnitude = 0.0;
+  for (std::size_t k = 0; k < leaves.size(); ++k)
+  {
+    SurfaceInCell(leaves[k], primitives, cell, meshSurfaces[k]);
+    magnitude = std::max(magnitude, SlackMagnitude(leaves[k], primitives, cell));
+  }
+  surface.Slack = RoundingSlackFor(magnitude, cell.Diagonal());
+  if (creases)
+  {
+    creases->clear();
+    CrossingCreases(meshSurfaces, *creases);
+  }
+  surface.OnSurface.SetSlackMagnitude(magnitude);
+  surface.Covering.SetSlackMagnitude(magnitude);
+  const double margin = 4.0 * surface.Slack; // (header: Rounding)
+  std::vector<Piece> pending;
+  for (std::size_t k = 0; k < leaves.size(); ++k)
+  {
+    for (const ConvexPolygon& q : meshSurfaces[k])
+    {
+      Piece piece;
+      piece.Leaf = k;
+      for (const Vec3& p : q.Points)
+      {
+        piece.Corners.push_back(p);
+      }
+      pending.push_back(piece);
+    }
+  }
+  std::size_t decided = 0;
+  while (!pending.empty())
+  {
+    const Piece piece = pending.back();
+    pending.pop_back();
+    ++decided;
+    const PointSpan corners = SpanOf(piece.Corners);
+    std::pair<std::size_t, std::size_t> nearest;
+    const int near = NearPolygons(corners, piece.Leaf, meshSurfaces, margin, nearest);
+    if (near == 0)
+    {
+      Vec3 centroid;
+      for (const Vec3& p : corners)
+      {
+        centroid += p * (1.0 / static_cast<double>(corners.size()));
+      }
+      if (OnSurfaceAt(expression, primitives, leaves[piece.Leaf].Primitive, cell.Clamp(centroid)))
+      {
+        surface.OnSurface.Add(corners.begin(), corners.size());
+        surface.Covering.Add(corners.begin(), corners.size());
+      }
+      continue;
+    }
+    // (A cut adds at most one corner to a part; the strip's two cuts two.)
+    const bool room = !piece.Strip && piece.Cuts < MostCuts &&
+      piece.Corners.size() + 2 < ClippedCorners::capacity() && decided + pending.size() + 3 <= pieceBudget;
+    const ConvexPolygon other = meshSurfaces[nearest.first][nearest.second];
+    if (room && near == 1 && other.TwiceArea > 0.0)
+    {
+      // Near one polygon of another mesh: cut along its plane, pushed aside
+      // by twice the margin both ways (header: Deciding a piece).
+      const double offset = Dot(other.Normal, other.Points[0]), aside = 2.0 * margin;
+      Piece above, strip, below;
+      ClipToPlane(piece.Corners, above.Corners, other.Normal, offset + aside, true);
+      ClipToPlane(piece.Corners, below.Corners, other.Normal, offset - aside, false);
+      ClippedCorners beyondBelow;
+      ClipToPlane(piece.Corners, beyondBelow, other.Normal, offset - aside, true);
+      ClipToPlane(beyondBelow, strip.Corners, other.Normal, offset + aside, false);
+      strip.Strip = true;
+      for (Piece* part : { &above, &strip, &below })
+      {
+        part->Leaf = piece.Leaf;
+        part->Cuts = piece.Cuts + 1;
+        if (!part->Corners.empty())
+        {
+          pending.push_back(*part);
+        }
+      }
+      continue;
+    }
+    const Box3 box = BoundsOf(corners);
+    int axis = 0;
+    for (int a = 1; a < 3; ++a)
+    {
+      axis = box.Width(a) > box.Width(axis) ? a : axis;
+    }
+    if (room && box.Width(axis) > width)
+    {
+      // Near more: cut in two across its box's longest side.
+      const double middle = 0.5 * (box.lo[axis] + box.hi[axis]);
+      for (const bool below : { true, false })
+      {
+        Piece half;
+        half.Leaf = piece.Leaf;
+        half.Cuts = piece.Cuts + 1;
+        ClipToHalfSpace(piece.Corners, half.Corners, axis, middle, below);
+        if (!half.Corners.empty())
+        {
+          pending.push_back(half);
+        }
+      }
+      continue;
+    }
+    surface.Covering.Add(corners.begin(), corners.size());
+    ++surface.Undecided;
+  }
+  return true;
+}
+
+} // namespace tpc
