@@ -226,4 +226,88 @@ bool ClipSegment(Vec3& a, Vec3& b, const Box3& box)
   return true;
 }
 
+namespace
+{
+/// The Newell vector of the polygon: its normal, of length twice its area.
+Vec3 NewellVector(const PointSpan& p)
+{
+  Vec3 n;
+  for (std::size_t i = 1; i + 1 < p.size(); ++i)
+  {
+    n += Cross(p[i] - p[0], p[i + 1] - p[0]);
+  }
+  return n;
+}
+
+/// The polygon's edges (a segment has one).
+std::size_t EdgeCount(const PointSpan& p)
+{
+  return p.size() == 2 ? 1 : p.size() < 2 ? 0 : p.size();
+}
+
+Vec3 Edge(const PointSpan& p, std::size_t i)
+{
+  return p[(i + 1) % p.size()] - p[i];
+}
+
+/// Whether the projections of `p` and `q` on `axis` are more than `margin`
+/// times |axis| apart.
+bool ApartAlong(const Vec3& axis, const PointSpan& p, const PointSpan& q, double margin)
+{
+  const double length = Norm(axis);
+  if (!(length > 0.0))
+  {
+    return false;
+  }
+  double pLo = HUGE_VAL, pHi = -HUGE_VAL, qLo = HUGE_VAL, qHi = -HUGE_VAL;
+  for (const Vec3& x : p)
+  {
+    const double d = Dot(axis, x);
+    pLo = std::min(pLo, d);
+    pHi = std::max(pHi, d);
+  }
+  for (const Vec3& x : q)
+  {
+    const double d = Dot(axis, x);
+    qLo = std::min(qLo, d);
+    qHi = std::max(qHi, d);
+  }
+  const double gap = margin * length;
+  return qLo - pHi > gap || pLo - qHi > gap;
+}
+
+} // namespace
+
+bool PolygonsApart(const PointSpan& p, const PointSpan& q, double margin)
+{
+  if (p.empty() || q.empty())
+  {
+    return true;
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    Vec3 axis;
+    axis[a] = 1.0;
+    if (ApartAlong(axis, p, q, margin))
+    {
+      return true;
+    }
+  }
+  if (ApartAlong(NewellVector(p), p, q, margin) || ApartAlong(NewellVector(q), p, q, margin))
+  {
+    return true;
+  }
+  for (std::size_t i = 0; i < EdgeCount(p); ++i)
+  {
+    for (std::size_t k = 0; k < EdgeCount(q); ++k)
+    {
+      if (ApartAlong(Cross(Edge(p, i), Edge(q, k)), p, q, margin))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 } // namespace tpc

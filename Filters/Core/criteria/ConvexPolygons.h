@@ -242,4 +242,42 @@ bool ClipSegment(Vec3& a, Vec3& b, const Box3& box);
 /// Distance from `p` to the polygon (its interior included).
 double PolygonDistance(const Vec3& p, const ConvexPolygon& polygon);
 
+/// The largest `value(x)` over the corners x of `set`'s polygons clipped to
+/// `box` (0 where none meets it): where `value` is convex, its largest over
+/// the set's part in the box (the chord deviations, MeshCellError.h).
+template <typename Value>
+double LargestOverClippedCorners(const PolygonSet& set, const Box3& box, const Value& value)
+{
+  double largest = 0.0;
+  for (std::size_t i = 0; i < set.size(); ++i)
+  {
+    if (set.Bounds(i).Overlaps(box))
+    {
+      // (S_C's polygons have at most ClippedCorners' corners; one more per
+      // side of the box, and some.)
+      BoundedVector<Vec3, 2 * ClippedCorners::capacity()> clipped;
+      for (const Vec3& p : set[i].Points)
+      {
+        clipped.push_back(p);
+      }
+      ClipToBox(clipped, box);
+      for (const Vec3& p : clipped)
+      {
+        largest = std::max(largest, value(p));
+      }
+    }
+  }
+  return largest;
+}
+
+/// Whether the convex polygons `p` and `q` (corners in order) are proven
+/// more than `margin` apart: their projections on some axis - the
+/// coordinate axes, their normals, the cross products of their edges - are
+/// more than `margin` times the axis's length apart (separating axes, as
+/// for convex polytopes; coplanar polygons, which need axes in their plane,
+/// are never found apart so). Each projection is computed within a few
+/// ulps of the coordinates times the axis's length: the caller's margin
+/// must exceed that (MeshBooleanSurface.h: Rounding).
+bool PolygonsApart(const PointSpan& p, const PointSpan& q, double margin);
+
 } // namespace tpc

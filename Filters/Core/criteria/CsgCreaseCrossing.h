@@ -40,8 +40,9 @@
 // ApexOnCrease), so the output's crease runs from crease vertex to apex to
 // crease vertex along the chord of the exact crease through the cell; a
 // larger one where meshes meet draws its fan around the point of the crease
-// it was accepted with, its patch certified (and following the crease
-// within a tenth of the tolerance). A tilted box minus a 96-sided prism, as
+// it was accepted with, its patch certified (the fan over its own loop
+// following the crease within a tenth of the tolerance, the final fan
+// checked again: MeshBooleanCellError.h, Creases). A tilted box minus a 96-sided prism, as
 // two meshes (`Filter.Creases.MeshBooleanCreasesAreFollowedByOutputEdges`):
 // the output's 30-degree edges on the rims 0.24 -> 1.01 of their length at
 // 1/64, and beside them (a saw-tooth) 2.86 -> 0.22; with larger cells where
@@ -68,9 +69,10 @@
 // x is named by its tile and placed by recomputing it, so both loops hold one
 // vertex (a mesh leaf's trace is recomputed from the same listed triangles,
 // those of the same pruned expression). Hausdorff: a crease cell no larger
-// than the tolerance is bounded by its size; a larger one (two quadrics) is
-// a crease fan, certified (QuadricCellError.h). The result is checked exactly
-// anyway (SurfaceEmbedding.h).
+// than the tolerance is bounded by its size; a larger one is a crease fan,
+// certified (two quadrics: QuadricCellError.h; meshes meeting:
+// MeshBooleanCellError.h, MeshBooleanSurface.h). The result is checked
+// exactly anyway (SurfaceEmbedding.h).
 #pragma once
 
 #include "BoundaryLoops.h"

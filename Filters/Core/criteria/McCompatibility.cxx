@@ -9,7 +9,6 @@
 #include "ExactCellCriterion.h"
 #include "FaceRefinement.h"
 #include "MeshBooleanCellError.h"
-#include "MeshBooleanSurface.h"
 #include "MeshCellError.h"
 #include "PlanarCell.h"
 #include "QuadricCellError.h"
@@ -250,7 +249,7 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   // (Meshes meeting: perhaps the fan over its own loop too,
   // MeshBooleanCellError.h.)
   const bool booleanFan =
-    v.Oversized && !uniform && !planar && !v.ErrorBounded && !meshBounded && MayPredictMeshBooleanFan(*expression);
+    v.Oversized && !uniform && !planar && !v.ErrorBounded && !meshBounded && IsCertifiableMeshBoolean(*expression);
   if (v.Oversized && !planar && !v.ErrorBounded && !meshBounded && !quadricFan && !creaseFanOwnLoop && !booleanFan)
   {
     v.Reason = uniform ? SplitReason::ComplexVoxel : SplitReason::HausdorffSize;
@@ -388,7 +387,7 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     // prediction drew them: CsgCreaseCrossing.h.)
     v.ErrorBounded = v.CreaseFan = true;
   }
-  else if (!v.Oversized && !v.ErrorBounded && (LoneMeshLeaf(*expression) || IsMeshBoolean(*expression)))
+  else if (!v.Oversized && !v.ErrorBounded && (LoneMeshLeaf(*expression) || IsCertifiableMeshBoolean(*expression)))
   {
     // Within the tolerance by its size, whatever its patch; the extraction
     // certifies the patch's distance to the mesh too (MeshCellError.h), or

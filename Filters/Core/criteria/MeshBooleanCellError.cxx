@@ -15,50 +15,47 @@ namespace
 /// cell whose bound needs more is split instead, as in MeshCellError.cxx).
 constexpr std::size_t PredictionBudget = 1024;
 
-/// The crease points tried as apexes, nearest the planes' point first.
-constexpr std::size_t CreaseApexesTried = 4;
 
 /// How far S's trace on the cell's faces strays from the loop `loop`
 /// (header: The prediction): the covering pieces clipped to each face, at
 /// their corners.
 double TraceDeviation(const PolygonSet& covering, const Box3& cell, const std::vector<Vec3>& loop)
 {
+  const auto fromLoop = [&](const Vec3& p) {
+    double nearest = HUGE_VAL;
+    for (std::size_t k = 0; k < loop.size(); ++k)
+    {
+      nearest = std::min(nearest, SegmentDistance(p, loop[k], loop[(k + 1) % loop.size()]));
+    }
+    return nearest;
+  };
   double deviation = 0.0;
   for (int f = 0; f < 6; ++f)
   {
     const int axis = f / 2;
     Box3 face = cell;
     face.lo[axis] = face.hi[axis] = f % 2 ? cell.hi[axis] : cell.lo[axis];
-    for (std::size_t i = 0; i < covering.size(); ++i)
-    {
-      if (!covering.Bounds(i).Overlaps(face))
-      {
-        continue;
-      }
-      BoundedVector<Vec3, 2 * ClippedCorners::capacity()> clipped;
-      for (const Vec3& p : covering[i].Points)
-      {
-        clipped.push_back(p);
-      }
-      ClipToBox(clipped, face);
-      for (const Vec3& p : clipped)
-      {
-        double nearest = HUGE_VAL;
-        for (std::size_t k = 0; k < loop.size(); ++k)
-        {
-          nearest = std::min(nearest, SegmentDistance(p, loop[k], loop[(k + 1) % loop.size()]));
-        }
-        deviation = std::max(deviation, nearest);
-      }
-    }
+    deviation = std::max(deviation, LargestOverClippedCorners(covering, face, fromLoop));
   }
   return deviation;
 }
-/// The apexes on `creases` a fan may take in `cell`: on each segment, the
-/// point nearest `planesPoint` among those 1/32 of the cell's width inside
-/// it (as MeshCellApex keeps its own: strictly inside), nearest first.
-/// (CreaseApexes, MeshCellError.h, clamps the nearest point into that box
-/// instead, which may move it off the crease.)
+
+} // namespace
+
+bool IsCertifiableMeshBoolean(const CsgExpression& expression)
+{
+  if (!IsMeshBoolean(expression))
+  {
+    return false;
+  }
+  std::size_t listed = 0;
+  for (const CsgLeaf& leaf : expression.Leaves())
+  {
+    listed += leaf.Triangles->size();
+  }
+  return listed <= BooleanFanTriangles;
+}
+
 std::vector<Vec3> ApexesOnCreases(const Box3& cell, const std::vector<CreaseSegment>& creases, const Vec3& planesPoint)
 {
   const Box3 inner = cell.Shrunk(1.0 / 32.0);
@@ -76,38 +73,22 @@ std::vector<Vec3> ApexesOnCreases(const Box3& cell, const std::vector<CreaseSegm
     const Vec3 onCrease = a + ab * t;
     candidates.emplace_back(Norm(onCrease - planesPoint), onCrease);
   }
-  std::sort(candidates.begin(), candidates.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  // (Ties by position, so that equal points - segments sharing an end - are
+  // neighbours: each is kept once.)
+  std::sort(candidates.begin(), candidates.end(), [](const auto& x, const auto& y) {
+    return x.first != y.first ? x.first < y.first
+                              : std::lexicographical_compare(x.second.x, x.second.x + 3, y.second.x, y.second.x + 3);
+  });
   std::vector<Vec3> apexes;
   for (std::size_t k = 0; k < candidates.size() && apexes.size() < CreaseApexesTried; ++k)
   {
-    apexes.push_back(candidates[k].second);
+    if (apexes.empty() || Norm(candidates[k].second - apexes.back()) != 0.0)
+    {
+      apexes.push_back(candidates[k].second);
+    }
   }
   return apexes;
 }
-} // namespace
-
-bool MayPredictMeshBooleanFan(const CsgExpression& expression)
-{
-  if (!IsMeshBoolean(expression))
-  {
-    return false;
-  }
-  std::size_t listed = 0;
-  for (const CsgLeaf& leaf : expression.Leaves())
-  {
-    listed += leaf.Triangles->size();
-  }
-  return listed <= BooleanFanTriangles;
-}
-
-bool MeshBooleanSurfaceForTolerance(
-  const CsgExpression& expression, const PrimitiveSet& primitives, const Box3& cell, double tolerance,
-  MeshBooleanSurface& surface)
-{
-  return MeshBooleanSurfaceInCell(
-    expression, primitives, cell, BooleanPieceShare * tolerance, BooleanPieceBudget, surface);
-}
-
 std::optional<Vec3> PredictMeshBooleanFan(const CsgExpressionPtr& expression, const PrimitiveSet& primitives,
   const RootGrid& grid, const Box3& cell, const CellBoundary& boundary, double tolerance, double& predicted)
 {

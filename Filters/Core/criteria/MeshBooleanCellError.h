@@ -14,21 +14,38 @@
 //
 // The prediction. The cell's own loop L, drawn through the CSG crease tiles
 // of its expression as the extraction draws them (CsgCreaseCrossing.h: the
-// crease where the meshes meet runs through the loop's crease vertices and
-// the apex), its points placed as the extraction places them; the apex is
-// the point nearest the planes of S's pieces on the surface (MeshCellApex:
-// on the crease where both meshes' planes are among them), kept 1/32 of the
-// cell's width inside it. The fan P around it over L has E(P) bounded
-// against S's two sides. The final loop L' adds points of S's trace on the
-// cell's faces where finer neighbours sample them (crack patching); the fan
-// over L' is within E(P) + delta where delta bounds how far the trace on
-// each chord's tile strays from that chord (MeshCellError.h proves it for
-// one mesh). Here delta is how far the trace on the cell's faces (the
-// covering pieces clipped to each face, at their corners) strays from the
-// loop as a whole - no bound (a trace point near another chord counts the
-// smaller distance, and a covering piece's clipped corners need not be
-// where its distance peaks), but what the final certificate then rarely
-// refuses. The cell is accepted when E(P) + delta is within the tolerance.
+// crease where the meshes meet runs through the loop's crease vertices),
+// its points placed as the extraction places them, and an apex kept 1/32
+// of the cell's width inside it (Creases, below). The fan P around it over
+// L has E(P) bounded against S's two sides. The final loop L' adds points
+// of S's trace on the cell's faces where finer neighbours sample them
+// (crack patching); the fan over L' is within E(P) + delta where delta
+// bounds how far the trace on each chord's tile strays from that chord
+// (MeshCellError.h proves it for one mesh). Here delta is how far the trace
+// on the cell's faces (the covering pieces clipped to each face, at their
+// corners) strays from the loop as a whole - no bound (a trace point near
+// another chord counts the smaller distance, and a covering piece's clipped
+// corners need not be where its distance peaks), but what the final
+// certificate then rarely refuses. The cell is accepted when E(P) + delta
+// is within the tolerance.
+//
+// Creases. Where the meshes cross in the cell (their listed triangles'
+// intersection segments, MeshBooleanSurfaceInCell), the fan must draw that
+// crease as the CSG crease tiles draw it on the faces: its apex is a point
+// of the crease - on each segment the point nearest the point S's planes
+// give (MeshCellApex), nearest first, up to CreaseApexesTried of them - and
+// every point of the crease must lie within BooleanCreaseReach of the
+// fan's creases (CreasesFollowed, CreaseFollowing.h). A tenth of the
+// tolerance rather than one mesh's whole tolerance: the output's crease
+// then runs from crease vertex to apex to crease vertex, each on the exact
+// crease, as the cells of the tolerance's size draw it (a box minus a
+// 96-sided prism, two meshes: the rims' corners within 0.094 tolerances of
+// an output crease at 1/64, against 0.5 with the planes' point for apex and
+// no check). Where the meshes do not cross in the cell, the apex is the
+// planes' point. The extraction checks the final fan again and, where the
+// final loop's extra points bend it off the crease, tries the other crease
+// points (SurfaceExtraction.cxx) - a quality criterion, as for one mesh, no
+// part of the bound.
 // Measured on the sixteen reference Booleans of Data/CsgReference.csv at
 // 1/128 and 1/256 (2026-12-06, one run each): 2.4 times fewer triangles in
 // all (1 523 344 -> 646 712; couplingdown ∩ knot1 at 1/256 122 172 ->
@@ -44,6 +61,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <vector>
 
 namespace tpc
 {
@@ -60,24 +78,31 @@ constexpr std::size_t BooleanPieceBudget = 4096;
 /// in tolerances (header: Creases).
 constexpr double BooleanCreaseReach = 0.1;
 
-/// The most listed triangles (all meshes together) of a cell whose fan is
-/// predicted: deciding S's pieces compares each with the other meshes'
-/// polygons in the cell, so a cell holding thousands of both costs millions
-/// of comparisons - and one holding that many rarely has a fan within the
-/// tolerance. Larger cells split for their size, as before.
+/// The crease points tried as apexes (header: Creases).
+constexpr std::size_t CreaseApexesTried = 4;
+
+/// The most listed triangles (all meshes together) of a cell certified
+/// where meshes meet: deciding S's pieces compares each with the other
+/// meshes' polygons in the cell, so a cell holding thousands of both costs
+/// millions of comparisons - and one holding that many rarely has a fan
+/// within the tolerance. Such cells keep the tolerance's size, bounded by
+/// their diagonal, as before.
 constexpr std::size_t BooleanFanTriangles = 4096;
 
-/// Whether a cell of `expression` larger than the tolerance may be accepted
-/// on a predicted fan (header): meshes meet there (IsMeshBoolean), listing
-/// at most BooleanFanTriangles triangles.
-bool MayPredictMeshBooleanFan(const CsgExpression& expression);
+/// Whether the patch of a cell of `expression` is certified where meshes
+/// meet, and, larger than the tolerance, may be accepted on a predicted fan
+/// (header): meshes meet there (IsMeshBoolean), listing at most
+/// BooleanFanTriangles triangles. (Elsewhere the cell keeps the tolerance's
+/// size and is bounded by its diagonal.)
+bool IsCertifiableMeshBoolean(const CsgExpression& expression);
 
-/// S's two sides in `cell` for an expression of meshes meeting, decided as
-/// finely as the tolerance `tolerance` asks (BooleanPieceShare); false
-/// where the expression is no mesh Boolean.
-bool MeshBooleanSurfaceForTolerance(
-  const CsgExpression& expression, const PrimitiveSet& primitives, const Box3& cell, double tolerance,
-  MeshBooleanSurface& surface);
+/// The apexes on `creases` a fan may take in `cell`: on each segment, the
+/// point nearest `planesPoint` among those 1/32 of the cell's width inside
+/// it (as MeshCellApex keeps its own: strictly inside), nearest first, each
+/// once, at most CreaseApexesTried. (CreaseApexes, MeshCellError.h, clamps
+/// the nearest point into that box instead, which may move it off the
+/// crease: one mesh's crease apexes stay as they were measured.)
+std::vector<Vec3> ApexesOnCreases(const Box3& cell, const std::vector<CreaseSegment>& creases, const Vec3& planesPoint);
 
 /// The apex of the fan a cell where meshes meet, larger than the tolerance,
 /// is accepted with (header), its tiles `boundary` (as the topology tests

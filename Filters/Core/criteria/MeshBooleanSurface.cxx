@@ -21,82 +21,20 @@ struct Piece
   ClippedCorners Corners;
   std::size_t Leaf = 0;
   int Cuts = 0;
-  bool Strip = false; ///< the strip along another mesh's plane: left undecided
+  bool Strip = false; ///< the strip along another mesh's plane: not cut again (header: Deciding a piece)
 };
-
-Box3 BoundsOf(const PointSpan& corners)
-{
-  Box3 box{ corners.front(), corners.front() };
-  for (const Vec3& p : corners)
-  {
-    for (int a = 0; a < 3; ++a)
-    {
-      box.lo[a] = std::min(box.lo[a], p[a]);
-      box.hi[a] = std::max(box.hi[a], p[a]);
-    }
-  }
-  return box;
-}
 
 PointSpan SpanOf(const ClippedCorners& corners)
 {
   return { corners.data(), corners.size() };
 }
 
-/// The Newell vector of the polygon: its normal, of length twice its area.
-Vec3 NewellVector(const PointSpan& p)
-{
-  Vec3 n;
-  for (std::size_t i = 1; i + 1 < p.size(); ++i)
-  {
-    n += Cross(p[i] - p[0], p[i + 1] - p[0]);
-  }
-  return n;
-}
-
-/// The polygon's edges (a segment has one).
-std::size_t EdgeCount(const PointSpan& p)
-{
-  return p.size() == 2 ? 1 : p.size() < 2 ? 0 : p.size();
-}
-
-Vec3 Edge(const PointSpan& p, std::size_t i)
-{
-  return p[(i + 1) % p.size()] - p[i];
-}
-
-/// Whether the projections of `p` and `q` on `axis` are more than `margin`
-/// times |axis| apart.
-bool ApartAlong(const Vec3& axis, const PointSpan& p, const PointSpan& q, double margin)
-{
-  const double length = Norm(axis);
-  if (!(length > 0.0))
-  {
-    return false;
-  }
-  double pLo = HUGE_VAL, pHi = -HUGE_VAL, qLo = HUGE_VAL, qHi = -HUGE_VAL;
-  for (const Vec3& x : p)
-  {
-    const double d = Dot(axis, x);
-    pLo = std::min(pLo, d);
-    pHi = std::max(pHi, d);
-  }
-  for (const Vec3& x : q)
-  {
-    const double d = Dot(axis, x);
-    qLo = std::min(qLo, d);
-    qHi = std::max(qHi, d);
-  }
-  const double gap = margin * length;
-  return qLo - pHi > gap || pLo - qHi > gap;
-}
-
 /// Whether Phi changes with mesh `mesh`'s sign at `point`, every other
 /// leaf's exact sign read there (header: Deciding a piece).
 bool OnSurfaceAt(const CsgExpression& expression, const PrimitiveSet& primitives, std::uint32_t mesh,
-  const Vec3& point)
+  const Vec3& point, std::vector<signed char>& inside)
 {
-  std::vector<signed char> inside(expression.NodeCount(), -1); // (each other leaf read once)
+  inside.assign(expression.NodeCount(), -1); // (each other leaf read once)
   const auto evaluate = [&](bool meshInside) {
     return expression.Evaluate([&](std::uint32_t i, const CsgExpression::Node& n) {
       const CsgLeaf& leaf = n.LeafData;
@@ -121,7 +59,7 @@ bool OnSurfaceAt(const CsgExpression& expression, const PrimitiveSet& primitives
 int NearPolygons(const PointSpan& corners, std::size_t leaf, const std::vector<PolygonSet>& meshSurfaces,
   double margin, std::pair<std::size_t, std::size_t>& nearest)
 {
-  Box3 reach = BoundsOf(corners);
+  Box3 reach = BoundsOf(corners.begin(), corners.size());
   for (int a = 0; a < 3; ++a)
   {
     reach.lo[a] -= margin;
@@ -165,9 +103,9 @@ void ClipToPlane(const ClippedCorners& points, ClippedCorners& out, const Vec3& 
     }
   }
 }
-/// The part of polygon `q` in the plane of polygon `p` (unit normal `n`):
-/// the segment between the points where its sides cross the plane, in `a`
-/// and `b`; false where it does not reach across.
+/// The part of polygon `q` in the plane Dot(n, x) = `offset` (`n` a unit
+/// normal): the segment between the points where its sides cross the
+/// plane, in `a` and `b`; false where it does not reach across.
 bool SectionByPlane(const ConvexPolygon& q, const Vec3& n, double offset, Vec3& a, Vec3& b)
 {
   int found = 0;
@@ -233,9 +171,9 @@ void CrossingCreases(const std::vector<PolygonSet>& meshSurfaces, std::vector<Cr
     {
       for (const ConvexPolygon& p : meshSurfaces[i])
       {
-        for (std::size_t k = 0; k < meshSurfaces[j].size(); ++k)
+        for (std::size_t k = 0; k < meshSurfaces[j].size() && p.TwiceArea > 0.0; ++k)
         {
-          if (!meshSurfaces[j].Bounds(k).Overlaps(p.Bounds) || p.TwiceArea <= 0.0)
+          if (!meshSurfaces[j].Bounds(k).Overlaps(p.Bounds))
           {
             continue;
           }
@@ -252,38 +190,6 @@ void CrossingCreases(const std::vector<PolygonSet>& meshSurfaces, std::vector<Cr
   }
 }
 } // namespace
-
-bool PolygonsApart(const PointSpan& p, const PointSpan& q, double margin)
-{
-  if (p.empty() || q.empty())
-  {
-    return true;
-  }
-  for (int a = 0; a < 3; ++a)
-  {
-    Vec3 axis;
-    axis[a] = 1.0;
-    if (ApartAlong(axis, p, q, margin))
-    {
-      return true;
-    }
-  }
-  if (ApartAlong(NewellVector(p), p, q, margin) || ApartAlong(NewellVector(q), p, q, margin))
-  {
-    return true;
-  }
-  for (std::size_t i = 0; i < EdgeCount(p); ++i)
-  {
-    for (std::size_t k = 0; k < EdgeCount(q); ++k)
-    {
-      if (ApartAlong(Cross(Edge(p, i), Edge(q, k)), p, q, margin))
-      {
-        return true;
-      }
-    }
-  }
-  return false;
-}
 
 bool IsMeshBoolean(const CsgExpression& expression)
 {
@@ -352,6 +258,7 @@ bool MeshBooleanSurfaceInCell(const CsgExpression& expression, const PrimitiveSe
     }
   }
   std::size_t decided = 0;
+  std::vector<signed char> inside;
   while (!pending.empty())
   {
     const Piece piece = pending.back();
@@ -367,18 +274,22 @@ bool MeshBooleanSurfaceInCell(const CsgExpression& expression, const PrimitiveSe
       {
         centroid += p * (1.0 / static_cast<double>(corners.size()));
       }
-      if (OnSurfaceAt(expression, primitives, leaves[piece.Leaf].Primitive, cell.Clamp(centroid)))
+      if (OnSurfaceAt(expression, primitives, leaves[piece.Leaf].Primitive, cell.Clamp(centroid), inside))
       {
         surface.OnSurface.Add(corners.begin(), corners.size());
         surface.Covering.Add(corners.begin(), corners.size());
       }
       continue;
     }
-    // (A cut adds at most one corner to a part; the strip's two cuts two.)
-    const bool room = !piece.Strip && piece.Cuts < MostCuts &&
-      piece.Corners.size() + 2 < ClippedCorners::capacity() && decided + pending.size() + 3 <= pieceBudget;
+    // Room for the parts: a clipping keeps each corner once at most and adds
+    // at most one per side, so its part has at most twice the corners
+    // whatever the rounding does to the sides' signs (exactly, a convex
+    // polygon's part has one more at most) - the strip, clipped twice, four
+    // times.
+    const std::size_t corners2 = 2 * piece.Corners.size();
+    const bool room = !piece.Strip && piece.Cuts < MostCuts && decided + pending.size() + 3 <= pieceBudget;
     const ConvexPolygon other = meshSurfaces[nearest.first][nearest.second];
-    if (room && near == 1 && other.TwiceArea > 0.0)
+    if (room && near == 1 && other.TwiceArea > 0.0 && 2 * corners2 <= ClippedCorners::capacity())
     {
       // Near one polygon of another mesh: cut along its plane, pushed aside
       // by twice the margin both ways (header: Deciding a piece).
@@ -401,13 +312,13 @@ bool MeshBooleanSurfaceInCell(const CsgExpression& expression, const PrimitiveSe
       }
       continue;
     }
-    const Box3 box = BoundsOf(corners);
+    const Box3 box = BoundsOf(corners.begin(), corners.size());
     int axis = 0;
     for (int a = 1; a < 3; ++a)
     {
       axis = box.Width(a) > box.Width(axis) ? a : axis;
     }
-    if (room && box.Width(axis) > width)
+    if (room && box.Width(axis) > width && corners2 <= ClippedCorners::capacity())
     {
       // Near more: cut in two across its box's longest side.
       const double middle = 0.5 * (box.lo[axis] + box.hi[axis]);

@@ -32,12 +32,19 @@
 // x); when it does not, x is inside or outside F with a neighbourhood. So
 // Q lies on S or off it as a whole, decided by evaluating Phi twice, with
 // X_i in and out and the others' exact signs (MeshSolid::IsInside) at one
-// point of Q. Pieces within the margin of another mesh's surface are cut in
-// two (at the middle of their box's longest side) and decided again, down
-// to a given width; those still undecided there go into Covering only:
-// they hold the curve where the meshes meet, and leaving them out of
-// OnSurface costs the bound at most their width where a point of P is
-// nearest to S on them.
+// point of Q. A piece not proven apart from exactly one polygon R of
+// another mesh is cut along R's plane, pushed aside by twice the margin
+// both ways: the parts beyond are then apart from R along its normal (R
+// lies in its plane up to rounding) and are decided as above, while the
+// strip between, four margins thick across R's plane, is decided only
+// where it is apart from every other mesh after all and is never cut
+// again. A piece near several polygons is cut in two at the middle of its
+// box's longest side, down to a given width. The parts of a cut cover the
+// piece (up to the rounding of the cut points). Pieces still undecided go
+// into Covering only: they hold the curve where the meshes meet, and
+// leaving them out of OnSurface costs the bound at most their width (a
+// strip's, across the curve, is four margins over the sine of the angle
+// between the meshes) where a point of P is nearest to S on them.
 //
 // Apart by a margin. Two convex polygons are disjoint when their
 // projections on some axis do not overlap (separating axes: for convex
@@ -51,7 +58,7 @@
 // vertices, and each cut interpolates again - lie within the rounding
 // slack s (RoundingSlack, MeshCellError.h: a few hundred units in the last
 // place of the largest coordinate M per clipping, against 16 384; a piece
-// is cut at most 64 times, each cut an ulp or two) of the exact pieces they
+// is cut at most 48 times, each cut a few ulps) of the exact pieces they
 // stand for, and the projections are computed within a few ulps of M |a|.
 // The margin is 4 s: computed pieces more than 4 s apart stand for exact
 // ones more than 2 s apart. The point whose signs are read is Q's centroid
@@ -91,15 +98,13 @@ bool IsMeshBoolean(const CsgExpression& expression);
 /// been decided. False, `surface` empty, when the expression is no mesh
 /// Boolean. (Its sets are cleared first; their memory is reused.) With
 /// `creases`, the segments where two meshes' listed triangles cross in the
-/// cell at FollowedCreaseDegrees or more between their planes, the creases
-/// of S there (CreaseFollowing.h) - up to rounding: they are what the
-/// patch must follow, a quality criterion, no part of a bound.
+/// cell at FollowedCreaseDegrees or more between their planes: the creases
+/// of S there where two meshes meet (where three or more do, a crossing of
+/// two may lie inside a third solid, off S, and is followed all the same),
+/// up to rounding - what the patch must follow, a quality criterion, no
+/// part of a bound.
 bool MeshBooleanSurfaceInCell(const CsgExpression& expression, const PrimitiveSet& primitives, const Box3& cell,
   double width, std::size_t pieceBudget, MeshBooleanSurface& surface,
   std::vector<CreaseSegment>* creases = nullptr);
-
-/// Whether the convex polygons `p` and `q` (corners in order) are proven
-/// more than `margin` apart by a separating axis (header: Apart by a margin).
-bool PolygonsApart(const PointSpan& p, const PointSpan& q, double margin);
 
 } // namespace tpc

@@ -192,26 +192,7 @@ Vec3 MeshCellApex(const PolygonSet& surface, const Box3& cell)
 
 double ChordDeviation(const PolygonSet& surface, const Box3& tile, const Vec3& a, const Vec3& b)
 {
-  double deviation = 0.0;
-  for (std::size_t i = 0; i < surface.size(); ++i)
-  {
-    if (surface.Bounds(i).Overlaps(tile))
-    {
-      // (S_C's polygons have at most ClippedCorners' corners; one more per
-      // side of the tile, and some.)
-      BoundedVector<Vec3, 2 * ClippedCorners::capacity()> clipped;
-      for (const Vec3& p : surface[i].Points)
-      {
-        clipped.push_back(p);
-      }
-      ClipToBox(clipped, tile);
-      for (const Vec3& p : clipped)
-      {
-        deviation = std::max(deviation, SegmentDistance(p, a, b));
-      }
-    }
-  }
-  return deviation;
+  return LargestOverClippedCorners(surface, tile, [&](const Vec3& p) { return SegmentDistance(p, a, b); });
 }
 
 double SlackMagnitude(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell)

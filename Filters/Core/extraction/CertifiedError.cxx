@@ -1,5 +1,8 @@
 #include "CertifiedError.h"
 
+#include "ExactCellCriterion.h"
+#include "MeshBooleanCellError.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -30,10 +33,35 @@ double CertifiedPatchError(const QuadricCellError& bound, const CellPatches& pat
   return error <= bound.Margin ? error : HUGE_VAL;
 }
 
-HausdorffEstimate CertifiedMeshCellError(const PolygonSet& surface, const CellPatches& patches,
-  const TriangleMesh& mesh, double slack, double enough, double giveUp, std::size_t budget)
+bool SurfaceOfCell(
+  const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& prims, bool creases, CellSurface& surface)
 {
-  return CertifiedMeshPatchError(surface, PatchTriangles(patches, mesh), slack, enough, giveUp, budget);
+  const OctreeNode& node = tree.Nodes[n];
+  const CsgExpression& expression = *tree.Expressions[n];
+  const Box3 box = tree.Grid.CellBox(node.Level, node.Ijk);
+  surface.Creases.clear();
+  if (const CsgLeaf* leaf = LoneMeshLeaf(expression))
+  {
+    surface.OneMesh = true;
+    surface.Slack = RoundingSlack(*leaf, prims, box);
+    SurfaceInCell(*leaf, prims, box, surface.Mesh);
+    return true;
+  }
+  surface.OneMesh = false;
+  const bool boolean = IsCertifiableMeshBoolean(expression) &&
+    MeshBooleanSurfaceInCell(expression, prims, box, BooleanPieceShare * tree.HausdorffTolerance,
+      BooleanPieceBudget, surface.Boolean, creases ? &surface.Creases : nullptr);
+  surface.Slack = surface.Boolean.Slack;
+  return boolean;
+}
+
+HausdorffEstimate CertifiedCellError(const CellSurface& surface, const CellPatches& patches, const TriangleMesh& mesh,
+  double enough, double giveUp, std::size_t budget)
+{
+  HausdorffEstimate e = CertifiedSurfacePatchError(surface.OnSurface(), surface.Covering(),
+    PatchTriangles(patches, mesh), surface.Slack, enough, giveUp, budget);
+  e.Lower = surface.OneMesh ? e.Lower : 0.0;
+  return e;
 }
 
 } // namespace tpc

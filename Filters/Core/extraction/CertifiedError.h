@@ -2,10 +2,13 @@
 // QuadricCellError.h evaluated on the triangles and loop chords the cell
 // actually drew, after crack patching and apex placement; or, where one mesh
 // is the surface, MeshCellError.h's distance between those triangles and the
-// mesh in the cell.
+// mesh in the cell; where meshes meet, the same against the surface's two
+// sides (MeshBooleanSurface.h).
 #pragma once
 
+#include "AdaptiveOctree.h"
 #include "CellPatches.h"
+#include "MeshBooleanSurface.h"
 #include "MeshCellError.h"
 #include "QuadricCellError.h"
 #include "TriangleMesh.h"
@@ -25,9 +28,33 @@ std::vector<SourceTriangle> PatchTriangles(const CellPatches& patches, const Tri
 /// margin (the argument's segments must stay in the grown cell).
 double CertifiedPatchError(const QuadricCellError& bound, const CellPatches& patches, const TriangleMesh& mesh);
 
-/// E(P) of MeshCellError.h for the cell's `patches` against `surface` (S in
-/// the cell): CertifiedMeshPatchError on the patch's triangles.
-HausdorffEstimate CertifiedMeshCellError(const PolygonSet& surface, const CellPatches& patches,
-  const TriangleMesh& mesh, double slack, double enough, double giveUp, std::size_t budget);
+/// S in a surface leaf whose patch is certified against it: where one mesh
+/// is the surface S_C (MeshCellError.h), where meshes meet S from both
+/// sides (MeshBooleanSurface.h), with the creases where they cross when
+/// asked; the memory reused from cell to cell (ScratchPool.h).
+struct CellSurface
+{
+  PolygonSet Mesh;
+  MeshBooleanSurface Boolean;
+  std::vector<CreaseSegment> Creases;
+  bool OneMesh = true;
+  double Slack = 0.0;
+
+  const PolygonSet& OnSurface() const { return this->OneMesh ? this->Mesh : this->Boolean.OnSurface; }
+  const PolygonSet& Covering() const { return this->OneMesh ? this->Mesh : this->Boolean.Covering; }
+};
+
+/// S in leaf `n`, where one mesh is the surface or meshes meet
+/// (IsCertifiableMeshBoolean), in `surface` - with the creases where meshes
+/// cross if `creases` (MeshBooleanSurfaceInCell); false where it is
+/// neither.
+bool SurfaceOfCell(
+  const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& prims, bool creases, CellSurface& surface);
+
+/// E(P) of the cell's `patches` against `surface` (MeshCellError.h,
+/// CertifiedSurfacePatchError); Lower kept only where it is a distance the
+/// patch attains (one mesh), else 0.
+HausdorffEstimate CertifiedCellError(const CellSurface& surface, const CellPatches& patches, const TriangleMesh& mesh,
+  double enough, double giveUp, std::size_t budget);
 
 } // namespace tpc

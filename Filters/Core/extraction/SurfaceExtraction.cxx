@@ -170,52 +170,6 @@ double FirstCertificateAim(const AdaptiveOctree& tree)
                                           : std::min(std::max(1.1 * attained, 0.25 * tolerance), tolerance);
 }
 
-/// S in a surface leaf whose patch is certified against it: where one mesh
-/// is the surface S_C (MeshCellError.h), where meshes meet S from both
-/// sides (MeshBooleanSurface.h); the memory reused from cell to cell
-/// (ScratchPool.h).
-struct CellSurface
-{
-  PolygonSet Mesh;
-  MeshBooleanSurface Boolean;
-  bool OneMesh = true;
-  double Slack = 0.0;
-
-  const PolygonSet& OnSurface() const { return this->OneMesh ? this->Mesh : this->Boolean.OnSurface; }
-  const PolygonSet& Covering() const { return this->OneMesh ? this->Mesh : this->Boolean.Covering; }
-};
-
-/// S in leaf `n`, where one mesh is the surface or meshes meet, in
-/// `surface`; false where it is neither.
-bool SurfaceOfCell(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& prims, CellSurface& surface)
-{
-  const OctreeNode& node = tree.Nodes[n];
-  const CsgExpression& expression = *tree.Expressions[n];
-  const Box3 box = tree.Grid.CellBox(node.Level, node.Ijk);
-  if (const CsgLeaf* leaf = LoneMeshLeaf(expression))
-  {
-    surface.OneMesh = true;
-    surface.Slack = RoundingSlack(*leaf, prims, box);
-    SurfaceInCell(*leaf, prims, box, surface.Mesh);
-    return true;
-  }
-  surface.OneMesh = false;
-  const bool boolean = MeshBooleanSurfaceForTolerance(expression, prims, box, tree.HausdorffTolerance, surface.Boolean);
-  surface.Slack = surface.Boolean.Slack;
-  return boolean;
-}
-
-/// E(P) of `patches` against `surface` (CertifiedSurfacePatchError); Lower
-/// kept only where it is a distance the patch attains (one mesh), else 0.
-HausdorffEstimate CertifiedCellError(const CellSurface& surface, const CellPatches& patches, const TriangleMesh& mesh,
-  double enough, double giveUp, std::size_t budget)
-{
-  HausdorffEstimate e = CertifiedSurfacePatchError(surface.OnSurface(), surface.Covering(),
-    PatchTriangles(patches, mesh), surface.Slack, enough, giveUp, budget);
-  e.Lower = surface.OneMesh ? e.Lower : 0.0;
-  return e;
-}
-
 /// A mesh cell larger than the tolerance (its prediction `prediction`)
 /// spanned by Marching Cubes' fan from a loop point (TriangulateCellFromLoopPoint):
 /// the apex fan's prediction says nothing of it, so it is kept on its own
@@ -230,9 +184,9 @@ HausdorffEstimate CertifiedCellError(const CellSurface& surface, const CellPatch
 /// scenes of one mesh). False when the loop allows no such fan or it is not
 /// kept.
 bool MeshCellFromLoopPoint(const AdaptiveOctree& tree, std::uint32_t n, const BoundaryLoopSet& loops,
-  const CrossingVertices& vertices, const TriangleMesh& mesh, const PolygonSet& surface,
-  const std::vector<CreaseSegment>& creases, double slack, double aim,
-  const AdaptiveOctree::MeshCellPrediction& prediction, CellPatches& patches, CellCertificate& certificate)
+  const CrossingVertices& vertices, const TriangleMesh& mesh, const CellSurface& surface,
+  const std::vector<CreaseSegment>& creases, double aim, const AdaptiveOctree::MeshCellPrediction& prediction,
+  CellPatches& patches, CellCertificate& certificate)
 {
   CellPatches fan;
   bool fromMeshEdge = false;
@@ -251,7 +205,7 @@ bool MeshCellFromLoopPoint(const AdaptiveOctree& tree, std::uint32_t n, const Bo
   const double keptWithin =
     fromMeshEdge ? std::min(std::max(MeshEdgeFanKeptWithin * tolerance, ownFan), tolerance) : tolerance;
   const HausdorffEstimate e =
-    CertifiedMeshCellError(surface, fan, mesh, slack, std::min(aim, keptWithin), keptWithin, FirstCertificateBudget);
+    CertifiedCellError(surface, fan, mesh, std::min(aim, keptWithin), keptWithin, FirstCertificateBudget);
   if (!(e.Upper <= keptWithin))
   {
     return false;
@@ -262,33 +216,29 @@ bool MeshCellFromLoopPoint(const AdaptiveOctree& tree, std::uint32_t n, const Bo
   return true;
 }
 
-/// A mesh cell larger than the tolerance whose fan around its prediction's
-/// apex `apex`, drawn over the final loop in `patches`, misses one of its
-/// `creases` (the prediction checked the fan over the cell's own loop; the
-/// final loop's points between its own may change the bends at the spokes:
-/// CreaseFollowing.h): the first fan around a point of a crease
-/// (CreaseApexes) that follows them all and is certified within the
-/// tolerance on its own, in `patches`, its certificate in `certificate`.
-/// False - `patches` unchanged - where the fan follows them or none does.
-bool MeshCellFromOtherApex(const AdaptiveOctree& tree, std::uint32_t n, const BoundaryLoopSet& loops,
-  const PrimitiveSet& prims, const CrossingVertices& vertices, const TriangleMesh& mesh, const PolygonSet& surface,
-  const std::vector<CreaseSegment>& creases, double slack, double aim, const Vec3& apex, CellPatches& patches,
-  CellCertificate& certificate)
+/// A cell larger than the tolerance whose fan around the apex `apex` it
+/// was accepted with, drawn over the final loop in `patches`, misses one of
+/// its `creases` by more than `reach` (the prediction checked the fan over
+/// the cell's own loop; the final loop's points between its own may change
+/// the bends at the spokes: CreaseFollowing.h): the first fan around one of
+/// `others` (points of the creases) that follows them all and is certified
+/// within the tolerance on its own, in `patches`, its certificate in
+/// `certificate`. False - `patches` unchanged - where the fan follows them
+/// or none does. (One mesh: CreaseApexes, within CreaseReach; meshes
+/// meeting: ApexesOnCreases, within BooleanCreaseReach.)
+bool CellFromOtherApex(const AdaptiveOctree& tree, std::uint32_t n, const BoundaryLoopSet& loops,
+  const PrimitiveSet& prims, const CrossingVertices& vertices, const TriangleMesh& mesh, const CellSurface& surface,
+  const std::vector<CreaseSegment>& creases, const std::vector<Vec3>& others, double reach, double aim,
+  const Vec3& apex, CellPatches& patches, CellCertificate& certificate)
 {
-  if (loops.LoopSizes.size() != 1)
+  if (loops.LoopSizes.size() != 1 || CreasesFollowed(creases, PatchTriangles(patches, mesh), reach))
   {
     return false;
   }
   const OctreeNode& node = tree.Nodes[n];
   const CsgExpression& expression = *tree.Expressions[n];
-  const Box3 box = tree.Grid.CellBox(node.Level, node.Ijk);
   const double tolerance = tree.HausdorffTolerance;
-  const double reach = CreaseReach * tolerance;
-  if (CreasesFollowed(creases, PatchTriangles(patches, mesh), reach))
-  {
-    return false;
-  }
-  for (const Vec3& other : CreaseApexes(box, creases, apex))
+  for (const Vec3& other : others)
   {
     if (Norm(other - apex) == 0.0)
     {
@@ -301,7 +251,7 @@ bool MeshCellFromOtherApex(const AdaptiveOctree& tree, std::uint32_t n, const Bo
       continue;
     }
     const HausdorffEstimate e =
-      CertifiedMeshCellError(surface, fan, mesh, slack, std::min(aim, tolerance), tolerance, FirstCertificateBudget);
+      CertifiedCellError(surface, fan, mesh, std::min(aim, tolerance), tolerance, FirstCertificateBudget);
     if (e.Upper <= tolerance)
     {
       patches = std::move(fan);
@@ -326,11 +276,12 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
   const Box3 box = tree.Grid.CellBox(node.Level, node.Ijk);
   const bool bounded = node.State == CellState::Surface && node.ErrorBounded;
   CellCertificate certificate;
-  if (bounded && SurfaceOfCell(tree, n, prims, surface))
+  const auto booleanFan = tree.BooleanFanApexes.find(n);
+  if (bounded && SurfaceOfCell(tree, n, prims, booleanFan != tree.BooleanFanApexes.end(), surface))
   {
-    // (Predictions are made where one mesh is the surface only.)
+    // (MeshCellPredictions: where one mesh is the surface; BooleanFanApexes:
+    // where meshes meet.)
     const auto prediction = tree.MeshCellPredictions.find(n);
-    const double slack = surface.Slack;
     certificate.Mesh = true;
     if (prediction != tree.MeshCellPredictions.end())
     {
@@ -340,8 +291,8 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
       const std::vector<CreaseSegment> creases = IsOneMesh(*tree.SceneExpression)
         ? CreasesInCell(*LoneMeshLeaf(expression), prims, box)
         : std::vector<CreaseSegment>();
-      if (MeshCellFromLoopPoint(tree, n, loops, vertices, mesh, surface.Mesh, creases, slack, aim, prediction->second,
-            patches, certificate))
+      if (MeshCellFromLoopPoint(
+            tree, n, loops, vertices, mesh, surface, creases, aim, prediction->second, patches, certificate))
       {
         return certificate;
       }
@@ -352,7 +303,8 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
       // certified on its own anyway.
       TriangulateCell(
         loops, node, expression, prims, tree.Grid, vertices, mesh, patches, nullptr, &prediction->second.Apex);
-      if (MeshCellFromOtherApex(tree, n, loops, prims, vertices, mesh, surface.Mesh, creases, slack, aim,
+      if (CellFromOtherApex(tree, n, loops, prims, vertices, mesh, surface, creases,
+            CreaseApexes(box, creases, prediction->second.Apex), CreaseReach * tree.HausdorffTolerance, aim,
             prediction->second.Apex, patches, certificate))
       {
         return certificate;
@@ -375,12 +327,20 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
         return certificate;
       }
     }
-    else if (const auto fan = tree.BooleanFanApexes.find(n); fan != tree.BooleanFanApexes.end())
+    else if (booleanFan != tree.BooleanFanApexes.end())
     {
       // Meshes meeting in a cell larger than the tolerance: the fan around
-      // the apex it was accepted with, over the final loop, bounded by its
+      // the apex it was accepted with, over the final loop, or around
+      // another point of the crease where that one misses it; bounded by its
       // certificate alone (MeshBooleanCellError.h).
-      TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches, nullptr, &fan->second);
+      const Vec3& apex = booleanFan->second;
+      TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches, nullptr, &apex);
+      if (CellFromOtherApex(tree, n, loops, prims, vertices, mesh, surface, surface.Creases,
+            ApexesOnCreases(box, surface.Creases, apex), BooleanCreaseReach * tree.HausdorffTolerance, aim, apex,
+            patches, certificate))
+      {
+        return certificate;
+      }
     }
     else
     {
@@ -473,7 +433,7 @@ bool RefineMeshCertificates(const AdaptiveOctree& tree, const std::vector<std::u
             CellCertificate& c = certificates[pending[k]];
             if (c.Error > enough)
             {
-              SurfaceOfCell(tree, cells[pending[k]], prims, *surface);
+              SurfaceOfCell(tree, cells[pending[k]], prims, false, *surface);
               const HausdorffEstimate e = CertifiedCellError(
                 *surface, patches[pending[k]], mesh, enough, std::min(c.Bound, tree.HausdorffTolerance), 4096);
               c.Error = std::min(c.Error, e.Upper);

@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <random>
 #include <string>
@@ -55,14 +56,58 @@ double SetDistance(const tpc::PolygonSet& set, const Vec3& x)
   return nearest;
 }
 
+/// Whether segment [p, q] crosses triangle `t` (in floating point: the
+/// pieces checked are proven apart by far more than its rounding).
+bool SegmentCrossesTriangle(const Vec3& p, const Vec3& q, const std::array<Vec3, 3>& t)
+{
+  const Vec3 n = tpc::Cross(t[1] - t[0], t[2] - t[0]);
+  const double sp = tpc::Dot(n, p - t[0]), sq = tpc::Dot(n, q - t[0]);
+  if ((sp > 0 && sq > 0) || (sp < 0 && sq < 0) || sp == sq)
+  {
+    return false; // (on one side, or in the plane: coplanar pieces are never decided)
+  }
+  const Vec3 x = p + (q - p) * (sp / (sp - sq));
+  for (int k = 0; k < 3; ++k)
+  {
+    if (tpc::Dot(n, tpc::Cross(t[(k + 1) % 3] - t[k], x - t[k])) < 0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Whether the convex polygon `q` and triangle `t` meet: an edge of one
+/// crosses the other (fan triangles of `q`).
+bool PolygonMeetsTriangle(const PointSpan& q, const std::array<Vec3, 3>& t)
+{
+  for (std::size_t k = 0; k < q.size(); ++k)
+  {
+    if (SegmentCrossesTriangle(q[k], q[(k + 1) % q.size()], t))
+    {
+      return true;
+    }
+  }
+  for (std::size_t k = 1; k + 1 < q.size(); ++k)
+  {
+    for (int e = 0; e < 3; ++e)
+    {
+      if (SegmentCrossesTriangle(t[e], t[(e + 1) % 3], { q[0], q[k], q[k + 1] }))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 struct Tally
 {
-  int Cells = 0, OnChecked = 0, CoveredChecked = 0, OffSurfaceLeftOut = 0, Creases = 0;
+  int Cells = 0, OnChecked = 0, ApartChecked = 0, CoveredChecked = 0, OffSurfaceLeftOut = 0, Creases = 0;
 };
 
 /// Checks S's two sides in every cell of a 8^3 grid over [-1, 1]^3 where
-/// the scene's two meshes meet (header), points within `away` of the other
-/// mesh left unchecked (the brute-force sign test needs room).
+/// the scene's meshes meet (header).
 void CheckEveryCell(const tpctest::Scene& scene, Tally& tally)
 {
   constexpr int N = 8;
@@ -84,16 +129,46 @@ void CheckEveryCell(const tpctest::Scene& scene, Tally& tally)
       surface, &creases));
     ++tally.Cells;
     const std::vector<tpc::CsgLeaf> leaves = pruned.Expression->Leaves();
-    ASSERT_EQ(leaves.size(), 2u);
-    const auto awayFromTheOther = [&](std::size_t leaf, const Vec3& x) {
-      return MeshDistance(scene.Primitives.Meshes[leaves[1 - leaf].Primitive], x) > Away;
+    ASSERT_GE(leaves.size(), 2u);
+    const auto meshOf = [&](std::size_t leaf) -> const MeshSolid& {
+      return scene.Primitives.Meshes[leaves[leaf].Primitive];
+    };
+    // (Points within Away of another mesh than their own are not checked:
+    // the brute-force sign test needs room.)
+    const auto awayFromTheOthers = [&](std::size_t leaf, const Vec3& x) {
+      for (std::size_t other = 0; other < leaves.size(); ++other)
+      {
+        if (other != leaf && MeshDistance(meshOf(other), x) <= Away)
+        {
+          return false;
+        }
+      }
+      return true;
     };
     const auto leafOf = [&](const Vec3& x) {
-      return MeshDistance(scene.Primitives.Meshes[leaves[0].Primitive], x) <
-          MeshDistance(scene.Primitives.Meshes[leaves[1].Primitive], x)
-        ? 0
-        : 1;
+      std::size_t nearest = 0;
+      for (std::size_t leaf = 1; leaf < leaves.size(); ++leaf)
+      {
+        nearest = MeshDistance(meshOf(leaf), x) < MeshDistance(meshOf(nearest), x) ? leaf : nearest;
+      }
+      return nearest;
     };
+    // Each piece on S crosses no other mesh's triangle in the cell (decided
+    // with exact signs a margin away from them: it must not even touch).
+    for (const tpc::ConvexPolygon& q : surface.OnSurface)
+    {
+      const std::size_t own = leafOf(q.Points[0]);
+      for (std::size_t other = 0; other < leaves.size(); ++other)
+      {
+        for (const std::uint32_t t : other == own ? tpc::TriangleList() : *leaves[other].Triangles)
+        {
+          const MeshSolid& m = meshOf(other);
+          EXPECT_FALSE(PolygonMeetsTriangle(q.Points, { m.Vertex(t, 0), m.Vertex(t, 1), m.Vertex(t, 2) }))
+            << "cell " << i;
+          ++tally.ApartChecked;
+        }
+      }
+    }
     // On S: the centroid and points towards each corner of every piece.
     for (const tpc::ConvexPolygon& q : surface.OnSurface)
     {
@@ -105,7 +180,7 @@ void CheckEveryCell(const tpctest::Scene& scene, Tally& tally)
       for (std::size_t k = 0; k <= q.Points.size(); ++k)
       {
         const Vec3 x = k == 0 ? centroid : centroid + (q.Points[k - 1] - centroid) * 0.8;
-        if (q.TwiceArea > 1e-12 && awayFromTheOther(leafOf(x), x))
+        if (q.TwiceArea > 1e-12 && awayFromTheOthers(leafOf(x), x))
         {
           EXPECT_TRUE(OnSurfaceByBruteForce(scene, x, q.Normal)) << "cell " << i;
           ++tally.OnChecked;
@@ -113,7 +188,7 @@ void CheckEveryCell(const tpctest::Scene& scene, Tally& tally)
       }
     }
     // Every point of S in the cell covered; points off S counted.
-    for (std::size_t leaf = 0; leaf < 2; ++leaf)
+    for (std::size_t leaf = 0; leaf < leaves.size(); ++leaf)
     {
       for (const tpc::ConvexPolygon& q : tpc::SurfaceInCell(leaves[leaf], scene.Primitives, cell))
       {
@@ -127,7 +202,7 @@ void CheckEveryCell(const tpctest::Scene& scene, Tally& tally)
           }
           const std::size_t k = 1 + static_cast<std::size_t>(unit(random) * (q.Points.size() - 2)) % (q.Points.size() - 2);
           const Vec3 x = q.Points[0] * (1 - a - b) + q.Points[k] * a + q.Points[k + 1] * b;
-          if (!awayFromTheOther(leaf, x))
+          if (!awayFromTheOthers(leaf, x))
           {
             continue;
           }
@@ -144,13 +219,17 @@ void CheckEveryCell(const tpctest::Scene& scene, Tally& tally)
         }
       }
     }
-    // The creases lie on both meshes.
+    // The creases lie on two meshes each.
     for (const tpc::CreaseSegment& c : creases)
     {
       for (const Vec3& x : { c.A, c.B, (c.A + c.B) * 0.5 })
       {
-        EXPECT_LE(MeshDistance(scene.Primitives.Meshes[leaves[0].Primitive], x), 1e-12);
-        EXPECT_LE(MeshDistance(scene.Primitives.Meshes[leaves[1].Primitive], x), 1e-12);
+        int on = 0;
+        for (std::size_t leaf = 0; leaf < leaves.size(); ++leaf)
+        {
+          on += MeshDistance(meshOf(leaf), x) <= 1e-12 ? 1 : 0;
+        }
+        EXPECT_GE(on, 2) << "cell " << i;
       }
       ++tally.Creases;
     }
@@ -158,16 +237,35 @@ void CheckEveryCell(const tpctest::Scene& scene, Tally& tally)
 }
 } // namespace
 
+/// Expects every check of CheckEveryCell to have checked something.
+void ExpectChecked(const Tally& tally, const std::string& which)
+{
+  // (Cells where the meshes meet, pieces on S and apart from the other
+  // meshes, points of S covered, points off S left out, creases.)
+  EXPECT_GE(tally.Cells, 10) << which;
+  EXPECT_GE(tally.OnChecked, 100) << which;
+  EXPECT_GE(tally.ApartChecked, 1000) << which;
+  EXPECT_GE(tally.CoveredChecked, 100) << which;
+  EXPECT_GE(tally.OffSurfaceLeftOut, 100) << which;
+  EXPECT_GE(tally.Creases, 10) << which;
+}
+
 TEST(MeshBooleanSurface, PiecesOnTheSurfaceAndCoveringItAgreeWithBruteForce)
 {
-  // A tilted icosphere through a tilted box: their surfaces cross at 20-90
-  // degrees along a closed curve.
+  // A tilted icosphere through a tilted box, their surfaces crossing at
+  // 20-90 degrees along a closed curve, in every operation; the same sphere
+  // barely through the box's face (crossing at a few degrees); and the
+  // sphere minus the union of the box and a torus (three meshes).
   const Vec3 axis = tpc::Normalized(Vec3(0.3, 1.0, 0.2));
   const MeshSolid sphere = tpctest::AffineMesh(tpctest::SphereMesh({ 0, 0, 0 }, 0.55, 2), { 1, 1, 1 }, axis, 0.3,
     { 0.31, 0.02, -0.03 });
   const MeshSolid box =
     tpctest::AffineMesh(tpctest::CubeMesh({ -0.4, -0.4, -0.4 }, { 0.4, 0.4, 0.4 }), { 1, 1.3, 0.9 }, axis, 0.7,
       { -0.2, 0.01, 0.02 });
+  const MeshSolid grazed = tpctest::AffineMesh(tpctest::CubeMesh({ -0.9, -0.9, -0.9 }, { 0.9, 0.9, 0.37 }),
+    { 1, 1, 1 }, { 1, 0, 0 }, 0.03, { 0.31, 0.02, -0.03 });
+  const MeshSolid ring = tpctest::AffineMesh(
+    tpctest::TorusMesh({ 0, 0, 0 }, 0.5, 0.12, 24, 10), { 1, 1, 1 }, { 0, 1, 0 }, 1.2, { 0.3, 0.0, 0.0 });
   for (const CsgTerm::Op op : { CsgTerm::Op::Union, CsgTerm::Op::Intersection, CsgTerm::Op::Difference })
   {
     tpctest::SceneBuilder builder;
@@ -175,16 +273,67 @@ TEST(MeshBooleanSurface, PiecesOnTheSurfaceAndCoveringItAgreeWithBruteForce)
     builder.Finish(CsgTerm::Combine(op, { a, b }));
     Tally tally;
     CheckEveryCell(builder.Scene, tally);
-    const std::string which = "operation " + std::to_string(static_cast<int>(op));
-    // (So that the checks above checked something: cells where the meshes
-    // meet, pieces on S, points of S covered, points off S left out, and
-    // creases.)
-    EXPECT_GE(tally.Cells, 10) << which;
-    EXPECT_GE(tally.OnChecked, 100) << which;
-    EXPECT_GE(tally.CoveredChecked, 100) << which;
-    EXPECT_GE(tally.OffSurfaceLeftOut, 100) << which;
-    EXPECT_GE(tally.Creases, 10) << which;
+    ExpectChecked(tally, "operation " + std::to_string(static_cast<int>(op)));
   }
+  {
+    tpctest::SceneBuilder builder;
+    const CsgTerm a = builder.Mesh(sphere), b = builder.Mesh(grazed);
+    builder.Finish(CsgTerm::Combine(CsgTerm::Op::Difference, { a, b }));
+    Tally tally;
+    CheckEveryCell(builder.Scene, tally);
+    ExpectChecked(tally, "grazing");
+  }
+  {
+    tpctest::SceneBuilder builder;
+    const CsgTerm a = builder.Mesh(sphere), b = builder.Mesh(box), c = builder.Mesh(ring);
+    builder.Finish(tpctest::SceneBuilder::Difference({ a, tpctest::SceneBuilder::Union({ b, c }) }));
+    Tally tally;
+    CheckEveryCell(builder.Scene, tally);
+    ExpectChecked(tally, "three meshes");
+  }
+}
+
+TEST(MeshBooleanSurface, OnlyExpressionsOfMeshesMeetingAreMeshBooleans)
+{
+  const MeshSolid cube = tpctest::CubeMesh({ -0.5, -0.5, -0.5 }, { 0.5, 0.5, 0.5 });
+  const MeshSolid shifted = tpctest::CubeMesh({ -0.3, -0.4, -0.5 }, { 0.7, 0.6, 0.5 });
+  tpctest::SceneBuilder builder;
+  const CsgTerm a = builder.Mesh(cube), b = builder.Mesh(shifted), sphere = builder.Sphere({ 0, 0, 0 }, 0.6);
+  const tpc::PrimitiveSet& primitives = builder.Scene.Primitives;
+  // (Pruned to a box, as the cells' expressions are: mesh leaves then list
+  // their triangles.)
+  const auto meshBoolean = [&](const CsgTerm& t) {
+    const auto pruned = tpc::CsgExpression::Prune(tpc::CsgExpression::FromTerm(t), { { -1, -1, -1 }, { 1, 1, 1 } },
+      primitives);
+    return pruned.Sign == tpc::RegionSign::Mixed && tpc::IsMeshBoolean(*pruned.Expression);
+  };
+  EXPECT_TRUE(meshBoolean(CsgTerm::Combine(CsgTerm::Op::Union, { a, b })));
+  EXPECT_FALSE(meshBoolean(a));
+  EXPECT_FALSE(meshBoolean(CsgTerm::Combine(CsgTerm::Op::Difference, { a, sphere })));
+  // (A mesh and its own complement: one mesh in two leaves.)
+  EXPECT_FALSE(meshBoolean(
+    CsgTerm::Combine(CsgTerm::Op::Union, { CsgTerm::Combine(CsgTerm::Op::Difference, { b, a }), a })));
+  // (Not pruned: the leaves list no triangles.)
+  EXPECT_FALSE(tpc::IsMeshBoolean(*tpc::CsgExpression::FromTerm(CsgTerm::Combine(CsgTerm::Op::Union, { a, b }))));
+}
+
+TEST(MeshBooleanSurface, ThePatchIsMeasuredAgainstEachSideInItsDirection)
+{
+  // S known from two sides: a unit square on it, and the square with a
+  // triangle 0.3 above it covering it. The square's patch is on S (h(P, on
+  // S) = 0) but the covering triangle is 0.3 from it: the bound must see
+  // that, and the sets swapped must not (the triangle would be a target).
+  tpc::PolygonSet on, covering;
+  on.Add({ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 } });
+  covering.Add({ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 } });
+  covering.Add({ { 0.2, 0.2, 0.3 }, { 0.8, 0.2, 0.3 }, { 0.5, 0.8, 0.3 } });
+  const std::vector<tpc::SourceTriangle> patch = { { Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0) },
+    { Vec3(0, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0) } };
+  const tpc::HausdorffEstimate e = tpc::CertifiedSurfacePatchError(on, covering, patch, 0.0, 0.01, 1.0, 4096);
+  EXPECT_GE(e.Upper, 0.3);
+  EXPECT_LE(e.Upper, 0.33); // (refined to within 10 % of the distance attained)
+  const tpc::HausdorffEstimate swapped = tpc::CertifiedSurfacePatchError(covering, on, patch, 0.0, 0.01, 1.0, 4096);
+  EXPECT_LE(swapped.Upper, 0.01);
 }
 
 TEST(MeshBooleanSurface, PolygonsAreApartOnlyFartherThanTheMargin)
