@@ -15,7 +15,6 @@ namespace
 /// cell whose bound needs more is split instead, as in MeshCellError.cxx).
 constexpr std::size_t PredictionBudget = 1024;
 
-
 /// How far S's trace on the cell's faces strays from the loop `loop`
 /// (header: The prediction): the covering pieces clipped to each face, at
 /// their corners.
@@ -39,7 +38,6 @@ double TraceDeviation(const PolygonSet& covering, const Box3& cell, const std::v
   }
   return deviation;
 }
-
 } // namespace
 
 bool IsCertifiableMeshBoolean(const CsgExpression& expression)
@@ -89,6 +87,7 @@ std::vector<Vec3> ApexesOnCreases(const Box3& cell, const std::vector<CreaseSegm
   }
   return apexes;
 }
+
 std::optional<Vec3> PredictMeshBooleanFan(const CsgExpressionPtr& expression, const PrimitiveSet& primitives,
   const RootGrid& grid, const Box3& cell, const CellBoundary& boundary, double tolerance, double& predicted)
 {

@@ -103,6 +103,7 @@ void ClipToPlane(const ClippedCorners& points, ClippedCorners& out, const Vec3& 
     }
   }
 }
+
 /// The part of polygon `q` in the plane Dot(n, x) = `offset` (`n` a unit
 /// normal): the segment between the points where its sides cross the
 /// plane, in `a` and `b`; false where it does not reach across.
