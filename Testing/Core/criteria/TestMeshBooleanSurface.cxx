@@ -1,10 +1,13 @@
 // S in a cell where meshes meet, bounded from both sides
 // (MeshBooleanSurface.h), against brute force: every piece said to be on S
-// is (the solid's sign changes across it), every point of S in the cell
-// lies on a covering piece while points of the meshes off S (one mesh
-// inside the other solid) are left out, and the crease segments lie on both
-// meshes; the separating-axis test proves apart only polygons farther apart
-// than the margin asked.
+// is (the solid's sign changes across it) and crosses no other mesh's
+// triangle, every point of S in the cell lies on a covering piece while
+// points of the meshes off S (one mesh inside another solid) are left out,
+// and the crease segments lie on two meshes - for two meshes crossing in
+// every operation, at a grazing angle, and three meshes; which expressions
+// are mesh Booleans; the patch measured against each side in its
+// direction; the separating-axis test proves apart only polygons farther
+// apart than the margin asked.
 #include "MeshBooleanSurface.h"
 #include "MeshBuilders.h"
 #include "MeshCellError.h"
