@@ -42,16 +42,13 @@ double TraceDeviation(const PolygonSet& covering, const Box3& cell, const std::v
 
 bool IsCertifiableMeshBoolean(const CsgExpression& expression)
 {
-  if (!IsMeshBoolean(expression))
-  {
-    return false;
-  }
+  const std::vector<CsgLeaf> leaves = MeshBooleanLeaves(expression);
   std::size_t listed = 0;
-  for (const CsgLeaf& leaf : expression.Leaves())
+  for (const CsgLeaf& leaf : leaves)
   {
     listed += leaf.Triangles->size();
   }
-  return listed <= BooleanFanTriangles;
+  return !leaves.empty() && listed <= BooleanFanTriangles;
 }
 
 std::vector<Vec3> ApexesOnCreases(const Box3& cell, const std::vector<CreaseSegment>& creases, const Vec3& planesPoint)

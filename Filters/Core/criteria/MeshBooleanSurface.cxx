@@ -192,28 +192,40 @@ void CrossingCreases(const std::vector<PolygonSet>& meshSurfaces, std::vector<Cr
 }
 } // namespace
 
-bool IsMeshBoolean(const CsgExpression& expression)
+std::vector<CsgLeaf> MeshBooleanLeaves(const CsgExpression& expression)
 {
-  const std::vector<CsgLeaf> leaves = expression.Leaves();
+  // (A quadric leaf first, without building the list: most cells of a CSG
+  // scene stop here.)
+  for (std::size_t i = 0; i < expression.NodeCount(); ++i)
+  {
+    const CsgExpression::Node& n = expression.NodeAt(i);
+    if (n.NodeKind == CsgExpression::Node::Kind::Leaf &&
+      (n.LeafData.Kind != PrimitiveKind::Mesh || !n.LeafData.Triangles))
+    {
+      return {};
+    }
+  }
+  std::vector<CsgLeaf> leaves = expression.Leaves();
   if (leaves.size() < 2)
   {
-    return false;
+    return {};
   }
   for (std::size_t k = 0; k < leaves.size(); ++k)
   {
-    if (leaves[k].Kind != PrimitiveKind::Mesh || !leaves[k].Triangles)
-    {
-      return false;
-    }
     for (std::size_t j = 0; j < k; ++j)
     {
       if (leaves[j].Primitive == leaves[k].Primitive)
       {
-        return false; // (a mesh and its complement: Phi of one mesh in two leaves)
+        return {}; // (a mesh and its complement: Phi of one mesh in two leaves)
       }
     }
   }
-  return true;
+  return leaves;
+}
+
+bool IsMeshBoolean(const CsgExpression& expression)
+{
+  return !MeshBooleanLeaves(expression).empty();
 }
 
 bool MeshBooleanSurfaceInCell(const CsgExpression& expression, const PrimitiveSet& primitives, const Box3& cell,
@@ -223,11 +235,11 @@ bool MeshBooleanSurfaceInCell(const CsgExpression& expression, const PrimitiveSe
   surface.Covering.clear();
   surface.Undecided = 0;
   surface.Slack = 0.0;
-  if (!IsMeshBoolean(expression))
+  const std::vector<CsgLeaf> leaves = MeshBooleanLeaves(expression);
+  if (leaves.empty())
   {
     return false;
   }
-  const std::vector<CsgLeaf> leaves = expression.Leaves();
   std::vector<PolygonSet> meshSurfaces(leaves.size());
   double magnitude = 0.0;
   for (std::size_t k = 0; k < leaves.size(); ++k)

@@ -91,6 +91,8 @@ struct MeshBooleanSurface
 /// Whether `expression` has mesh leaves only, each with its triangle list,
 /// of two or more meshes (each mesh in one leaf): a cell where meshes meet.
 bool IsMeshBoolean(const CsgExpression& expression);
+/// Its distinct leaves where it holds, else none.
+std::vector<CsgLeaf> MeshBooleanLeaves(const CsgExpression& expression);
 
 /// S's two sides (header) in `cell`, for an expression IsMeshBoolean holds
 /// for, pruned to `cell`; pieces near another mesh's surface cut down to

@@ -221,14 +221,16 @@ bool MeshCellFromLoopPoint(const AdaptiveOctree& tree, std::uint32_t n, const Bo
 /// its `creases` by more than `reach` (the prediction checked the fan over
 /// the cell's own loop; the final loop's points between its own may change
 /// the bends at the spokes: CreaseFollowing.h): the first fan around one of
-/// `others` (points of the creases) that follows them all and is certified
-/// within the tolerance on its own, in `patches`, its certificate in
-/// `certificate`. False - `patches` unchanged - where the fan follows them
-/// or none does. (One mesh: CreaseApexes, within CreaseReach; meshes
-/// meeting: ApexesOnCreases, within BooleanCreaseReach.)
+/// `otherApexes()` (points of the creases, asked for only then) that
+/// follows them all and is certified within the tolerance on its own, in
+/// `patches`, its certificate in `certificate`. False - `patches` unchanged
+/// - where the fan follows them or none does. (One mesh: CreaseApexes,
+/// within CreaseReach; meshes meeting: ApexesOnCreases, within
+/// BooleanCreaseReach.)
+template <typename OtherApexes>
 bool CellFromOtherApex(const AdaptiveOctree& tree, std::uint32_t n, const BoundaryLoopSet& loops,
   const PrimitiveSet& prims, const CrossingVertices& vertices, const TriangleMesh& mesh, const CellSurface& surface,
-  const std::vector<CreaseSegment>& creases, const std::vector<Vec3>& others, double reach, double aim,
+  const std::vector<CreaseSegment>& creases, const OtherApexes& otherApexes, double reach, double aim,
   const Vec3& apex, CellPatches& patches, CellCertificate& certificate)
 {
   if (loops.LoopSizes.size() != 1 || CreasesFollowed(creases, PatchTriangles(patches, mesh), reach))
@@ -238,7 +240,7 @@ bool CellFromOtherApex(const AdaptiveOctree& tree, std::uint32_t n, const Bounda
   const OctreeNode& node = tree.Nodes[n];
   const CsgExpression& expression = *tree.Expressions[n];
   const double tolerance = tree.HausdorffTolerance;
-  for (const Vec3& other : others)
+  for (const Vec3& other : otherApexes())
   {
     if (Norm(other - apex) == 0.0)
     {
@@ -304,8 +306,8 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
       TriangulateCell(
         loops, node, expression, prims, tree.Grid, vertices, mesh, patches, nullptr, &prediction->second.Apex);
       if (CellFromOtherApex(tree, n, loops, prims, vertices, mesh, surface, creases,
-            CreaseApexes(box, creases, prediction->second.Apex), CreaseReach * tree.HausdorffTolerance, aim,
-            prediction->second.Apex, patches, certificate))
+            [&] { return CreaseApexes(box, creases, prediction->second.Apex); }, CreaseReach * tree.HausdorffTolerance,
+            aim, prediction->second.Apex, patches, certificate))
       {
         return certificate;
       }
@@ -336,8 +338,8 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
       const Vec3& apex = booleanFan->second;
       TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches, nullptr, &apex);
       if (CellFromOtherApex(tree, n, loops, prims, vertices, mesh, surface, surface.Creases,
-            ApexesOnCreases(box, surface.Creases, apex), BooleanCreaseReach * tree.HausdorffTolerance, aim, apex,
-            patches, certificate))
+            [&] { return ApexesOnCreases(box, surface.Creases, apex); }, BooleanCreaseReach * tree.HausdorffTolerance,
+            aim, apex, patches, certificate))
       {
         return certificate;
       }
