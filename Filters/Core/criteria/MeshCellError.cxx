@@ -8,6 +8,7 @@
 #include "MeshArrangement.h"
 #include "MeshSolid.h"
 #include "SymmetricEigen.h"
+#include "UnionFind.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -154,12 +155,22 @@ void SurfaceInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Bo
   }
 }
 
-Vec3 MeshCellApex(const PolygonSet& surface, const Box3& cell)
+namespace
+{
+/// The point nearest to the planes of the polygons of `surface` whose index
+/// `keep` accepts (MeshCellApex), kept `margin` of `box`'s width inside it.
+template <typename Keep>
+Vec3 LeastSquaresApex(const PolygonSet& surface, const Box3& box, double margin, const Keep& keep)
 {
   Vec3 centroid;
   double weight = 0.0;
-  for (const ConvexPolygon& q : surface)
+  for (std::size_t i = 0; i < surface.size(); ++i)
   {
+    if (!keep(i))
+    {
+      continue;
+    }
+    const ConvexPolygon q = surface[i];
     const double w = q.TwiceArea;
     for (const Vec3& p : q.Points)
     {
@@ -167,27 +178,69 @@ Vec3 MeshCellApex(const PolygonSet& surface, const Box3& cell)
     }
     weight += w;
   }
-  centroid = weight > 0.0 ? centroid * (1.0 / weight) : cell.Center();
+  centroid = weight > 0.0 ? centroid * (1.0 / weight) : box.Center();
   // Relative weights: the system does not depend on the scene's scale (the
   // eigen-solver's thresholds are absolute).
   double ata[3][3] = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } };
   double atb[3] = { 0, 0, 0 };
-  for (const ConvexPolygon& q : surface)
+  for (std::size_t i = 0; i < surface.size(); ++i)
   {
+    if (!keep(i))
+    {
+      continue;
+    }
+    const ConvexPolygon q = surface[i];
     const Vec3& n = q.Normal;
     const double w = weight > 0.0 ? q.TwiceArea / weight : 1.0, d = Dot(n, q.Points[0] - centroid);
-    for (int i = 0; i < 3; ++i)
+    for (int a = 0; a < 3; ++a)
     {
-      for (int j = 0; j < 3; ++j)
+      for (int b = 0; b < 3; ++b)
       {
-        ata[i][j] += w * n[i] * n[j];
+        ata[a][b] += w * n[a] * n[b];
       }
-      atb[i] += w * n[i] * d;
+      atb[a] += w * n[a] * d;
     }
   }
   Vec3 delta;
   SolveTruncated(ata, atb, 0.05, delta.x);
-  return cell.Shrunk(1.0 / 32.0).Clamp(centroid + delta);
+  return box.Shrunk(margin).Clamp(centroid + delta);
+}
+
+/// How far inside its room's region (relative to its width) the apex of one
+/// of several loops is kept (header: Several loops): far less than a lone
+/// loop's 1/32 of the cell - a loop whose sheet is a small corner of the
+/// mesh cut off by the cell's faces has its planes' point within 1/32 of a
+/// face, and clamping it there bends its fan off the sheet's plane (a tilted
+/// bar at 1/64: six output creases off the bar's edges).
+constexpr double LoopApexMargin = 1.0 / 1024.0;
+
+/// The mean of `points` (a vector or a polygon's corners).
+template <typename Points>
+Vec3 Centroid(const Points& points)
+{
+  Vec3 m;
+  for (const Vec3& p : points)
+  {
+    m += p;
+  }
+  return m * (1.0 / static_cast<double>(points.size()));
+}
+} // namespace
+
+Vec3 MeshCellApex(const PolygonSet& surface, const Box3& cell)
+{
+  return LeastSquaresApex(surface, cell, 1.0 / 32.0, [](std::size_t) { return true; });
+}
+
+Vec3 LoopApex(const PolygonSet& surface, const ApexRoom& room, const std::vector<Vec3>& loop)
+{
+  const Vec3 apex = LeastSquaresApex(surface, room.Region, LoopApexMargin, [&](std::size_t i) {
+    const Vec3 c = Centroid(surface[i].Points);
+    return room.Region.Contains(c) &&
+      std::all_of(room.Below.begin(), room.Below.end(),
+        [&](const SeparatingPlane& plane) { return Dot(plane.Normal, c) < plane.Offset; });
+  });
+  return KeptInRoom(apex, Centroid(loop), room);
 }
 
 double ChordDeviation(const PolygonSet& surface, const Box3& tile, const Vec3& a, const Vec3& b)
@@ -285,13 +338,13 @@ bool PredictCreaseApex(const PolygonSet& surface, const Box3& cell, const std::v
   double reach, double slack, double tolerance, AdaptiveOctree::MeshCellPrediction& prediction)
 {
   const double delta = prediction.Delta;
-  if (prediction.Loop.size() < 3 || !(delta < tolerance))
+  if (prediction.Loops.size() != 1 || prediction.Loops[0].size() < 3 || !(delta < tolerance))
   {
     return false;
   }
-  for (const Vec3& apex : CreaseApexes(cell, creases, prediction.Apex))
+  for (const Vec3& apex : CreaseApexes(cell, creases, prediction.Apexes[0]))
   {
-    const std::vector<SourceTriangle> fan = ApexFan(prediction.Loop, apex);
+    const std::vector<SourceTriangle> fan = ApexFan(prediction.Loops[0], apex);
     if (!CreasesFollowed(creases, fan, reach))
     {
       continue;
@@ -300,7 +353,7 @@ bool PredictCreaseApex(const PolygonSet& surface, const Box3& cell, const std::v
       CertifiedMeshPatchError(surface, fan, slack, tolerance - delta, tolerance - delta, PredictionBudget);
     if (error.Upper + delta <= tolerance)
     {
-      prediction.Apex = apex;
+      prediction.Apexes[0] = apex;
       prediction.Bound = error.Upper + delta;
       prediction.OwnFanError = error.Upper;
       prediction.Attained = error.Lower;
@@ -318,6 +371,17 @@ std::vector<SourceTriangle> ApexFan(const std::vector<Vec3>& loop, const Vec3& a
     fan.push_back({ loop[k], loop[(k + 1) % loop.size()], apex });
   }
   return fan;
+}
+
+std::vector<SourceTriangle> ApexFans(const std::vector<std::vector<Vec3>>& loops, const std::vector<Vec3>& apexes)
+{
+  std::vector<SourceTriangle> fans;
+  for (std::size_t l = 0; l < loops.size(); ++l)
+  {
+    const std::vector<SourceTriangle> fan = ApexFan(loops[l], apexes[l]);
+    fans.insert(fans.end(), fan.begin(), fan.end());
+  }
+  return fans;
 }
 
 bool PlaceLoopPoints(const CsgExpression& expression, const PrimitiveSet& primitives, const RootGrid& grid,
@@ -503,32 +567,40 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
 {
   prediction = AdaptiveOctree::MeshCellPrediction();
   const CsgLeaf* leaf = LoneMeshLeaf(expression);
-  if (!leaf || loops.LoopSizes.size() != 1 || !loops.Consistent || loops.Crossings.size() < 3)
+  if (!leaf || loops.LoopSizes.empty() || !loops.Consistent ||
+    *std::min_element(loops.LoopSizes.begin(), loops.LoopSizes.end()) < 3)
   {
     return HUGE_VAL;
   }
   const PolygonSet computed = given ? PolygonSet() : SurfaceInCell(*leaf, primitives, cell);
   const PolygonSet& surface = given ? *given : computed;
-  const std::vector<Crossing>& loop = loops.Crossings;
-  const std::size_t m = loop.size();
-  std::vector<Vec3> points;
-  if (!PlaceLoopPoints(expression, primitives, grid, loop, points))
-  {
-    return HUGE_VAL;
-  }
-  // delta_k: each chord against the trace on its tile (on a crease tile,
-  // against its half of the trace).
-  std::vector<ChordTile> chords;
-  if (!MeasureChords(surface, grid, boundary, loop, points, tolerance, chords))
-  {
-    return HUGE_VAL;
-  }
-  std::vector<double> chordDelta(m, HUGE_VAL);
+  // Each loop's points, and delta_k: each chord against the trace on its
+  // tile (on a crease tile, against its half of the trace), loop by loop in
+  // the fan's order.
+  std::vector<std::vector<Vec3>> points(loops.LoopSizes.size());
+  std::vector<double> chordDelta;
   double delta = 0.0;
-  for (std::size_t k = 0; k < chords.size(); ++k)
+  std::size_t offset = 0;
+  for (std::size_t l = 0; l < points.size(); ++l)
   {
-    chordDelta[k] = chords[k].Deviation;
-    delta = std::max(delta, chords[k].Deviation);
+    const std::vector<Crossing> loop(loops.Crossings.begin() + static_cast<std::ptrdiff_t>(offset),
+      loops.Crossings.begin() + static_cast<std::ptrdiff_t>(offset + loops.LoopSizes[l]));
+    offset += loops.LoopSizes[l];
+    std::vector<ChordTile> chords;
+    if (!PlaceLoopPoints(expression, primitives, grid, loop, points[l]) ||
+      !MeasureChords(surface, grid, boundary, loop, points[l], tolerance, chords))
+    {
+      return HUGE_VAL;
+    }
+    for (std::size_t k = 0; k < loop.size(); ++k)
+    {
+      chordDelta.push_back(k < chords.size() ? chords[k].Deviation : HUGE_VAL);
+      delta = std::max(delta, chordDelta.back());
+    }
+    if (!(delta < tolerance))
+    {
+      return HUGE_VAL;
+    }
   }
   const double slack = RoundingSlack(*leaf, primitives, cell);
   delta += slack; // (the final points lie on S up to rounding)
@@ -541,8 +613,22 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
     d += slack;
   }
   prediction.Delta = delta;
-  const Vec3 apex = MeshCellApex(surface, cell);
-  const std::vector<SourceTriangle> fan = ApexFan(points, apex);
+  // The apexes: S_C's for a lone loop; each loop's own in its room where
+  // there are several (header: Several loops).
+  std::vector<Vec3> apexes;
+  if (points.size() == 1)
+  {
+    apexes.push_back(MeshCellApex(surface, cell));
+  }
+  else
+  {
+    const std::vector<ApexRoom> rooms = ApexRooms(points, cell);
+    for (std::size_t l = 0; l < points.size(); ++l)
+    {
+      apexes.push_back(LoopApex(surface, rooms[l], points[l]));
+    }
+  }
+  const std::vector<SourceTriangle> fan = ApexFans(points, apexes);
   if (probesFirst && FanPointStrays(surface, fan, chordDelta, slack, tolerance))
   {
     prediction.ProbeStrayed = true;
@@ -550,8 +636,8 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
   }
   const HausdorffEstimate error =
     CertifiedMeshPatchError(surface, fan, slack, tolerance - delta, tolerance - delta, PredictionBudget);
-  prediction.Loop = std::move(points);
-  prediction.Apex = apex;
+  prediction.Loops = std::move(points);
+  prediction.Apexes = std::move(apexes);
   prediction.Attained = error.Lower;
   prediction.OwnFanError = error.Upper;
   prediction.Bound = error.Upper == HUGE_VAL ? HUGE_VAL : error.Upper + delta;
@@ -574,23 +660,91 @@ namespace
 /// The least |n[axis]| of the unit normal n of a triangle crossing a cell
 /// edge for SpokeStrays to use the crossing (header, Spokes).
 constexpr double WellCrossed = 1e-3;
-} // namespace
 
-bool SpokeStrays(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell, unsigned insideCorners,
-  const PolygonSet& surface, double tolerance)
+/// Whether the segment [a, b] meets the closed box (its parameter interval
+/// clipped slab by slab, in floating point).
+bool SegmentMeetsBox(const Vec3& a, const Vec3& b, const Box3& box)
 {
-  if (surface.empty() || !leaf.Triangles)
+  double t0 = 0.0, t1 = 1.0;
+  for (int axis = 0; axis < 3 && t0 <= t1; ++axis)
   {
-    return false;
+    const double d = b[axis] - a[axis];
+    if (d == 0.0)
+    {
+      if (a[axis] < box.lo[axis] || a[axis] > box.hi[axis])
+      {
+        return false;
+      }
+      continue;
+    }
+    double enter = (box.lo[axis] - a[axis]) / d, leave = (box.hi[axis] - a[axis]) / d;
+    if (enter > leave)
+    {
+      std::swap(enter, leave);
+    }
+    t0 = std::max(t0, enter);
+    t1 = std::min(t1, leave);
   }
-  // (The slack covers the rounding of the crossings, the apex and the
-  // distances here and in the prediction, as there: header, Rounding.)
-  const double reach = tolerance + RoundingSlack(leaf, primitives, cell);
-  const Vec3 apex = MeshCellApex(surface, cell);
-  if (!WithinReach(surface, apex, reach))
+  return t0 <= t1;
+}
+
+/// S_C's sheets (header: Spokes): the leaf's listed triangles that meet the
+/// cell (their clip not empty: S_C's polygons, in the same order), joined
+/// into sheets across mesh edges that meet the closed cell.
+struct SurfaceSheets
+{
+  std::vector<std::uint32_t> Triangles;
+  std::vector<std::uint32_t> SheetOf; ///< each one's sheet, 0 .. Count - 1
+  std::uint32_t Count = 0;
+};
+
+SurfaceSheets SheetsInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell)
+{
+  const MeshSolid& mesh = primitives.Meshes[leaf.Primitive];
+  SurfaceSheets sheets;
+  for (const std::uint32_t t : *leaf.Triangles)
   {
-    return true;
+    ClippedCorners clipped{ mesh.Vertex(t, 0), mesh.Vertex(t, 1), mesh.Vertex(t, 2) };
+    ClipToBox(clipped, cell);
+    if (!clipped.empty())
+    {
+      sheets.Triangles.push_back(t);
+    }
   }
+  // (Listed in order, as pruning keeps its parent's order: found by
+  // bisection; where not, fewer joins, more sheets.)
+  const std::vector<std::uint32_t>& meeting = sheets.Triangles;
+  UnionFind joined(meeting.size());
+  for (std::size_t i = 0; i < meeting.size(); ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::uint32_t u = mesh.Across(meeting[i], k);
+      const auto j = std::lower_bound(meeting.begin(), meeting.end(), u);
+      if (u != MeshSolid::NoTriangle && j != meeting.end() && *j == u &&
+        SegmentMeetsBox(mesh.Vertex(meeting[i], k), mesh.Vertex(meeting[i], (k + 1) % 3), cell))
+      {
+        joined.Join(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j - meeting.begin()));
+      }
+    }
+  }
+  std::vector<std::uint32_t> number(meeting.size(), UINT32_MAX);
+  for (std::size_t i = 0; i < meeting.size(); ++i)
+  {
+    std::uint32_t& sheet = number[joined.Find(static_cast<std::uint32_t>(i))];
+    sheet = sheet == UINT32_MAX ? sheets.Count++ : sheet;
+    sheets.SheetOf.push_back(sheet);
+  }
+  return sheets;
+}
+
+/// Whether an apex `apexOf(t)` or a point of a spoke to it from the crossing
+/// of a cell edge that S crosses once (t the crossed triangle) strays farther
+/// than `reach` from S_C (header: Spokes).
+template <typename ApexOf>
+bool SpokeFromApexStrays(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell,
+  unsigned insideCorners, const PolygonSet& surface, double reach, const ApexOf& apexOf)
+{
   const MeshSolid& mesh = primitives.Meshes[leaf.Primitive];
   for (int axis = 0; axis < 3; ++axis)
   {
@@ -608,6 +762,7 @@ bool SpokeStrays(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3
       {
         continue; // (crossed more than once, or nearly along a triangle: header, Spokes)
       }
+      const Vec3 apex = apexOf(crossed);
       for (const double s : { 0.25, 0.5, 0.75 })
       {
         if (!WithinReach(surface, apex + (x - apex) * s, reach))
@@ -618,6 +773,53 @@ bool SpokeStrays(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3
     }
   }
   return false;
+}
+} // namespace
+
+bool SpokeStrays(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell, unsigned insideCorners,
+  const PolygonSet& surface, double tolerance, bool severalLoops)
+{
+  if (surface.empty() || !leaf.Triangles)
+  {
+    return false;
+  }
+  // (The slack covers the rounding of the crossings, the apex and the
+  // distances here and in the prediction, as there: header, Rounding.)
+  const double reach = tolerance + RoundingSlack(leaf, primitives, cell);
+  const Vec3 apex = MeshCellApex(surface, cell);
+  if (WithinReach(surface, apex, reach) &&
+    !SpokeFromApexStrays(leaf, primitives, cell, insideCorners, surface, reach, [&](std::uint32_t) { return apex; }))
+  {
+    return false;
+  }
+  // Strays from S_C's apex. Where S_C is several sheets, a cell that passes
+  // the tests has several loops, each fanned around its own apex (header:
+  // Several loops): the spokes to each sheet's apex instead (the sheets
+  // found only now: in most cells the spokes pass).
+  if (!severalLoops)
+  {
+    return true;
+  }
+  const SurfaceSheets sheets = SheetsInCell(leaf, primitives, cell);
+  if (sheets.Count <= 1 || sheets.Triangles.size() != surface.size())
+  {
+    return true;
+  }
+  std::vector<Vec3> apexes(sheets.Count);
+  for (std::uint32_t s = 0; s < sheets.Count; ++s)
+  {
+    apexes[s] =
+      LeastSquaresApex(surface, cell, LoopApexMargin, [&](std::size_t i) { return sheets.SheetOf[i] == s; });
+    if (!WithinReach(surface, apexes[s], reach))
+    {
+      return true;
+    }
+  }
+  return SpokeFromApexStrays(leaf, primitives, cell, insideCorners, surface, reach, [&](std::uint32_t t) {
+    const auto i = std::lower_bound(sheets.Triangles.begin(), sheets.Triangles.end(), t);
+    const bool found = i != sheets.Triangles.end() && *i == t;
+    return found ? apexes[sheets.SheetOf[static_cast<std::size_t>(i - sheets.Triangles.begin())]] : apex;
+  });
 }
 
 bool FinalLoopRefines(const std::vector<Vec3>& own, const std::vector<Vec3>& final, const Box3& cell)

@@ -178,6 +178,48 @@
 // its prediction (or an earlier test) after the tests; its grid reason is
 // then HausdorffSize, whatever test would have failed first. (Not at the
 // depth or cell limit, where the failed test is reported: SplitDecision.)
+// That holds where the cell can only pass with one loop, whose apex is
+// MeshCellApex(S_C, C): where S_C is one sheet (its polygons joined across
+// mesh edges that meet the closed cell: a cell of several loops bounds
+// several discs, which no edge of S in the cell joins), or where several
+// loops may not pass (a scene of one mesh with a crease in the cell, below).
+// Where S_C is several sheets and several loops may pass, each loop is
+// fanned around its own apex (Several loops): the spokes then go from each
+// crossing to the apex of its triangle's sheet - the least squares point of
+// that sheet's polygons, LoopApexMargin inside the cell - which is the
+// prediction's apex up to the room's cut and clamp, not exactly it: there
+// the spokes only guess, and a cell they split may have passed (splitting
+// is always allowed; MeshCellError.ProvenFailuresSplitOnlyCellsThePrediction
+// WouldSplit finds none on a slab whose cells hold both its faces, nor on
+// the other scenes).
+//
+// Several loops. A cell whose tests pass with several loops - two sheets of
+// a thin part, a tube's two walls - bounds as many discs of S_C, apart
+// across planes the surface misses (LoopsSeparated, ComplexCellCriterion.h).
+// Each loop l is fanned around its own apex c_l in its room (ApexRooms.h:
+// the cell cut between the loops, so that the fans lie strictly on opposite
+// sides of a plane): the least squares point (as MeshCellApex) of the
+// polygons of S_C whose corners' mean lies in the room, LoopApexMargin of
+// the region inside it, moved into the room as the extraction moves its
+// apexes (KeptInRoom). P is the union of the fans; E(P), delta (each chord
+// against its own tile's trace), the probes and the per-chord bound are
+// taken over all of P's triangles and all of S_C, exactly as for one loop.
+// E(P') <= E(P) + delta holds fan by fan: each final loop refines one own
+// loop and is fanned around that loop's apex (both steps of the argument
+// above move a point within one fan triangle's chord). The extraction fans
+// each final loop around the apex nearest its room (CellPatches.h) and
+// keeps the prediction's Bound only where every final loop was fanned
+// around an own loop's apex, unchanged, and refines that own loop
+// (FinalLoopsRefine, SurfaceExtraction.cxx); elsewhere its patch is bounded
+// by its own certificate, and split by a repair round where that is not
+// within the tolerance. Not in a scene of one mesh with a crease in the
+// cell: a fan per loop would have to be drawn around a crease point each
+// (Crease apexes), which is not done; such cells split (CreaseNotFollowed).
+// Measured (2026-12-06; triangles at 1/64, 1/128, 1/256): the turbine
+// 8 456 -> 6 446, 9 702 -> 8 396, 15 198 -> 13 962; couplingdown 5 978 ->
+// 5 840, 11 792 -> 11 378, 20 056 -> 19 684; fandisk 1 430 -> 1 380, 1 882
+// -> 1 814, 2 892 -> 2 780; armadillo 9 948 -> 9 722, 18 360 -> 18 092,
+// 34 048 -> 33 664 - in 0.93-1.07 times the time (2 threads, interleaved).
 //
 // Probes: once the fan P and the chords' deltas are known, a few points of
 // P are measured before either bound's branch and bound. Let y be a point of
@@ -215,6 +257,7 @@
 #pragma once
 
 #include "AdaptiveOctree.h"
+#include "ApexRooms.h"
 #include "BoundaryLoops.h"
 #include "CellSignCache.h"
 #include "CreaseFollowing.h"
@@ -241,6 +284,13 @@ void SurfaceInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Bo
 /// cell's width inside it, so strictly inside (the fan is then embedded,
 /// LoopTriangulation.h).
 Vec3 MeshCellApex(const PolygonSet& surface, const Box3& cell);
+
+/// The apex of one of several loops (header: Several loops): the point
+/// nearest to the planes of the polygons of S_C `surface` whose corners'
+/// mean lies in `room`'s region and below its cuts (not strictly), kept 1/32
+/// of the region's width inside it, then moved into the room as the
+/// extraction moves its apexes (KeptInRoom, `loop`'s centroid as fallback).
+Vec3 LoopApex(const PolygonSet& surface, const ApexRoom& room, const std::vector<Vec3>& loop);
 
 /// max over S ∩ tile of the distance to the chord [a, b] (`tile` is a face
 /// tile, degenerate along the face's axis).
@@ -315,6 +365,8 @@ double RoundingSlackFor(double magnitude, double size);
 
 /// The fan around `apex` over `loop`: triangles (p_k, p_k+1, apex).
 std::vector<SourceTriangle> ApexFan(const std::vector<Vec3>& loop, const Vec3& apex);
+/// The fans around `apexes[l]` over `loops[l]`, loop after loop.
+std::vector<SourceTriangle> ApexFans(const std::vector<std::vector<Vec3>>& loops, const std::vector<Vec3>& apexes);
 
 /// The apexes a fan around a point of a crease may take in `cell` (header:
 /// Crease apexes): the point of each segment of `creases` nearest `apex`,
@@ -325,24 +377,26 @@ std::vector<Vec3> CreaseApexes(const Box3& cell, const std::vector<CreaseSegment
 /// Where the apex fan of `prediction` (PredictedMeshCellError, within the
 /// tolerance) misses a crease of `creases` (CreasesInCell, CreaseFollowing.h):
 /// the fan over the same loop around a point of a crease instead
-/// (CreaseApexes of prediction.Apex) - the first whose fan follows every
-/// crease within `reach` and has E(P) + delta within `tolerance` (header: Crease apexes;
-/// `slack` the rounding slack). True when there is one: `prediction` then
-/// holds it as Apex, with its Bound, OwnFanError and Attained.
+/// (CreaseApexes of its apex) - the first whose fan follows every crease
+/// within `reach` and has E(P) + delta within `tolerance` (header: Crease
+/// apexes; `slack` the rounding slack). True when there is one: `prediction`
+/// then holds it as its apex, with its Bound, OwnFanError and Attained.
+/// False for a prediction of several loops (header: Several loops).
 bool PredictCreaseApex(const PolygonSet& surface, const Box3& cell, const std::vector<CreaseSegment>& creases,
   double reach, double slack, double tolerance, AdaptiveOctree::MeshCellPrediction& prediction);
 
 /// The subdivision's prediction, E(P) + delta or else the per-chord bound
 /// (header), for a cell whose tests passed
-/// with the single loop `loops` (sub-edge crossings, and crease crossings in
-/// a scene of one mesh) on its `boundary` tiles
+/// with the loops `loops` (sub-edge crossings, and crease crossings in
+/// a scene of one mesh; several: header, Several loops) on its `boundary` tiles
 /// (`cell`: its box, as the extraction computes it, so that both find the
 /// same apex);
-/// +inf when it exceeds `tolerance` or the cell is not a lone mesh leaf with
-/// one loop.
-/// `prediction` receives it as Bound, the loop's points as Loop (what the
-/// final loop must hold in order for the prediction to apply,
-/// FinalLoopRefines), the largest distance between the fan and the mesh the
+/// +inf when it exceeds `tolerance` or the cell is not a lone mesh leaf
+/// with consistent loops of three points or more.
+/// `prediction` receives it as Bound, the loops' points as Loops (what the
+/// final loops must hold in order for the prediction to apply,
+/// FinalLoopRefines) and their apexes as Apexes, the largest distance
+/// between the fans and the mesh the
 /// bound came upon as Attained (a lower bound of E(P)) and the bound of E(P)
 /// alone as OwnFanError (the final patch's error where the final loop is the
 /// cell's own, SameLoop; +inf where the cell passed on the per-chord bound,
@@ -361,8 +415,11 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
 /// Spokes), so that the cell's prediction fails whatever they trace. Corner
 /// c of the cell (bit a of c: the upper end along axis a) is inside the
 /// solid when bit c of `insideCorners` is set (the exact signs).
+/// `severalLoops`: the cell may be accepted with several loops (header:
+/// Several loops); where S_C is then several sheets, the spokes to each
+/// sheet's apex are asked instead.
 bool SpokeStrays(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell, unsigned insideCorners,
-  const PolygonSet& surface, double tolerance);
+  const PolygonSet& surface, double tolerance, bool severalLoops = false);
 
 /// Whether the final loop `final` holds every point of the cell's own loop
 /// `own` in the same cyclic order (up to rounding): then each chord ab of

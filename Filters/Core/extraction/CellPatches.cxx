@@ -63,6 +63,57 @@ void GatherLoop(const Crossing* crossings, std::size_t count, const CrossingVert
   }
 }
 
+/// How far `p` is from `room`: from its region, plus how far beyond each cut
+/// (0 inside the room's closure).
+double DistanceToRoom(const Vec3& p, const ApexRoom& room)
+{
+  double d = Norm(p - room.Region.Clamp(p));
+  for (const SeparatingPlane& plane : room.Below)
+  {
+    d += std::max(0.0, Dot(plane.Normal, p) - plane.Offset);
+  }
+  return d;
+}
+
+/// The apex of `apexes` (none if null) each loop of `rooms` is fanned
+/// around: a lone loop's lone apex; with several loops, each takes the apex
+/// nearest its room (the prediction placed one in each loop's room over the
+/// cell's own loops; the final loops hold more points, so their rooms may
+/// differ a little), unless two take the same one (then none does). Null
+/// where a loop has none.
+std::vector<const Vec3*> ApexesOfLoops(const std::vector<Vec3>* apexes, const std::vector<ApexRoom>& rooms)
+{
+  std::vector<const Vec3*> chosen(rooms.size(), nullptr);
+  if (!apexes || apexes->size() != rooms.size())
+  {
+    return chosen;
+  }
+  for (std::size_t l = 0; l < rooms.size(); ++l)
+  {
+    double nearest = HUGE_VAL;
+    for (const Vec3& apex : *apexes)
+    {
+      const double d = rooms.size() == 1 ? 0.0 : DistanceToRoom(apex, rooms[l]);
+      if (d < nearest)
+      {
+        nearest = d;
+        chosen[l] = &apex;
+      }
+    }
+  }
+  for (std::size_t l = 0; l < rooms.size(); ++l)
+  {
+    for (std::size_t m = l + 1; m < rooms.size(); ++m)
+    {
+      if (chosen[l] == chosen[m])
+      {
+        return std::vector<const Vec3*>(rooms.size(), nullptr);
+      }
+    }
+  }
+  return chosen;
+}
+
 /// Marching Cubes' fan of the loop `id` from its point s: k - 2 triangles.
 void AppendLoopFan(const std::vector<std::uint32_t>& id, std::size_t s, CellPatches& out)
 {
@@ -76,7 +127,7 @@ void AppendLoopFan(const std::vector<std::uint32_t>& id, std::size_t s, CellPatc
 
 void TriangulateCell(const BoundaryLoopSet& loops, const OctreeNode& node, const CsgExpression& expression,
   const PrimitiveSet& prims, const RootGrid& grid, const CrossingVertices& vertices, const TriangleMesh& mesh,
-  CellPatches& out, const QuadricCellError* surface, const Vec3* meshApex)
+  CellPatches& out, const QuadricCellError* surface, const std::vector<Vec3>* meshApexes)
 {
   const Box3 box = grid.CellBox(node.Level, node.Ijk);
   LatticeIndex base[3];
@@ -84,7 +135,7 @@ void TriangulateCell(const BoundaryLoopSet& loops, const OctreeNode& node, const
   const LatticeIndex size = LatticeIndex(1) << (grid.MaxDepth - node.Level);
   std::vector<std::vector<std::uint32_t>> ids;
   std::vector<std::vector<LoopPoint>> points;
-  std::vector<Box3> boxes;
+  std::vector<std::vector<Vec3>> positions;
   std::size_t offset = 0;
   for (const std::uint32_t loopSize : loops.LoopSizes)
   {
@@ -92,26 +143,15 @@ void TriangulateCell(const BoundaryLoopSet& loops, const OctreeNode& node, const
     points.emplace_back();
     GatherLoop(
       loops.Crossings.data() + offset, loopSize, vertices, mesh, box, base, size, ids.back(), points.back());
-    Box3 b{ { HUGE_VAL, HUGE_VAL, HUGE_VAL }, { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL } };
+    positions.emplace_back();
     for (const LoopPoint& p : points.back())
     {
-      for (int a = 0; a < 3; ++a)
-      {
-        b.lo[a] = std::min(b.lo[a], p.Position[a]);
-        b.hi[a] = std::max(b.hi[a], p.Position[a]);
-      }
+      positions.back().push_back(p.Position);
     }
-    boxes.push_back(b);
     offset += loopSize;
   }
-  std::vector<std::vector<Vec3>> positions(points.size());
-  for (std::size_t l = 0; l < points.size() && ids.size() > 1; ++l)
-  {
-    for (const LoopPoint& p : points[l])
-    {
-      positions[l].push_back(p.Position);
-    }
-  }
+  const std::vector<ApexRoom> rooms = ApexRooms(positions, box);
+  const std::vector<const Vec3*> apexes = ApexesOfLoops(meshApexes, rooms);
   for (std::size_t l = 0; l < ids.size(); ++l)
   {
     const std::vector<std::uint32_t>& id = ids[l];
@@ -120,11 +160,8 @@ void TriangulateCell(const BoundaryLoopSet& loops, const OctreeNode& node, const
     {
       continue; // only from inconsistent loops, counted by the caller
     }
-    const Box3 region = ids.size() > 1 ? ApexRegion(boxes, l, box) : box;
-    const std::vector<SeparatingPlane> below =
-      ids.size() > 1 ? ObliqueCuts(positions, boxes, l) : std::vector<SeparatingPlane>();
-    const LoopPatch patch = TriangulateLoop(points[l], region, node.PlaneSection, expression, prims, below, surface,
-      ids.size() == 1 ? meshApex : nullptr);
+    const LoopPatch patch =
+      TriangulateLoop(points[l], rooms[l], node.PlaneSection, expression, prims, surface, apexes[l]);
     if (patch.Kind == LoopPatchKind::Triangle)
     {
       out.Triangles.push_back({ id[0], id[1], id[2] });

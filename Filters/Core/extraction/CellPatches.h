@@ -26,13 +26,16 @@ struct CellPatches
 };
 
 /// Spans every loop of leaf `node` (LoopTriangulation.h), each apex in its
-/// own loop's region of the cell; `mesh` holds the crossing vertices.
-/// `surface`: the cell's error is certified (QuadricCellError.h), its apexes
-/// go on the surface where they can. `meshApex`: the cell's one loop is
-/// fanned around it (MeshCellError.h).
+/// own loop's room in the cell (ApexRooms.h); `mesh` holds the crossing
+/// vertices. `surface`: the cell's error is certified (QuadricCellError.h),
+/// its apexes go on the surface where they can. `meshApexes`: the apexes a
+/// prediction was made with, one per loop (MeshCellError.h,
+/// MeshBooleanCellError.h): each loop is fanned around its own, moved into
+/// its room (a lone loop around the lone apex; with several, each around
+/// the apex nearest its room, if no two loops take the same).
 void TriangulateCell(const BoundaryLoopSet& loops, const OctreeNode& node, const CsgExpression& expression,
   const PrimitiveSet& primitives, const RootGrid& grid, const CrossingVertices& vertices, const TriangleMesh& mesh,
-  CellPatches& out, const QuadricCellError* surface = nullptr, const Vec3* meshApex = nullptr);
+  CellPatches& out, const QuadricCellError* surface = nullptr, const std::vector<Vec3>* meshApexes = nullptr);
 
 /// A cell of one loop spanned by Marching Cubes' fan from one of its points
 /// (k - 2 triangles where the apex fan takes k): from a point on a mesh edge

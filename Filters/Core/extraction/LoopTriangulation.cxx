@@ -34,20 +34,6 @@ Vec3 Centroid(const std::vector<LoopPoint>& loop)
   return m * (1.0 / static_cast<double>(loop.size()));
 }
 
-/// The point of the open box nearest to `p` on each axis: `p` itself where it
-/// is strictly inside, else the representable value next to the violated side
-/// (or the midpoint for a box too thin to hold one).
-Vec3 ClampStrictlyInside(const Vec3& p, const Box3& box)
-{
-  Vec3 q = p;
-  for (int a = 0; a < 3; ++a)
-  {
-    const double lo = std::nextafter(box.lo[a], HUGE_VAL), hi = std::nextafter(box.hi[a], -HUGE_VAL);
-    q[a] = lo <= hi ? std::clamp(p[a], lo, hi) : 0.5 * (box.lo[a] + box.hi[a]);
-  }
-  return q;
-}
-
 /// Every fan triangle faces the way the surface normals at its two loop
 /// points do (a fan around a badly placed apex folds over).
 bool FanIsConsistent(const std::vector<LoopPoint>& loop, const Vec3& apex)
@@ -169,37 +155,6 @@ Vec3 ProjectedCentroid(const Vec3& centroid, const Box3& box, const CsgExpressio
     y = box.Clamp(y - g * (expression.Value(y, primitives) / gg));
   }
   return y;
-}
-
-/// `apex` moved below every plane by a quarter of its gap (then kept
-/// strictly inside the region); the loop's centroid, which is below them all
-/// with the loop, when a few alternating moves do not settle it.
-Vec3 KeptBelow(Vec3 apex, const std::vector<LoopPoint>& loop, const Box3& region,
-  const std::vector<SeparatingPlane>& below)
-{
-  auto settled = [&](const Vec3& p) {
-    for (const SeparatingPlane& plane : below)
-    {
-      if (!(Dot(plane.Normal, p) < plane.Offset - 0.25 * plane.Gap))
-      {
-        return false;
-      }
-    }
-    return StrictlyInside(p, region);
-  };
-  for (int round = 0; round < 4 && !settled(apex); ++round)
-  {
-    for (const SeparatingPlane& plane : below)
-    {
-      const double excess = Dot(plane.Normal, apex) - (plane.Offset - 0.375 * plane.Gap);
-      if (excess > 0.0)
-      {
-        apex = apex - plane.Normal * excess;
-      }
-    }
-    apex = ClampStrictlyInside(apex, region);
-  }
-  return settled(apex) ? apex : ClampStrictlyInside(Centroid(loop), region);
 }
 
 /// On the surface, along the certified cell's direction n from the feature
@@ -399,76 +354,15 @@ unsigned FacesAsPlaced(unsigned faces, bool onMeshEdge, const Vec3& position, co
   return faces;
 }
 
-bool StrictlyInside(const Vec3& p, const Box3& box)
-{
-  for (int a = 0; a < 3; ++a)
-  {
-    if (!(p[a] > box.lo[a] && p[a] < box.hi[a]))
-    {
-      return false;
-    }
-  }
-  return true;
-}
-
-Box3 ApexRegion(const std::vector<Box3>& loopBoxes, std::size_t i, const Box3& cell)
-{
-  Box3 region = cell;
-  const Box3& own = loopBoxes[i];
-  for (std::size_t j = 0; j < loopBoxes.size(); ++j)
-  {
-    if (j == i)
-    {
-      continue;
-    }
-    const Box3& other = loopBoxes[j];
-    // The axis with the widest gap between the two boxes, if any.
-    int axis = -1;
-    double gap = 0.0, cut = 0.0;
-    bool below = false;
-    for (int a = 0; a < 3; ++a)
-    {
-      const double up = other.lo[a] - own.hi[a], down = own.lo[a] - other.hi[a];
-      if (up > gap || down > gap)
-      {
-        axis = a;
-        below = up > down;
-        gap = std::max(up, down);
-        cut = below ? 0.5 * (own.hi[a] + other.lo[a]) : 0.5 * (other.hi[a] + own.lo[a]);
-      }
-    }
-    if (axis >= 0)
-    {
-      (below ? region.hi[axis] : region.lo[axis]) =
-        below ? std::min(region.hi[axis], cut) : std::max(region.lo[axis], cut);
-    }
-  }
-  return region;
-}
-
-std::vector<SeparatingPlane> ObliqueCuts(const std::vector<std::vector<Vec3>>& loopPoints,
-  const std::vector<Box3>& loopBoxes, std::size_t i)
-{
-  std::vector<SeparatingPlane> cuts;
-  for (std::size_t j = 0; j < loopBoxes.size(); ++j)
-  {
-    SeparatingPlane plane;
-    if (j != i && loopBoxes[i].Overlaps(loopBoxes[j]) && FindSeparatingPlane(loopPoints[i], loopPoints[j], plane))
-    {
-      cuts.push_back(plane);
-    }
-  }
-  return cuts;
-}
-
-LoopPatch TriangulateLoop(const std::vector<LoopPoint>& loop, const Box3& region, bool planeSection,
-  const CsgExpression& expression, const PrimitiveSet& primitives, const std::vector<SeparatingPlane>& below,
-  const QuadricCellError* surface, const Vec3* meshApex)
+LoopPatch TriangulateLoop(const std::vector<LoopPoint>& loop, const ApexRoom& room, bool planeSection,
+  const CsgExpression& expression, const PrimitiveSet& primitives, const QuadricCellError* surface,
+  const Vec3* meshApex)
 {
   LoopPatch patch;
   if (meshApex)
   {
-    patch.Apex = ClampStrictlyInside(*meshApex, region);
+    patch.Apex = room.Below.empty() ? ClampStrictlyInside(*meshApex, room.Region)
+                                    : KeptInRoom(*meshApex, Centroid(loop), room);
     return patch;
   }
   if (loop.size() == 3 && CommonFace(loop) < 0)
@@ -486,10 +380,10 @@ LoopPatch TriangulateLoop(const std::vector<LoopPoint>& loop, const Box3& region
     }
   }
   patch.Kind = LoopPatchKind::ApexFan;
-  patch.Apex = PlaceApex(loop, region, planeSection, expression, primitives, surface);
-  if (!below.empty())
+  patch.Apex = PlaceApex(loop, room.Region, planeSection, expression, primitives, surface);
+  if (!room.Below.empty())
   {
-    patch.Apex = KeptBelow(patch.Apex, loop, region, below);
+    patch.Apex = KeptInRoom(patch.Apex, Centroid(loop), room);
   }
   return patch;
 }

@@ -43,15 +43,9 @@
 //    (A point read as lying on every face - FacesAsPlaced - only sends such
 //    a loop to the apex fan.)
 //
-// Several loops in one cell: a cell passes the tests with several loops only
-// when every two are separated by a plane that the surface does not meet
-// (LoopsSeparated, ComplexCellCriterion.h): axis-aligned, so their points'
-// bounding boxes are apart along some axis, or oblique. A patch lies in the
-// convex hull of its loop and apex; ApexRegion cuts the cell between the boxes
-// of every two loops apart along an axis, ObliqueCuts finds a plane between
-// the points of two loops that are not, and with each apex in its loop's
-// region and below its cuts the patches of different loops lie strictly on
-// opposite sides of a plane.
+// Several loops in one cell: each loop's apex lies in its own room
+// (ApexRooms.h), so the patches of different loops, each in the convex hull
+// of its loop and apex, lie strictly on opposite sides of a plane.
 //
 // Patches of different cells are in different cells, which meet on their
 // boundaries only; there each patch is its chords, and both cells sharing a
@@ -65,7 +59,7 @@
 
 #include "CsgExpression.h"
 #include "QuadricCellError.h"
-#include "SeparatingPlane.h"
+#include "ApexRooms.h"
 #include "Vector3.h"
 
 #include <vector>
@@ -101,24 +95,8 @@ struct LoopPatch
   Vec3 Apex;
 };
 
-/// The open region of `cell` where loop `i`'s apex may lie: the cell cut, for
-/// every other loop whose bounding box is apart from loop i's along some axis,
-/// halfway between the two boxes. Loops not apart from loop i do not cut it
-/// (see ObliqueCuts).
-Box3 ApexRegion(const std::vector<Box3>& loopBoxes, std::size_t i, const Box3& cell);
-
-/// For every other loop whose box is not apart from loop i's along any axis
-/// (two sheets beside a thin wedge's edge, which the subdivision separated by
-/// an oblique plane, LoopsSeparated): a plane between the two loops' points,
-/// loop i below it. The apex is kept below each by a quarter of its gap, so
-/// the patch (in the hull of loop i and its apex) lies strictly below it and
-/// the other loop's strictly above. None found (cells stopped by a limit):
-/// no cut, and the exact check decides.
-std::vector<SeparatingPlane> ObliqueCuts(const std::vector<std::vector<Vec3>>& loopPoints,
-  const std::vector<Box3>& loopBoxes, std::size_t i);
-
 /// How to span `loop` (at least three points, in order) inside its cell, with
-/// an apex (if any) strictly inside `region` (the cell, or ApexRegion).
+/// an apex (if any) in `room` (the whole cell for a lone loop, ApexRooms.h).
 /// `planeSection`: the surface in the cell is a union of plane sections kept
 /// larger than the tolerance (PlanarCell.h), so the patch must stay in the
 /// loop's plane up to rounding: the apex is the loop's centroid. Otherwise the
@@ -127,12 +105,12 @@ std::vector<SeparatingPlane> ObliqueCuts(const std::vector<std::vector<Vec3>>& l
 /// `expression` (pruned to the cell) places apexes of caps over one face.
 /// `surface`: the cell's error is certified (QuadricCellError.h); the apex is
 /// then put on the surface where it can be, so that it adds no error.
-/// `meshApex`: the cell's error is certified where one mesh is the surface
-/// (MeshCellError.h): the patch is the fan around that apex (strictly inside
-/// the cell), whatever the loop, as the certificate requires.
-LoopPatch TriangulateLoop(const std::vector<LoopPoint>& loop, const Box3& region, bool planeSection,
-  const CsgExpression& expression, const PrimitiveSet& primitives,
-  const std::vector<SeparatingPlane>& below = {}, const QuadricCellError* surface = nullptr,
+/// `meshApex`: the cell's error is certified where meshes are the surface
+/// (MeshCellError.h, MeshBooleanCellError.h): the patch is the fan around
+/// that apex (moved into the room, KeptInRoom), whatever the loop, as the
+/// certificate requires.
+LoopPatch TriangulateLoop(const std::vector<LoopPoint>& loop, const ApexRoom& room, bool planeSection,
+  const CsgExpression& expression, const PrimitiveSet& primitives, const QuadricCellError* surface = nullptr,
   const Vec3* meshApex = nullptr);
 
 /// The faces of `cell` (bits, as LoopPoint::Faces) a loop point at
@@ -160,8 +138,5 @@ int LoopFanPoint(const std::vector<LoopPoint>& loop);
 /// (MeshCellError.h) and keeps it only where that is small: a curved crease,
 /// a corner or a point of a smooth trace make the diagonals cut across S.
 int MeshEdgeFanPoint(const std::vector<LoopPoint>& loop);
-
-/// True when `p` lies strictly inside `box` on every axis (exact comparisons).
-bool StrictlyInside(const Vec3& p, const Box3& box);
 
 } // namespace tpc

@@ -247,7 +247,8 @@ bool CellFromOtherApex(const AdaptiveOctree& tree, std::uint32_t n, const Bounda
       continue; // (the fan just drawn)
     }
     CellPatches fan;
-    TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, fan, nullptr, &other);
+    const std::vector<Vec3> apexes{ other };
+    TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, fan, nullptr, &apexes);
     if (!CreasesFollowed(creases, PatchTriangles(fan, mesh), reach))
     {
       continue;
@@ -263,6 +264,47 @@ bool CellFromOtherApex(const AdaptiveOctree& tree, std::uint32_t n, const Bounda
     }
   }
   return false;
+}
+
+/// Whether each final loop of a cell whose prediction is `prediction` was
+/// fanned around one of its apexes, unchanged, and refines the cell's own
+/// loop of that apex (FinalLoopRefines): the prediction's Bound then holds
+/// for the patch (MeshCellError.h; fan by fan where there are several
+/// loops). `same`: each final loop is that own loop itself (SameLoop), so the
+/// patch is the predicted fans.
+bool FinalLoopsRefine(const AdaptiveOctree::MeshCellPrediction& prediction, const BoundaryLoopSet& loops,
+  const CrossingVertices& vertices, const TriangleMesh& mesh, const CellPatches& patches, const Box3& box,
+  bool& same)
+{
+  same = true;
+  if (loops.LoopSizes.size() != prediction.Loops.size() || patches.Apexes.size() != prediction.Loops.size())
+  {
+    return false;
+  }
+  std::size_t offset = 0;
+  for (std::size_t l = 0; l < loops.LoopSizes.size(); ++l)
+  {
+    const Vec3& drawn = patches.Apexes[l];
+    const auto own = std::find_if(prediction.Apexes.begin(), prediction.Apexes.end(),
+      [&](const Vec3& a) { return a[0] == drawn[0] && a[1] == drawn[1] && a[2] == drawn[2]; });
+    if (own == prediction.Apexes.end())
+    {
+      return false;
+    }
+    std::vector<Vec3> final;
+    for (std::size_t k = offset; k < offset + loops.LoopSizes[l]; ++k)
+    {
+      final.push_back(mesh.Points[vertices.IdOf(loops.Crossings[k])]);
+    }
+    offset += loops.LoopSizes[l];
+    const std::vector<Vec3>& ownLoop = prediction.Loops[static_cast<std::size_t>(own - prediction.Apexes.begin())];
+    if (!FinalLoopRefines(ownLoop, final, box))
+    {
+      return false;
+    }
+    same = same && SameLoop(ownLoop, final);
+  }
+  return true;
 }
 
 /// Surface leaf `n`'s patches (CellPatches.h) and what they are certified to.
@@ -298,34 +340,32 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
       {
         return certificate;
       }
-      // Else the fan around the apex the prediction was made with. The
-      // prediction holds when the final loop refines the cell's own, its
-      // points on the surface's trace in the same tiles (no cell was stopped
-      // by a limit: its tiles may hold bends or two chords); the patch is
-      // certified on its own anyway.
-      TriangulateCell(
-        loops, node, expression, prims, tree.Grid, vertices, mesh, patches, nullptr, &prediction->second.Apex);
-      if (CellFromOtherApex(tree, n, loops, prims, vertices, mesh, surface, creases,
-            [&] { return CreaseApexes(box, creases, prediction->second.Apex); }, CreaseReach * tree.HausdorffTolerance,
-            aim, prediction->second.Apex, patches, certificate))
+      // Else the fans around the apexes the prediction was made with. The
+      // prediction holds when each final loop refines the cell's own loop
+      // whose apex it was fanned around, its points on the surface's trace
+      // in the same tiles (no cell was stopped by a limit: its tiles may hold
+      // bends or two chords); the patch is certified on its own anyway.
+      const AdaptiveOctree::MeshCellPrediction& predicted = prediction->second;
+      TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches, nullptr, &predicted.Apexes);
+      const bool oneLoop = loops.LoopSizes.size() == 1 && predicted.Loops.size() == 1;
+      if (oneLoop &&
+        CellFromOtherApex(tree, n, loops, prims, vertices, mesh, surface, creases,
+          [&] { return CreaseApexes(box, creases, predicted.Apexes[0]); }, CreaseReach * tree.HausdorffTolerance,
+          aim, predicted.Apexes[0], patches, certificate))
       {
         return certificate;
       }
-      std::vector<Vec3> final;
-      for (const Crossing& c : loops.Crossings)
+      bool same = false;
+      const bool refined = predictionsHold && loops.Consistent &&
+        FinalLoopsRefine(predicted, loops, vertices, mesh, patches, box, same);
+      certificate.Bound = refined ? predicted.Bound : HUGE_VAL;
+      if (refined && predicted.OwnFanError <= aim && same)
       {
-        final.push_back(mesh.Points[vertices.IdOf(c)]);
-      }
-      const bool refined = predictionsHold && loops.Consistent && loops.LoopSizes.size() == 1 &&
-        FinalLoopRefines(prediction->second.Loop, final, box);
-      certificate.Bound = refined ? prediction->second.Bound : HUGE_VAL;
-      if (refined && prediction->second.OwnFanError <= aim && SameLoop(prediction->second.Loop, final))
-      {
-        // The fan the prediction bounded, unchanged (no finer neighbour
-        // added a point to its loop): its bound is already as tight as the
-        // first certificates aim at.
-        certificate.Error = prediction->second.OwnFanError;
-        certificate.Lower = prediction->second.Attained;
+        // The fans the prediction bounded, unchanged (no finer neighbour
+        // added a point to their loops): their bound is already as tight as
+        // the first certificates aim at.
+        certificate.Error = predicted.OwnFanError;
+        certificate.Lower = predicted.Attained;
         return certificate;
       }
     }
@@ -336,7 +376,8 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
       // another point of the crease where that one misses it; bounded by its
       // certificate alone (MeshBooleanCellError.h).
       const Vec3& apex = booleanFan->second;
-      TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches, nullptr, &apex);
+      const std::vector<Vec3> apexes{ apex };
+      TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches, nullptr, &apexes);
       if (CellFromOtherApex(tree, n, loops, prims, vertices, mesh, surface, surface.Creases,
             [&] { return ApexesOnCreases(box, surface.Creases, apex); }, BooleanCreaseReach * tree.HausdorffTolerance,
             aim, apex, patches, certificate))
@@ -364,8 +405,9 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
         tree.HausdorffTolerance, true)
     : std::nullopt;
   const std::optional<Vec3> creaseApex = quadric && quadric->Crease ? CreaseApex(*quadric, prims) : std::nullopt;
+  const std::vector<Vec3> creaseApexes = creaseApex ? std::vector<Vec3>{ *creaseApex } : std::vector<Vec3>();
   TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches, quadric ? &*quadric : nullptr,
-    creaseApex ? &*creaseApex : nullptr);
+    creaseApex ? &creaseApexes : nullptr);
   certificate.Error = !bounded ? 0.0 : quadric ? CertifiedPatchError(*quadric, patches, mesh) : HUGE_VAL;
   const auto fan = tree.QuadricFanApexes.find(n);
   if (quadric && certificate.Error == HUGE_VAL && fan != tree.QuadricFanApexes.end())
@@ -373,7 +415,8 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
     // The fan the cell was accepted with, over the final loop
     // (QuadricCellError.h: Predicted on the cell's own loop).
     CellPatches predicted;
-    TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, predicted, nullptr, &fan->second);
+    const std::vector<Vec3> apexes{ fan->second };
+    TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, predicted, nullptr, &apexes);
     const double error = CertifiedPatchError(*quadric, predicted, mesh);
     if (error < HUGE_VAL)
     {

@@ -122,20 +122,25 @@ public:
   /// The subdivision's certified prediction for each error-bounded leaf
   /// larger than the tolerance where one mesh is the surface
   /// (MeshCellError.h): Bound bounds the error of the fan the extraction
-  /// builds there when its final loop holds Loop's points in order (crack
-  /// patching only refines the cell's own loop, Loop).
+  /// builds there when its final loop holds the cell's own loop's points in
+  /// order (crack patching only refines the cell's own loop). A cell of
+  /// several loops (MeshCellError.h: Several loops) has one apex per loop,
+  /// and its final patch is bounded by its own certificate alone.
   struct MeshCellPrediction
   {
     double Bound = HUGE_VAL;
-    std::vector<Vec3> Loop;
-    /// The fan's apex (MeshCellApex): the extraction's apex fan is around it
+    /// The points of the cell's own loops, loop by loop.
+    std::vector<std::vector<Vec3>> Loops;
+    /// Each loop's apex (MeshCellApex; with several loops, each in its
+    /// loop's room, ApexRooms.h): the extraction's apex fans are around them
     /// (a fan from a loop point, if drawn instead, is certified on its own).
-    Vec3 Apex;
-    /// The largest distance between the fan over Loop and the mesh that the
-    /// prediction came upon.
+    std::vector<Vec3> Apexes;
+    /// The largest distance between the fans over Loops and the mesh that
+    /// the prediction came upon.
     double Attained = 0.0;
-    /// The fan over Loop's certified error alone (Bound without the chords'
-    /// deviation): the final patch's where the final loop is Loop itself;
+    /// The fans over Loops' certified error alone (Bound without the chords'
+    /// deviation): the final patch's where the final loop is the own loop
+    /// itself (one loop);
     /// +inf where the cell was accepted on the per-chord bound (a bound of
     /// the fan's error too, but far above it: not kept as one,
     /// MeshCellError.h).

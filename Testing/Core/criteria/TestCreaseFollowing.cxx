@@ -118,20 +118,20 @@ TEST(CreaseFollowing, ACellsFanMovesItsApexOntoACreaseItMissed)
   surface.Add({ Vec3(0.5, 0, 0.6), Vec3(0.9, 0, 0), Vec3(0.9, 1, 0), Vec3(0.5, 1, 0.6) });
   const std::vector<tpc::CreaseSegment> ridge{ { Vec3(0.5, 0, 0.6), Vec3(0.5, 1, 0.6) } };
   tpc::AdaptiveOctree::MeshCellPrediction prediction;
-  prediction.Loop = { Vec3(0.1, 0, 0), Vec3(0.5, 0, 0.6), Vec3(0.9, 0, 0), Vec3(0.9, 1, 0), Vec3(0.5, 1, 0.6),
-    Vec3(0.1, 1, 0) };
-  prediction.Apex = Vec3(0.5, 0.5, 0.3);
+  prediction.Loops = { { Vec3(0.1, 0, 0), Vec3(0.5, 0, 0.6), Vec3(0.9, 0, 0), Vec3(0.9, 1, 0), Vec3(0.5, 1, 0.6),
+    Vec3(0.1, 1, 0) } };
+  prediction.Apexes = { Vec3(0.5, 0.5, 0.3) };
   prediction.Delta = 0.01;
   const double tolerance = 0.1, reach = 0.1, slack = 1e-12;
-  ASSERT_FALSE(tpc::CreasesFollowed(ridge, tpc::ApexFan(prediction.Loop, prediction.Apex), reach));
+  ASSERT_FALSE(tpc::CreasesFollowed(ridge, tpc::ApexFan(prediction.Loops[0], prediction.Apexes[0]), reach));
   // (A delta at the tolerance leaves no room: nothing changes.)
   tpc::AdaptiveOctree::MeshCellPrediction noRoom = prediction;
   noRoom.Delta = tolerance;
   EXPECT_FALSE(tpc::PredictCreaseApex(surface, cell, ridge, reach, slack, tolerance, noRoom));
-  EXPECT_EQ(tpc::Norm(noRoom.Apex - prediction.Apex), 0.0);
+  EXPECT_EQ(tpc::Norm(noRoom.Apexes[0] - prediction.Apexes[0]), 0.0);
   ASSERT_TRUE(tpc::PredictCreaseApex(surface, cell, ridge, reach, slack, tolerance, prediction));
-  EXPECT_NEAR(tpc::Norm(prediction.Apex - Vec3(0.5, 0.5, 0.6)), 0.0, 1e-15);
-  EXPECT_TRUE(tpc::CreasesFollowed(ridge, tpc::ApexFan(prediction.Loop, prediction.Apex), reach));
+  EXPECT_NEAR(tpc::Norm(prediction.Apexes[0] - Vec3(0.5, 0.5, 0.6)), 0.0, 1e-15);
+  EXPECT_TRUE(tpc::CreasesFollowed(ridge, tpc::ApexFan(prediction.Loops[0], prediction.Apexes[0]), reach));
   // (The roof itself: no distance attained; the bound is the first proof
   // under the tolerance, as the prediction's.)
   EXPECT_LT(prediction.Attained, 1e-9);
@@ -142,11 +142,11 @@ TEST(CreaseFollowing, ACellsFanMovesItsApexOntoACreaseItMissed)
   std::vector<tpc::CreaseSegment> two = ridge;
   two.push_back({ Vec3(0.2, 0.3, 0.15), Vec3(0.2, 0.7, 0.15) });
   tpc::AdaptiveOctree::MeshCellPrediction missed;
-  missed.Loop = prediction.Loop;
-  missed.Apex = Vec3(0.5, 0.5, 0.3);
+  missed.Loops = prediction.Loops;
+  missed.Apexes = { Vec3(0.5, 0.5, 0.3) };
   missed.Delta = 0.01;
   EXPECT_FALSE(tpc::PredictCreaseApex(surface, cell, two, reach, slack, tolerance, missed));
-  EXPECT_EQ(tpc::Norm(missed.Apex - Vec3(0.5, 0.5, 0.3)), 0.0);
+  EXPECT_EQ(tpc::Norm(missed.Apexes[0] - Vec3(0.5, 0.5, 0.3)), 0.0);
 }
 
 TEST(CreaseFollowing, ChamferedBarsCreasesLieWithinTheToleranceOfOutputCreases)

@@ -54,7 +54,7 @@ TEST(LoopTriangulation, ThreePointsNotOnOneFaceAreATriangle)
   SceneBuilder b;
   b.Finish(b.Sphere({ 0, 0, 0 }, 0.5));
   const auto loop = Loop(b.Scene, { { 0.5, 0, 0 }, { 0, 0.5, 0 }, { 0, 0, 0.5 } });
-  EXPECT_EQ(tpc::TriangulateLoop(loop, Cell, false, *b.Scene.Expression, b.Scene.Primitives).Kind,
+  EXPECT_EQ(tpc::TriangulateLoop(loop, tpc::ApexRoom{ Cell, {} }, false, *b.Scene.Expression, b.Scene.Primitives).Kind,
     LoopPatchKind::Triangle);
 }
 
@@ -71,7 +71,7 @@ TEST(LoopTriangulation, SmoothLoopIsMarchingCubesFan)
     positions.push_back({ xy.first, xy.second, z });
   }
   const auto loop = Loop(b.Scene, positions);
-  const tpc::LoopPatch patch = tpc::TriangulateLoop(loop, Cell, false, *b.Scene.Expression, b.Scene.Primitives);
+  const tpc::LoopPatch patch = tpc::TriangulateLoop(loop, tpc::ApexRoom{ Cell, {} }, false, *b.Scene.Expression, b.Scene.Primitives);
   ASSERT_EQ(patch.Kind, LoopPatchKind::LoopFan);
   ASSERT_GE(patch.FanPoint, 0);
   const auto s = static_cast<std::size_t>(patch.FanPoint);
@@ -88,7 +88,7 @@ TEST(LoopTriangulation, CreaseApexIsTheFeaturePoint)
     b.Add(tpc::Quadric::Plane({ 0, 0.5, 0 }, { 0, 1, 0 })) }));
   // (Loops run counter-clockwise seen from outside the solid.)
   const auto loop = Loop(b.Scene, { { 0.5, 0, 0 }, { 0, 0.5, 0 }, { 0, 0.5, 1 }, { 0.5, 0, 1 } });
-  const tpc::LoopPatch patch = tpc::TriangulateLoop(loop, Cell, false, *b.Scene.Expression, b.Scene.Primitives);
+  const tpc::LoopPatch patch = tpc::TriangulateLoop(loop, tpc::ApexRoom{ Cell, {} }, false, *b.Scene.Expression, b.Scene.Primitives);
   ASSERT_EQ(patch.Kind, LoopPatchKind::ApexFan);
   EXPECT_NEAR(patch.Apex[0], 0.5, 1e-12);
   EXPECT_NEAR(patch.Apex[1], 0.5, 1e-12);
@@ -183,7 +183,7 @@ TEST(LoopTriangulation, CapApexIsStrictlyInsideItsRegion)
   const double d = std::sqrt(r * r - 0.09 - 0.25); // where the circle meets each face edge
   const auto loop = Loop(b.Scene, { { 0, 0.5 - d, 1 }, { 0, 0.5 + d, 1 }, { 0.5 - d, 1, 1 }, { 0.5 + d, 1, 1 },
                                     { 1, 0.5 + d, 1 }, { 1, 0.5 - d, 1 }, { 0.5 + d, 0, 1 }, { 0.5 - d, 0, 1 } });
-  const tpc::LoopPatch patch = tpc::TriangulateLoop(loop, Cell, false, *b.Scene.Expression, b.Scene.Primitives);
+  const tpc::LoopPatch patch = tpc::TriangulateLoop(loop, tpc::ApexRoom{ Cell, {} }, false, *b.Scene.Expression, b.Scene.Primitives);
   ASSERT_EQ(patch.Kind, LoopPatchKind::ApexFan);
   EXPECT_TRUE(tpc::StrictlyInside(patch.Apex, Cell));
   for (int a = 0; a < 3; ++a)
@@ -194,18 +194,3 @@ TEST(LoopTriangulation, CapApexIsStrictlyInsideItsRegion)
   ExpectFanFacesOutward(loop, patch.Apex);
 }
 
-TEST(LoopTriangulation, SeveralLoopsKeepTheirApexesApart)
-{
-  // Two loops whose boxes are apart along x: each apex region is cut halfway
-  // between them, so their fans lie on opposite sides of that plane.
-  const std::vector<Box3> boxes = { { { 0, 0, 0 }, { 0.2, 1, 1 } }, { { 0.6, 0, 0 }, { 1, 1, 1 } } };
-  const Box3 left = tpc::ApexRegion(boxes, 0, Cell), right = tpc::ApexRegion(boxes, 1, Cell);
-  EXPECT_DOUBLE_EQ(left.hi[0], 0.4);
-  EXPECT_DOUBLE_EQ(right.lo[0], 0.4);
-  EXPECT_EQ(left.lo[0], 0.0);
-  EXPECT_EQ(right.hi[0], 1.0);
-  // Overlapping boxes (a cell stopped by a limit) do not cut each other.
-  const std::vector<Box3> overlapping = { { { 0, 0, 0 }, { 0.7, 1, 1 } }, { { 0.6, 0, 0 }, { 1, 1, 1 } } };
-  const Box3 whole = tpc::ApexRegion(overlapping, 0, Cell);
-  EXPECT_EQ(whole.hi[0], 1.0);
-}
