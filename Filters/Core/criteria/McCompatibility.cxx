@@ -387,8 +387,8 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   }
   else if (booleanFan)
   {
-    v.BooleanFanApex = PredictMeshBooleanFan(expression, prims, grid, box, boundary, tolerance, v.PredictedError);
-    if (!v.BooleanFanApex)
+    v.BooleanFanApexes = PredictMeshBooleanFan(expression, prims, grid, box, boundary, tolerance, v.PredictedError);
+    if (v.BooleanFanApexes.empty())
     {
       v.Reason = SplitReason::HausdorffSize;
       return v;

@@ -59,11 +59,12 @@ struct McCompatibility
   /// the cell's own loop): ErrorBounded then, the apex kept for the
   /// extraction.
   std::optional<Vec3> QuadricFanApex;
-  /// Set where meshes meet in a cell larger than the tolerance whose fan
-  /// around this apex over its own loop is predicted within the tolerance
-  /// (MeshBooleanCellError.h): ErrorBounded and CreaseFan then, the apex
-  /// kept for the extraction, which certifies the final patch.
-  std::optional<Vec3> BooleanFanApex;
+  /// Set where meshes meet in a cell larger than the tolerance whose fans
+  /// around these apexes (one per loop) over its own loops are predicted
+  /// within the tolerance (MeshBooleanCellError.h): ErrorBounded and
+  /// CreaseFan then, the apexes kept for the extraction, which certifies the
+  /// final patch.
+  std::vector<Vec3> BooleanFanApexes;
   /// Larger than the tolerance (the Hausdorff size test's own comparison).
   bool Oversized = false;
   /// Split for its size before the other tests: a spoke of every fan its

@@ -15,16 +15,19 @@ namespace
 /// cell whose bound needs more is split instead, as in MeshCellError.cxx).
 constexpr std::size_t PredictionBudget = 1024;
 
-/// How far S's trace on the cell's faces strays from the loop `loop`
+/// How far S's trace on the cell's faces strays from the loops `loops`
 /// (header: The prediction): the covering pieces clipped to each face, at
 /// their corners.
-double TraceDeviation(const PolygonSet& covering, const Box3& cell, const std::vector<Vec3>& loop)
+double TraceDeviation(const PolygonSet& covering, const Box3& cell, const std::vector<std::vector<Vec3>>& loops)
 {
   const auto fromLoop = [&](const Vec3& p) {
     double nearest = HUGE_VAL;
-    for (std::size_t k = 0; k < loop.size(); ++k)
+    for (const std::vector<Vec3>& loop : loops)
     {
-      nearest = std::min(nearest, SegmentDistance(p, loop[k], loop[(k + 1) % loop.size()]));
+      for (std::size_t k = 0; k < loop.size(); ++k)
+      {
+        nearest = std::min(nearest, SegmentDistance(p, loop[k], loop[(k + 1) % loop.size()]));
+      }
     }
     return nearest;
   };
@@ -85,7 +88,42 @@ std::vector<Vec3> ApexesOnCreases(const Box3& cell, const std::vector<CreaseSegm
   return apexes;
 }
 
-std::optional<Vec3> PredictMeshBooleanFan(const CsgExpressionPtr& expression, const PrimitiveSet& primitives,
+namespace
+{
+/// The apexes each loop's fan may take, tried in order (header: Creases;
+/// Several loops): a lone loop's as above; with several, each loop's
+/// planes' point in its room (LoopApex) or the crease points nearest it
+/// there.
+std::vector<std::vector<Vec3>> ApexCandidates(const MeshBooleanSurface& surface,
+  const std::vector<CreaseSegment>& creases, const Box3& cell, const std::vector<std::vector<Vec3>>& loops)
+{
+  if (loops.size() == 1)
+  {
+    const Vec3 planesPoint = MeshCellApex(surface.OnSurface, cell);
+    return { creases.empty() ? std::vector<Vec3>{ planesPoint } : ApexesOnCreases(cell, creases, planesPoint) };
+  }
+  const std::vector<ApexRoom> rooms = ApexRooms(loops, cell);
+  std::vector<std::vector<Vec3>> candidates(loops.size());
+  for (std::size_t l = 0; l < loops.size(); ++l)
+  {
+    const Vec3 planesPoint = LoopApex(surface.OnSurface, rooms[l], loops[l]);
+    for (const Vec3& onCrease : ApexesOnCreases(rooms[l].Region, creases, planesPoint))
+    {
+      if (InRoom(onCrease, rooms[l]))
+      {
+        candidates[l].push_back(onCrease);
+      }
+    }
+    if (candidates[l].empty())
+    {
+      candidates[l].push_back(planesPoint);
+    }
+  }
+  return candidates;
+}
+} // namespace
+
+std::vector<Vec3> PredictMeshBooleanFan(const CsgExpressionPtr& expression, const PrimitiveSet& primitives,
   const RootGrid& grid, const Box3& cell, const CellBoundary& boundary, double tolerance, double& predicted)
 {
   predicted = HUGE_VAL;
@@ -95,31 +133,50 @@ std::optional<Vec3> PredictMeshBooleanFan(const CsgExpressionPtr& expression, co
         surface, &creases) ||
     surface.OnSurface.empty())
   {
-    return std::nullopt;
+    return {};
   }
   CellBoundary bent = boundary;
   MarkCsgCreaseTiles(bent, primitives, grid, [&](int, std::size_t) { return &expression; });
   const BoundaryLoopSet loops = TraceBoundaryLoops(bent);
-  std::vector<Vec3> loop;
-  if (loops.LoopSizes.size() != 1 || !loops.Consistent || loops.Crossings.size() < 3 ||
-    !PlaceCsgLoopPoints(loops.Crossings, expression, primitives, grid, loop))
+  if (loops.LoopSizes.empty() || !loops.Consistent)
   {
-    return std::nullopt;
+    return {};
   }
-  const double delta = TraceDeviation(surface.Covering, cell, loop) + surface.Slack;
+  std::vector<std::vector<Vec3>> points(loops.LoopSizes.size());
+  std::size_t offset = 0;
+  for (std::size_t l = 0; l < points.size(); ++l)
+  {
+    const std::vector<Crossing> loop(loops.Crossings.begin() + static_cast<std::ptrdiff_t>(offset),
+      loops.Crossings.begin() + static_cast<std::ptrdiff_t>(offset + loops.LoopSizes[l]));
+    offset += loops.LoopSizes[l];
+    if (loop.size() < 3 || !PlaceCsgLoopPoints(loop, expression, primitives, grid, points[l]))
+    {
+      return {};
+    }
+  }
+  const double delta = TraceDeviation(surface.Covering, cell, points) + surface.Slack;
   if (!(delta < tolerance))
   {
-    return std::nullopt;
+    return {};
   }
   // Around the point S's planes give where the meshes do not cross here;
   // else around a point of the crease where they do, nearest it first
-  // (header: Creases).
-  const Vec3 planesPoint = MeshCellApex(surface.OnSurface, cell);
-  const std::vector<Vec3> apexes =
-    creases.empty() ? std::vector<Vec3>{ planesPoint } : ApexesOnCreases(cell, creases, planesPoint);
-  for (const Vec3& apex : apexes)
+  // (header: Creases) - each loop around its own (Several loops), the k-th
+  // try taking each loop's k-th candidate, or its last.
+  const std::vector<std::vector<Vec3>> candidates = ApexCandidates(surface, creases, cell, points);
+  std::size_t tries = 0;
+  for (const std::vector<Vec3>& c : candidates)
   {
-    const std::vector<SourceTriangle> fan = ApexFan(loop, apex);
+    tries = std::max(tries, c.size());
+  }
+  for (std::size_t k = 0; k < tries; ++k)
+  {
+    std::vector<Vec3> apexes;
+    for (const std::vector<Vec3>& c : candidates)
+    {
+      apexes.push_back(c[std::min(k, c.size() - 1)]);
+    }
+    const std::vector<SourceTriangle> fan = ApexFans(points, apexes);
     if (!CreasesFollowed(creases, fan, BooleanCreaseReach * tolerance))
     {
       continue;
@@ -129,10 +186,10 @@ std::optional<Vec3> PredictMeshBooleanFan(const CsgExpressionPtr& expression, co
     if (error.Upper + delta <= tolerance)
     {
       predicted = error.Upper + delta;
-      return apex;
+      return apexes;
     }
   }
-  return std::nullopt;
+  return {};
 }
 
 } // namespace tpc

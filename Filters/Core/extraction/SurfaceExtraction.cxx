@@ -375,12 +375,11 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
       // the apex it was accepted with, over the final loop, or around
       // another point of the crease where that one misses it; bounded by its
       // certificate alone (MeshBooleanCellError.h).
-      const Vec3& apex = booleanFan->second;
-      const std::vector<Vec3> apexes{ apex };
+      const std::vector<Vec3>& apexes = booleanFan->second;
       TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches, nullptr, &apexes);
       if (CellFromOtherApex(tree, n, loops, prims, vertices, mesh, surface, surface.Creases,
-            [&] { return ApexesOnCreases(box, surface.Creases, apex); }, BooleanCreaseReach * tree.HausdorffTolerance,
-            aim, apex, patches, certificate))
+            [&] { return ApexesOnCreases(box, surface.Creases, apexes[0]); },
+            BooleanCreaseReach * tree.HausdorffTolerance, aim, apexes[0], patches, certificate))
       {
         return certificate;
       }

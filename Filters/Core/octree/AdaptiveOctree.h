@@ -160,10 +160,10 @@ public:
   /// draws that fan where its usual patch is not certified within the
   /// tolerance.
   std::unordered_map<std::uint32_t, Vec3> QuadricFanApexes;
-  /// The apex of each error-bounded leaf larger than the tolerance where
-  /// meshes meet (MeshBooleanCellError.h): the extraction draws the fan
-  /// around it over the final loop and certifies it.
-  std::unordered_map<std::uint32_t, Vec3> BooleanFanApexes;
+  /// The apexes of each error-bounded leaf larger than the tolerance where
+  /// meshes meet, one per loop (MeshBooleanCellError.h): the extraction
+  /// draws the fans around them over the final loops and certifies them.
+  std::unordered_map<std::uint32_t, std::vector<Vec3>> BooleanFanApexes;
 
   /// Tiles of faces that were refined (FaceRefinement.h), for leaves that
   /// passed the tests; faces not listed are a single tile.

@@ -70,9 +70,9 @@ bool DecideCell(AdaptiveOctree& tree, std::uint32_t n, const CellTests& tests, c
     {
       tree.QuadricFanApexes[n] = *v.QuadricFanApex;
     }
-    if (v.BooleanFanApex)
+    if (!v.BooleanFanApexes.empty())
     {
-      tree.BooleanFanApexes[n] = *v.BooleanFanApex;
+      tree.BooleanFanApexes[n] = v.BooleanFanApexes;
     }
     result.SurfaceCells += mine;
     result.ChordRefinedCells += v.ChordsRefined ? mine : 0;
