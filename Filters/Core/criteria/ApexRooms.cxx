@@ -41,21 +41,6 @@ Box3 ApexRegion(const std::vector<Box3>& loopBoxes, std::size_t i, const Box3& c
   return region;
 }
 
-std::vector<SeparatingPlane> ObliqueCuts(const std::vector<std::vector<Vec3>>& loopPoints,
-  const std::vector<Box3>& loopBoxes, std::size_t i)
-{
-  std::vector<SeparatingPlane> cuts;
-  for (std::size_t j = 0; j < loopBoxes.size(); ++j)
-  {
-    SeparatingPlane plane;
-    if (j != i && loopBoxes[i].Overlaps(loopBoxes[j]) && FindSeparatingPlane(loopPoints[i], loopPoints[j], plane))
-    {
-      cuts.push_back(plane);
-    }
-  }
-  return cuts;
-}
-
 std::vector<ApexRoom> ApexRooms(const std::vector<std::vector<Vec3>>& loopPoints, const Box3& cell)
 {
   if (loopPoints.size() == 1)
@@ -65,12 +50,28 @@ std::vector<ApexRoom> ApexRooms(const std::vector<std::vector<Vec3>>& loopPoints
   std::vector<Box3> boxes;
   for (const std::vector<Vec3>& loop : loopPoints)
   {
-    boxes.push_back(BoundsOf(loop.data(), loop.size()));
+    // (An empty loop - none is traced - has an empty box, apart from none.)
+    boxes.push_back(loop.empty() ? Box3{ { HUGE_VAL, HUGE_VAL, HUGE_VAL }, { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL } }
+                                 : BoundsOf(loop.data(), loop.size()));
   }
   std::vector<ApexRoom> rooms;
   for (std::size_t i = 0; i < loopPoints.size(); ++i)
   {
-    rooms.push_back({ ApexRegion(boxes, i, cell), ObliqueCuts(loopPoints, boxes, i) });
+    rooms.push_back({ ApexRegion(boxes, i, cell), {} });
+  }
+  // One plane per pair of loops whose boxes overlap, each loop below it on
+  // its own side (the header's argument needs the same plane for both).
+  for (std::size_t i = 0; i < loopPoints.size(); ++i)
+  {
+    for (std::size_t j = i + 1; j < loopPoints.size(); ++j)
+    {
+      SeparatingPlane plane;
+      if (boxes[i].Overlaps(boxes[j]) && FindSeparatingPlane(loopPoints[i], loopPoints[j], plane))
+      {
+        rooms[i].Below.push_back(plane);
+        rooms[j].Below.push_back({ plane.Normal * -1.0, -plane.Offset, plane.Gap });
+      }
+    }
   }
   return rooms;
 }

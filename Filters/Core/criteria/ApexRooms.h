@@ -8,17 +8,16 @@
 // A cell passes the tests with several loops only when every two are
 // separated by a plane that the surface does not meet (LoopsSeparated,
 // ComplexCellCriterion.h): axis-aligned, so their points' bounding boxes are
-// apart along some axis, or oblique. A fan lies in the convex hull of its
+// apart along some axis, or oblique. A patch lies in the convex hull of its
 // loop and apex. ApexRegion cuts the cell halfway between the boxes of every
-// two loops apart along an axis; ObliqueCuts finds a plane between the points
-// of two loops that are not. With each apex strictly inside its loop's region
-// and below its cuts by a quarter of their gaps (InRoom), loop i's patch (in
-// the hull of its loop and apex) lies strictly on its side of each cut and
-// loop j's strictly on the other: the patches of different loops lie
-// strictly on opposite sides of a plane, so they do not meet. (Each loop's points lie inside its own region and below its
-// own cuts: a box apart from the other's is cut between the two, and a
-// separating plane has loop i's points below it by half its gap.) Every
-// comparison is exact on the computed coordinates.
+// two loops apart along an axis; ApexRooms finds one plane between the
+// points of two loops that are not, each loop below it on its own side. Each
+// loop's points lie inside its own region and below its own cuts by half
+// their gaps; with its apex strictly inside its region and below its cuts by
+// a quarter of their gaps (InRoom), loop i's patch lies strictly on its side
+// of each cut and loop j's strictly on the other: the patches of different
+// loops lie strictly on opposite sides of a plane, so they do not meet.
+// Every comparison is exact on the computed coordinates.
 #pragma once
 
 #include "SeparatingPlane.h"
@@ -41,19 +40,16 @@ struct ApexRoom
 /// The open region of `cell` where loop `i`'s apex may lie: the cell cut, for
 /// every other loop whose bounding box is apart from loop i's along some axis,
 /// halfway between the two boxes. Loops not apart from loop i do not cut it
-/// (see ObliqueCuts).
+/// (see ApexRooms).
 Box3 ApexRegion(const std::vector<Box3>& loopBoxes, std::size_t i, const Box3& cell);
 
-/// For every other loop whose box is not apart from loop i's along any axis
-/// (two sheets beside a thin wedge's edge, which the subdivision separated by
-/// an oblique plane, LoopsSeparated): a plane between the two loops' points,
-/// loop i below it. None found (cells stopped by a limit): no cut, and the
-/// exact check of the output decides (SurfaceEmbedding.h).
-std::vector<SeparatingPlane> ObliqueCuts(const std::vector<std::vector<Vec3>>& loopPoints,
-  const std::vector<Box3>& loopBoxes, std::size_t i);
-
 /// Each loop's room in `cell`, the loops given by their points: the whole
-/// cell for a lone loop, else ApexRegion and ObliqueCuts.
+/// cell for a lone loop, else ApexRegion and, for every other loop whose box
+/// is not apart from its own along any axis (two sheets beside a thin
+/// wedge's edge, which the subdivision separated by an oblique plane,
+/// LoopsSeparated), a plane between the two loops' points, the same for
+/// both, each below it on its side. None found (cells stopped by a limit):
+/// no cut, and the exact check of the output decides (SurfaceEmbedding.h).
 std::vector<ApexRoom> ApexRooms(const std::vector<std::vector<Vec3>>& loopPoints, const Box3& cell);
 
 /// Whether `p` lies in `room` (strictly inside its region, below each cut by

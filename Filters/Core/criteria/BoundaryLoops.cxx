@@ -285,4 +285,16 @@ BoundaryLoopSet TraceBoundaryLoops(CellBoundary& b)
   return loops;
 }
 
+std::vector<std::vector<Crossing>> EachLoop(const BoundaryLoopSet& loops)
+{
+  std::vector<std::vector<Crossing>> each;
+  auto first = loops.Crossings.begin();
+  for (const std::uint32_t size : loops.LoopSizes)
+  {
+    each.emplace_back(first, first + size);
+    first += size;
+  }
+  return each;
+}
+
 } // namespace tpc

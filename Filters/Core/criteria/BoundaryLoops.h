@@ -142,6 +142,9 @@ struct BoundaryLoopSet
 
 BoundaryLoopSet TraceBoundaryLoops(CellBoundary& boundary);
 
+/// Each loop's crossings, in order.
+std::vector<std::vector<Crossing>> EachLoop(const BoundaryLoopSet& loops);
+
 /// Faces of the cell with low corner `base` and edge `size` (lattice units)
 /// that a loop's crossing lies on: bit f (CubeTopology.h numbering); all six
 /// for a bend (never a fan point), none for a mesh vertex inside an exact

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace tpc
 {
@@ -257,23 +258,30 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   }
   // S_C, for the prediction; a spoke of every fan it could be made with that
   // strays beyond the tolerance fails it before the costlier tests
-  // (MeshCellError.h: Spokes).
-  // In a scene of one mesh, its creases in the cell (CreaseFollowing.h); a
-  // cell of several loops is accepted only where there is none
-  // (MeshCellError.h: Several loops).
+  // (MeshCellError.h: Spokes) - where it may pass with several loops, a
+  // spoke to its sheet's apex. In a scene of one mesh, its creases in the
+  // cell (CreaseFollowing.h), found when first asked: a cell of several
+  // loops is accepted only where there is none (MeshCellError.h: Several
+  // loops).
   PolygonSet ownSurface;
   PolygonSet& meshSurface = surfaceScratch ? *surfaceScratch : ownSurface;
   meshSurface.clear();
   const bool oneMesh = meshBounded && IsOneMesh(*tree.SceneExpression);
-  std::vector<CreaseSegment> meshCreases;
+  std::optional<std::vector<CreaseSegment>> creasesFound;
+  const auto meshCreases = [&]() -> const std::vector<CreaseSegment>& {
+    if (!creasesFound)
+    {
+      creasesFound = oneMesh ? CreasesInCell(*LoneMeshLeaf(*expression), prims, box) : std::vector<CreaseSegment>();
+    }
+    return *creasesFound;
+  };
   if (meshBounded)
   {
     SurfaceInCell(*LoneMeshLeaf(*expression), prims, box, meshSurface);
-    meshCreases = oneMesh ? CreasesInCell(*LoneMeshLeaf(*expression), prims, box) : std::vector<CreaseSegment>();
   }
-  const bool severalLoops = meshCreases.empty();
   if (meshBounded && provenFailuresFirst &&
-    SpokeStrays(*LoneMeshLeaf(*expression), prims, box, mask, meshSurface, tolerance, severalLoops))
+    SpokeStrays(*LoneMeshLeaf(*expression), prims, box, mask, meshSurface, tolerance) &&
+    (!meshCreases().empty() || SheetSpokesStray(*LoneMeshLeaf(*expression), prims, box, mask, meshSurface, tolerance)))
   {
     v.Reason = SplitReason::HausdorffSize;
     v.SplitBySpoke = true;
@@ -316,13 +324,13 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     // so the loop the prediction starts from may too: the final loop follows
     // the same halves of the trace there.
     // (Without a crease tile the loops are those traced above.)
-    const bool creases = oneMesh &&
-      MarkCreaseTiles(boundary, *LoneMeshLeaf(*expression), prims, grid, [](int, std::size_t) { return true; });
-    if (loops.LoopSizes.size() > 1 && !severalLoops)
+    if (loops.LoopSizes.size() > 1 && !meshCreases().empty())
     {
       v.Reason = SplitReason::CreaseNotFollowed;
       return v;
     }
+    const bool creases = oneMesh &&
+      MarkCreaseTiles(boundary, *LoneMeshLeaf(*expression), prims, grid, [](int, std::size_t) { return true; });
     v.PredictedError = PredictedMeshCellError(*expression, prims, grid, box, boundary,
       creases ? TraceBoundaryLoops(boundary) : loops, tolerance, v.MeshPrediction, &meshSurface,
       provenFailuresFirst);
@@ -331,7 +339,7 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     // chords' tiles are split (MeshCellError.h: Chords refined) - not in a
     // cell that must draw creases.
     if (!v.ErrorBounded && refineChords && !(v.MeshPrediction.Delta <= ChordRefinementShare * tolerance) &&
-      meshCreases.empty() &&
+      meshCreases().empty() &&
       PredictOverFinerChords(tree, n, prims, tolerance, faceRefinementLevels, oneMesh, provenFailuresFirst,
         meshSurface, signs, boundary, v))
     {
@@ -351,9 +359,9 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     {
       const CsgLeaf& leaf = *LoneMeshLeaf(*expression);
       const double reach = CreaseReach * tolerance;
-      if (!CreasesFollowed(meshCreases, ApexFans(v.MeshPrediction.Loops, v.MeshPrediction.Apexes), reach))
+      if (!CreasesFollowed(meshCreases(), ApexFans(v.MeshPrediction.Loops, v.MeshPrediction.Apexes), reach))
       {
-        if (!PredictCreaseApex(meshSurface, box, meshCreases, reach, RoundingSlack(leaf, prims, box), tolerance,
+        if (!PredictCreaseApex(meshSurface, box, meshCreases(), reach, RoundingSlack(leaf, prims, box), tolerance,
               v.MeshPrediction))
         {
           v.ErrorBounded = v.MeshSurface = false;

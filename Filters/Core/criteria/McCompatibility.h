@@ -39,8 +39,9 @@ struct McCompatibility
   bool ErrorBounded = false;
   double PredictedError = HUGE_VAL;
   /// ErrorBounded where one mesh is the surface in a cell larger than the
-  /// tolerance (MeshCellError.h): the prediction holds for the fan around
-  /// MeshCellApex over the final loop. (Cells of one mesh, or where meshes
+  /// tolerance (MeshCellError.h): the prediction holds for the fans around
+  /// its apexes (MeshCellApex, or one per loop) over the final loops. (Cells
+  /// of one mesh, or where meshes
   /// meet - MeshBooleanSurface.h - within the tolerance are ErrorBounded
   /// too, predicted by their diagonal, with their own patch.)
   bool MeshSurface = false;

@@ -142,14 +142,11 @@ std::vector<Vec3> PredictMeshBooleanFan(const CsgExpressionPtr& expression, cons
   {
     return {};
   }
-  std::vector<std::vector<Vec3>> points(loops.LoopSizes.size());
-  std::size_t offset = 0;
+  const std::vector<std::vector<Crossing>> each = EachLoop(loops);
+  std::vector<std::vector<Vec3>> points(each.size());
   for (std::size_t l = 0; l < points.size(); ++l)
   {
-    const std::vector<Crossing> loop(loops.Crossings.begin() + static_cast<std::ptrdiff_t>(offset),
-      loops.Crossings.begin() + static_cast<std::ptrdiff_t>(offset + loops.LoopSizes[l]));
-    offset += loops.LoopSizes[l];
-    if (loop.size() < 3 || !PlaceCsgLoopPoints(loop, expression, primitives, grid, points[l]))
+    if (each[l].size() < 3 || !PlaceCsgLoopPoints(each[l], expression, primitives, grid, points[l]))
     {
       return {};
     }

@@ -5,8 +5,9 @@
 // (IsMeshBoolean, MeshBooleanSurface.h) larger than the tolerance that
 // passes the topology tests is accepted when the fan predicted here is
 // within the tolerance; its bound is the certificate of its final patch:
-// the extraction draws the fan around the apex kept here over the cell's
-// final loop (after crack patching) and bounds its E(P') against S's two
+// the extraction draws the fan around the apex kept here (one per loop,
+// Several loops below) over the cell's final loop (after crack patching)
+// and bounds its E(P') against S's two
 // sides (MeshBooleanSurface.h) by the branch and bound. Where that is not
 // within the tolerance, the cell is split by a repair round (CellRepair.h)
 // and the guarantee is decided on the next run's final patches alone. So

@@ -214,17 +214,6 @@ Vec3 LeastSquaresApex(const PolygonSet& surface, const Box3& box, double margin,
 /// bar at 1/64: six output creases off the bar's edges).
 constexpr double LoopApexMargin = 1.0 / 1024.0;
 
-/// The mean of `points` (a vector or a polygon's corners).
-template <typename Points>
-Vec3 Centroid(const Points& points)
-{
-  Vec3 m;
-  for (const Vec3& p : points)
-  {
-    m += p;
-  }
-  return m * (1.0 / static_cast<double>(points.size()));
-}
 } // namespace
 
 Vec3 MeshCellApex(const PolygonSet& surface, const Box3& cell)
@@ -234,13 +223,18 @@ Vec3 MeshCellApex(const PolygonSet& surface, const Box3& cell)
 
 Vec3 LoopApex(const PolygonSet& surface, const ApexRoom& room, const std::vector<Vec3>& loop)
 {
-  const Vec3 apex = LeastSquaresApex(surface, room.Region, LoopApexMargin, [&](std::size_t i) {
-    const Vec3 c = Centroid(surface[i].Points);
-    return room.Region.Contains(c) &&
+  // (Each polygon asked once: the least squares read the choice twice.)
+  std::vector<char> inRoom(surface.size());
+  for (std::size_t i = 0; i < surface.size(); ++i)
+  {
+    const PointSpan corners = surface[i].Points;
+    const Vec3 c = MeanOf(corners.begin(), corners.size());
+    inRoom[i] = room.Region.Contains(c) &&
       std::all_of(room.Below.begin(), room.Below.end(),
         [&](const SeparatingPlane& plane) { return Dot(plane.Normal, c) < plane.Offset; });
-  });
-  return KeptInRoom(apex, Centroid(loop), room);
+  }
+  const Vec3 apex = LeastSquaresApex(surface, room.Region, LoopApexMargin, [&](std::size_t i) { return inRoom[i]; });
+  return KeptInRoom(apex, MeanOf(loop.data(), loop.size()), room);
 }
 
 double ChordDeviation(const PolygonSet& surface, const Box3& tile, const Vec3& a, const Vec3& b)
@@ -577,15 +571,13 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
   // Each loop's points, and delta_k: each chord against the trace on its
   // tile (on a crease tile, against its half of the trace), loop by loop in
   // the fan's order.
-  std::vector<std::vector<Vec3>> points(loops.LoopSizes.size());
+  const std::vector<std::vector<Crossing>> each = EachLoop(loops);
+  std::vector<std::vector<Vec3>> points(each.size());
   std::vector<double> chordDelta;
   double delta = 0.0;
-  std::size_t offset = 0;
   for (std::size_t l = 0; l < points.size(); ++l)
   {
-    const std::vector<Crossing> loop(loops.Crossings.begin() + static_cast<std::ptrdiff_t>(offset),
-      loops.Crossings.begin() + static_cast<std::ptrdiff_t>(offset + loops.LoopSizes[l]));
-    offset += loops.LoopSizes[l];
+    const std::vector<Crossing>& loop = each[l];
     std::vector<ChordTile> chords;
     if (!PlaceLoopPoints(expression, primitives, grid, loop, points[l]) ||
       !MeasureChords(surface, grid, boundary, loop, points[l], tolerance, chords))
@@ -661,33 +653,6 @@ namespace
 /// edge for SpokeStrays to use the crossing (header, Spokes).
 constexpr double WellCrossed = 1e-3;
 
-/// Whether the segment [a, b] meets the closed box (its parameter interval
-/// clipped slab by slab, in floating point).
-bool SegmentMeetsBox(const Vec3& a, const Vec3& b, const Box3& box)
-{
-  double t0 = 0.0, t1 = 1.0;
-  for (int axis = 0; axis < 3 && t0 <= t1; ++axis)
-  {
-    const double d = b[axis] - a[axis];
-    if (d == 0.0)
-    {
-      if (a[axis] < box.lo[axis] || a[axis] > box.hi[axis])
-      {
-        return false;
-      }
-      continue;
-    }
-    double enter = (box.lo[axis] - a[axis]) / d, leave = (box.hi[axis] - a[axis]) / d;
-    if (enter > leave)
-    {
-      std::swap(enter, leave);
-    }
-    t0 = std::max(t0, enter);
-    t1 = std::min(t1, leave);
-  }
-  return t0 <= t1;
-}
-
 /// S_C's sheets (header: Spokes): the leaf's listed triangles that meet the
 /// cell (their clip not empty: S_C's polygons, in the same order), joined
 /// into sheets across mesh edges that meet the closed cell.
@@ -702,6 +667,12 @@ SurfaceSheets SheetsInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives, 
 {
   const MeshSolid& mesh = primitives.Meshes[leaf.Primitive];
   SurfaceSheets sheets;
+  // (Pruning keeps its parent's order, so the list is in order and the
+  // triangles are found by bisection; were it not, no sheets are told apart.)
+  if (!std::is_sorted(leaf.Triangles->begin(), leaf.Triangles->end()))
+  {
+    return sheets;
+  }
   for (const std::uint32_t t : *leaf.Triangles)
   {
     ClippedCorners clipped{ mesh.Vertex(t, 0), mesh.Vertex(t, 1), mesh.Vertex(t, 2) };
@@ -711,8 +682,6 @@ SurfaceSheets SheetsInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives, 
       sheets.Triangles.push_back(t);
     }
   }
-  // (Listed in order, as pruning keeps its parent's order: found by
-  // bisection; where not, fewer joins, more sheets.)
   const std::vector<std::uint32_t>& meeting = sheets.Triangles;
   UnionFind joined(meeting.size());
   for (std::size_t i = 0; i < meeting.size(); ++i)
@@ -721,8 +690,8 @@ SurfaceSheets SheetsInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives, 
     {
       const std::uint32_t u = mesh.Across(meeting[i], k);
       const auto j = std::lower_bound(meeting.begin(), meeting.end(), u);
-      if (u != MeshSolid::NoTriangle && j != meeting.end() && *j == u &&
-        SegmentMeetsBox(mesh.Vertex(meeting[i], k), mesh.Vertex(meeting[i], (k + 1) % 3), cell))
+      Vec3 a = mesh.Vertex(meeting[i], k), b = mesh.Vertex(meeting[i], (k + 1) % 3);
+      if (u != MeshSolid::NoTriangle && j != meeting.end() && *j == u && ClipSegment(a, b, cell))
       {
         joined.Join(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j - meeting.begin()));
       }
@@ -777,7 +746,7 @@ bool SpokeFromApexStrays(const CsgLeaf& leaf, const PrimitiveSet& primitives, co
 } // namespace
 
 bool SpokeStrays(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell, unsigned insideCorners,
-  const PolygonSet& surface, double tolerance, bool severalLoops)
+  const PolygonSet& surface, double tolerance)
 {
   if (surface.empty() || !leaf.Triangles)
   {
@@ -787,24 +756,19 @@ bool SpokeStrays(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3
   // distances here and in the prediction, as there: header, Rounding.)
   const double reach = tolerance + RoundingSlack(leaf, primitives, cell);
   const Vec3 apex = MeshCellApex(surface, cell);
-  if (WithinReach(surface, apex, reach) &&
-    !SpokeFromApexStrays(leaf, primitives, cell, insideCorners, surface, reach, [&](std::uint32_t) { return apex; }))
-  {
-    return false;
-  }
-  // Strays from S_C's apex. Where S_C is several sheets, a cell that passes
-  // the tests has several loops, each fanned around its own apex (header:
-  // Several loops): the spokes to each sheet's apex instead (the sheets
-  // found only now: in most cells the spokes pass).
-  if (!severalLoops)
-  {
-    return true;
-  }
+  return !WithinReach(surface, apex, reach) ||
+    SpokeFromApexStrays(leaf, primitives, cell, insideCorners, surface, reach, [&](std::uint32_t) { return apex; });
+}
+
+bool SheetSpokesStray(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell, unsigned insideCorners,
+  const PolygonSet& surface, double tolerance)
+{
   const SurfaceSheets sheets = SheetsInCell(leaf, primitives, cell);
   if (sheets.Count <= 1 || sheets.Triangles.size() != surface.size())
   {
     return true;
   }
+  const double reach = tolerance + RoundingSlack(leaf, primitives, cell);
   std::vector<Vec3> apexes(sheets.Count);
   for (std::uint32_t s = 0; s < sheets.Count; ++s)
   {
@@ -815,6 +779,7 @@ bool SpokeStrays(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3
       return true;
     }
   }
+  const Vec3 apex = MeshCellApex(surface, cell);
   return SpokeFromApexStrays(leaf, primitives, cell, insideCorners, surface, reach, [&](std::uint32_t t) {
     const auto i = std::lower_bound(sheets.Triangles.begin(), sheets.Triangles.end(), t);
     const bool found = i != sheets.Triangles.end() && *i == t;

@@ -28,8 +28,9 @@
 //   delta = max over chords ab of max over S ∩ t of d(., [a, b]),
 // computed exactly on S's polygons clipped to t (d(., [a, b]) is convex, so
 // its maximum over a polygon is at a vertex). The final patch P' is the fan
-// around the same c (the apex does not depend on the loop; the extraction
-// takes the prediction's). Then
+// around the same c (the extraction takes the prediction's, and keeps the
+// prediction's bound only where it drew the fan around it unchanged,
+// FinalLoopsRefine in SurfaceExtraction.cxx). Then
 //   E(P') <= E(P) + delta:
 // - P' to S. x in P' is c + s (w - c), 0 <= s <= 1, w on a sub-chord
 //   [q_i, q_i+1]; both ends are within delta of [a, b], hence so is w
@@ -185,13 +186,15 @@
 // loops may not pass (a scene of one mesh with a crease in the cell, below).
 // Where S_C is several sheets and several loops may pass, each loop is
 // fanned around its own apex (Several loops): the spokes then go from each
-// crossing to the apex of its triangle's sheet - the least squares point of
-// that sheet's polygons, LoopApexMargin inside the cell - which is the
-// prediction's apex up to the room's cut and clamp, not exactly it: there
-// the spokes only guess, and a cell they split may have passed (splitting
-// is always allowed; MeshCellError.ProvenFailuresSplitOnlyCellsThePrediction
-// WouldSplit finds none on a slab whose cells hold both its faces, nor on
-// the other scenes).
+// crossing to the apex of its triangle's sheet (SheetSpokesStray) - the
+// least squares point of that sheet's polygons, LoopApexMargin inside the
+// cell - which is the prediction's apex up to the room's choice of polygons
+// and its cut and clamp, not exactly it: there the spokes only guess, and a
+// cell they split may have passed (splitting is always allowed, so no bound
+// rests on it; MeshCellError.ProvenFailuresSplitOnlyCellsThePrediction
+// WouldSplit finds no such cell on a slab whose cells hold both its faces,
+// nor on the other scenes). The sheets are asked only where the spokes to
+// S_C's apex stray.
 //
 // Several loops. A cell whose tests pass with several loops - two sheets of
 // a thin part, a tube's two walls - bounds as many discs of S_C, apart
@@ -287,9 +290,10 @@ Vec3 MeshCellApex(const PolygonSet& surface, const Box3& cell);
 
 /// The apex of one of several loops (header: Several loops): the point
 /// nearest to the planes of the polygons of S_C `surface` whose corners'
-/// mean lies in `room`'s region and below its cuts (not strictly), kept 1/32
-/// of the region's width inside it, then moved into the room as the
-/// extraction moves its apexes (KeptInRoom, `loop`'s centroid as fallback).
+/// mean lies in `room`'s region (closed) and below its cuts, kept
+/// LoopApexMargin (1/1024) of the region's width inside it, then moved into
+/// the room as the extraction moves its apexes (KeptInRoom, `loop`'s
+/// centroid as fallback).
 Vec3 LoopApex(const PolygonSet& surface, const ApexRoom& room, const std::vector<Vec3>& loop);
 
 /// max over S ∩ tile of the distance to the chord [a, b] (`tile` is a face
@@ -415,11 +419,18 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
 /// Spokes), so that the cell's prediction fails whatever they trace. Corner
 /// c of the cell (bit a of c: the upper end along axis a) is inside the
 /// solid when bit c of `insideCorners` is set (the exact signs).
-/// `severalLoops`: the cell may be accepted with several loops (header:
-/// Several loops); where S_C is then several sheets, the spokes to each
-/// sheet's apex are asked instead.
+/// (The apex is S_C's: proven only where the cell can pass with one loop
+/// alone - SheetSpokesStray.)
 bool SpokeStrays(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell, unsigned insideCorners,
-  const PolygonSet& surface, double tolerance, bool severalLoops = false);
+  const PolygonSet& surface, double tolerance);
+
+/// Where SpokeStrays is true but the cell may pass with several loops
+/// (header: Several loops): true where S_C is one sheet (then the cell can
+/// only pass with one loop, and the spokes' proof stands), else whether a
+/// spoke from a crossing to the apex of its triangle's sheet strays - a
+/// guess (header: Spokes).
+bool SheetSpokesStray(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell, unsigned insideCorners,
+  const PolygonSet& surface, double tolerance);
 
 /// Whether the final loop `final` holds every point of the cell's own loop
 /// `own` in the same cyclic order (up to rounding): then each chord ab of

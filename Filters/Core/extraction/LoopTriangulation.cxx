@@ -361,8 +361,7 @@ LoopPatch TriangulateLoop(const std::vector<LoopPoint>& loop, const ApexRoom& ro
   LoopPatch patch;
   if (meshApex)
   {
-    patch.Apex = room.Below.empty() ? ClampStrictlyInside(*meshApex, room.Region)
-                                    : KeptInRoom(*meshApex, Centroid(loop), room);
+    patch.Apex = KeptInRoom(*meshApex, Centroid(loop), room);
     return patch;
   }
   if (loop.size() == 3 && CommonFace(loop) < 0)

@@ -282,15 +282,19 @@ bool FinalLoopsRefine(const AdaptiveOctree::MeshCellPrediction& prediction, cons
     return false;
   }
   std::size_t offset = 0;
+  std::vector<bool> used(prediction.Apexes.size(), false);
   for (std::size_t l = 0; l < loops.LoopSizes.size(); ++l)
   {
+    // (Each own loop once: two final loops around one apex would leave
+    // another own loop's part of S_C unaccounted for.)
     const Vec3& drawn = patches.Apexes[l];
     const auto own = std::find_if(prediction.Apexes.begin(), prediction.Apexes.end(),
       [&](const Vec3& a) { return a[0] == drawn[0] && a[1] == drawn[1] && a[2] == drawn[2]; });
-    if (own == prediction.Apexes.end())
+    if (own == prediction.Apexes.end() || used[static_cast<std::size_t>(own - prediction.Apexes.begin())])
     {
       return false;
     }
+    used[static_cast<std::size_t>(own - prediction.Apexes.begin())] = true;
     std::vector<Vec3> final;
     for (std::size_t k = offset; k < offset + loops.LoopSizes[l]; ++k)
     {
@@ -347,11 +351,9 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
       // bends or two chords); the patch is certified on its own anyway.
       const AdaptiveOctree::MeshCellPrediction& predicted = prediction->second;
       TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches, nullptr, &predicted.Apexes);
-      const bool oneLoop = loops.LoopSizes.size() == 1 && predicted.Loops.size() == 1;
-      if (oneLoop &&
-        CellFromOtherApex(tree, n, loops, prims, vertices, mesh, surface, creases,
-          [&] { return CreaseApexes(box, creases, predicted.Apexes[0]); }, CreaseReach * tree.HausdorffTolerance,
-          aim, predicted.Apexes[0], patches, certificate))
+      if (CellFromOtherApex(tree, n, loops, prims, vertices, mesh, surface, creases,
+            [&] { return CreaseApexes(box, creases, predicted.Apexes[0]); }, CreaseReach * tree.HausdorffTolerance,
+            aim, predicted.Apexes[0], patches, certificate))
       {
         return certificate;
       }
@@ -371,10 +373,11 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
     }
     else if (booleanFan != tree.BooleanFanApexes.end())
     {
-      // Meshes meeting in a cell larger than the tolerance: the fan around
-      // the apex it was accepted with, over the final loop, or around
-      // another point of the crease where that one misses it; bounded by its
-      // certificate alone (MeshBooleanCellError.h).
+      // Meshes meeting in a cell larger than the tolerance: the fans around
+      // the apexes it was accepted with (one per loop), over the final
+      // loops, or - one loop - around another point of the crease where that
+      // one misses it; bounded by its certificate alone
+      // (MeshBooleanCellError.h).
       const std::vector<Vec3>& apexes = booleanFan->second;
       TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches, nullptr, &apexes);
       if (CellFromOtherApex(tree, n, loops, prims, vertices, mesh, surface, surface.Creases,

@@ -79,12 +79,7 @@ inline Vec3 BestFitNormal(const std::vector<const std::vector<Vec3>*>& sets)
 
 inline Vec3 Centroid(const std::vector<Vec3>& points)
 {
-  Vec3 c;
-  for (const Vec3& p : points)
-  {
-    c += p;
-  }
-  return points.empty() ? c : c * (1.0 / static_cast<double>(points.size()));
+  return MeanOf(points.data(), points.size());
 }
 } // namespace detail
 

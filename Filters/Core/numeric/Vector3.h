@@ -146,6 +146,17 @@ struct Box3
   }
 };
 
+/// The mean of `count` points (the origin for none).
+inline Vec3 MeanOf(const Vec3* points, std::size_t count)
+{
+  Vec3 sum;
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    sum += points[i];
+  }
+  return count == 0 ? sum : sum * (1.0 / static_cast<double>(count));
+}
+
 /// The box of `count` >= 1 points (their exact minima and maxima).
 inline Box3 BoundsOf(const Vec3* points, std::size_t count)
 {

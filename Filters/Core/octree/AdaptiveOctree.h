@@ -123,9 +123,10 @@ public:
   /// larger than the tolerance where one mesh is the surface
   /// (MeshCellError.h): Bound bounds the error of the fan the extraction
   /// builds there when its final loop holds the cell's own loop's points in
-  /// order (crack patching only refines the cell's own loop). A cell of
-  /// several loops (MeshCellError.h: Several loops) has one apex per loop,
-  /// and its final patch is bounded by its own certificate alone.
+  /// order (crack patching only refines the cell's own loop) and is fanned
+  /// around the same apex; a cell of several loops (MeshCellError.h:
+  /// Several loops) has one apex per loop, and Bound holds where each final
+  /// loop refines its own around its apex.
   struct MeshCellPrediction
   {
     double Bound = HUGE_VAL;
@@ -139,8 +140,8 @@ public:
     /// the prediction came upon.
     double Attained = 0.0;
     /// The fans over Loops' certified error alone (Bound without the chords'
-    /// deviation): the final patch's where the final loop is the own loop
-    /// itself (one loop);
+    /// deviation): the final patch's where the final loops are the own loops
+    /// themselves;
     /// +inf where the cell was accepted on the per-chord bound (a bound of
     /// the fan's error too, but far above it: not kept as one,
     /// MeshCellError.h).

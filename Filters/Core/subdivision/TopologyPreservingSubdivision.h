@@ -54,7 +54,9 @@ struct SubdivisionParameters
   /// stray beyond the tolerance split before their tests (MeshCellError.h:
   /// Spokes), and a prediction whose fan has a point too far from the mesh
   /// fails before its branch and bound (Probes). Off only to check that this
-  /// changes no cell's fate.
+  /// changes no cell's fate - proven, but for the spokes of a cell of
+  /// several sheets that may pass with several loops, which guess
+  /// (MeshCellError.h: Spokes; a split is always allowed).
   bool ProvenFailuresFirst = true;
   /// Chords refined: a cell of one mesh larger than the tolerance whose
   /// prediction failed with chords far from the trace is predicted again

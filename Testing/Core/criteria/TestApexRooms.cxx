@@ -85,6 +85,14 @@ TEST(ApexRooms, SheetsBesideAWedgeAreCutObliquelyAndTheirApexesKeptApart)
   ASSERT_EQ(rooms[1].Below.size(), 1u);
   EXPECT_TRUE(Separates(rooms[0].Below[0], lower, upper));
   EXPECT_TRUE(Separates(rooms[1].Below[0], upper, lower));
+  // One plane for both, each loop below it on its own side (the embedding
+  // argument needs the same plane).
+  for (int a = 0; a < 3; ++a)
+  {
+    EXPECT_EQ(rooms[1].Below[0].Normal[a], -rooms[0].Below[0].Normal[a]);
+  }
+  EXPECT_EQ(rooms[1].Below[0].Offset, -rooms[0].Below[0].Offset);
+  EXPECT_EQ(rooms[1].Below[0].Gap, rooms[0].Below[0].Gap);
   const Vec3 between(0.5, 0.5, 0.55); // (on neither sheet: between them)
   const Vec3 low = tpc::KeptInRoom(between, Vec3(0.5, 0.5, 0.45), rooms[0]);
   const Vec3 high = tpc::KeptInRoom(between, Vec3(0.5, 0.5, 0.65), rooms[1]);

@@ -1055,7 +1055,8 @@ TEST(MeshCellError, SpokesOfSeveralSheetsGoToEachSheetsApex)
   // lies between them, 0.06 from each, so with a tolerance of 0.04 the fan
   // around it strays (SpokeStrays, MeshCellError.h: Spokes); where the cell
   // may be accepted with several loops (Several loops), each crossing's
-  // spoke goes to its own sheet's apex instead, on that sheet: none strays.
+  // spoke goes to its own sheet's apex instead, on that sheet: none strays
+  // (SheetSpokesStray).
   const tpc::MeshSolid box = tpctest::CubeMesh({ -0.7, -0.7, -0.06 }, { 0.7, 0.7, 0.06 });
   const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
   std::vector<Vec3> points;
@@ -1069,16 +1070,30 @@ TEST(MeshCellError, SpokesOfSeveralSheetsGoToEachSheetsApex)
   const auto pruned = tpc::CsgExpression::Prune(b.Scene.Expression, cell, b.Scene.Primitives);
   const tpc::CsgLeaf* leaf = tpc::LoneMeshLeaf(*pruned.Expression);
   ASSERT_NE(leaf, nullptr);
-  unsigned inside = 0;
-  for (int k = 0; k < 8; ++k)
-  {
-    inside |= b.Scene.Expression->IsInside(cell.Corner(k), b.Scene.Primitives) ? 1u << k : 0u;
-  }
+  const auto insideCorners = [&](const tpc::Box3& box) {
+    unsigned inside = 0;
+    for (int k = 0; k < 8; ++k)
+    {
+      inside |= b.Scene.Expression->IsInside(box.Corner(k), b.Scene.Primitives) ? 1u << k : 0u;
+    }
+    return inside;
+  };
+  const unsigned inside = insideCorners(cell);
   ASSERT_NE(inside, 0u); // (corners of both signs: edges the sheets cross)
   ASSERT_NE(inside, 0xFFu);
   const tpc::PolygonSet surface = tpc::SurfaceInCell(*leaf, b.Scene.Primitives, cell);
-  EXPECT_TRUE(tpc::SpokeStrays(*leaf, b.Scene.Primitives, cell, inside, surface, 0.04, false));
-  EXPECT_FALSE(tpc::SpokeStrays(*leaf, b.Scene.Primitives, cell, inside, surface, 0.04, true));
+  EXPECT_TRUE(tpc::SpokeStrays(*leaf, b.Scene.Primitives, cell, inside, surface, 0.04));
+  EXPECT_FALSE(tpc::SheetSpokesStray(*leaf, b.Scene.Primitives, cell, inside, surface, 0.04));
+  // A cell that holds the upper face alone is one sheet: the spokes' proof
+  // stands, and the sheets do not overrule it.
+  const tpc::Box3 upper{ { -0.2, -0.2, 0.1 }, { 0.2, 0.2, 0.5 } };
+  const auto upperPruned = tpc::CsgExpression::Prune(b.Scene.Expression, upper, b.Scene.Primitives);
+  const tpc::CsgLeaf* upperLeaf = tpc::LoneMeshLeaf(*upperPruned.Expression);
+  ASSERT_NE(upperLeaf, nullptr);
+  const tpc::PolygonSet upperSurface = tpc::SurfaceInCell(*upperLeaf, b.Scene.Primitives, upper);
+  ASSERT_FALSE(upperSurface.empty());
+  EXPECT_TRUE(
+    tpc::SheetSpokesStray(*upperLeaf, b.Scene.Primitives, upper, insideCorners(upper), upperSurface, 0.04));
 }
 
 TEST(MeshCellError, ProvenFailuresSplitOnlyCellsThePredictionWouldSplit)
