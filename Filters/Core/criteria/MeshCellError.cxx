@@ -653,6 +653,12 @@ namespace
 /// edge for SpokeStrays to use the crossing (header, Spokes).
 constexpr double WellCrossed = 1e-3;
 
+/// The most sheets of S_C whose apexes SheetSpokesStray finds (a pass over
+/// S_C each): a large cell of many sheets - the turbine's blades side by
+/// side - rarely has fans within the tolerance, and the one apex's spokes
+/// split it as before.
+constexpr std::uint32_t MostSheetsAsked = 8;
+
 /// S_C's sheets (header: Spokes): the leaf's listed triangles that meet the
 /// cell (their clip not empty: S_C's polygons, in the same order), joined
 /// into sheets across mesh edges that meet the closed cell.
@@ -764,7 +770,7 @@ bool SheetSpokesStray(const CsgLeaf& leaf, const PrimitiveSet& primitives, const
   const PolygonSet& surface, double tolerance)
 {
   const SurfaceSheets sheets = SheetsInCell(leaf, primitives, cell);
-  if (sheets.Count <= 1 || sheets.Triangles.size() != surface.size())
+  if (sheets.Count <= 1 || sheets.Count > MostSheetsAsked || sheets.Triangles.size() != surface.size())
   {
     return true;
   }

@@ -338,11 +338,12 @@ TEST(CreaseCrossing, TiltedBarsEdgesLieOnFewOutputEdges)
   std::cout << "tilted bar: " << r.Extraction.Mesh.Triangles.size() << " triangles, " << output.size()
             << " output creases, " << onEdges << " on the bar's edges, bound "
             << r.HausdorffBound / r.Tolerance << " tolerance\n";
-  // Measured: 238 triangles, 46 creases, all on the bar's edges, bound 0.07
+  // Measured: 204 triangles (238 before cells of several loops grew: MeshCellError.h,
+  // Several loops), 46 creases, all on the bar's edges, bound 0.07
   // tolerance; with apex fans, 282 triangles, 74 creases, 64 on its edges,
   // bound 0.59 (apexes off the edges where a cell holds two of them).
   EXPECT_EQ(onEdges, output.size());
   EXPECT_LE(output.size(), 50u);
-  EXPECT_LE(r.Extraction.Mesh.Triangles.size(), 250u);
+  EXPECT_LE(r.Extraction.Mesh.Triangles.size(), 220u);
   EXPECT_LE(r.HausdorffBound, r.Tolerance);
 }
