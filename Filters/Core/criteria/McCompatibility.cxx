@@ -260,9 +260,7 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   // strays beyond the tolerance fails it before the costlier tests
   // (MeshCellError.h: Spokes) - where it may pass with several loops, a
   // spoke to its sheet's apex. In a scene of one mesh, its creases in the
-  // cell (CreaseFollowing.h), found when first asked: a cell of several
-  // loops is accepted only where there is none (MeshCellError.h: Several
-  // loops).
+  // cell (CreaseFollowing.h), found when first asked.
   PolygonSet ownSurface;
   PolygonSet& meshSurface = surfaceScratch ? *surfaceScratch : ownSurface;
   meshSurface.clear();
@@ -281,7 +279,7 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   }
   if (meshBounded && provenFailuresFirst &&
     SpokeStrays(*LoneMeshLeaf(*expression), prims, box, mask, meshSurface, tolerance) &&
-    (!meshCreases().empty() || SheetSpokesStray(*LoneMeshLeaf(*expression), prims, box, mask, meshSurface, tolerance)))
+    SheetSpokesStray(*LoneMeshLeaf(*expression), prims, box, mask, meshSurface, tolerance))
   {
     v.Reason = SplitReason::HausdorffSize;
     v.SplitBySpoke = true;
@@ -324,11 +322,6 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     // so the loop the prediction starts from may too: the final loop follows
     // the same halves of the trace there.
     // (Without a crease tile the loops are those traced above.)
-    if (loops.LoopSizes.size() > 1 && !meshCreases().empty())
-    {
-      v.Reason = SplitReason::CreaseNotFollowed;
-      return v;
-    }
     const bool creases = oneMesh &&
       MarkCreaseTiles(boundary, *LoneMeshLeaf(*expression), prims, grid, [](int, std::size_t) { return true; });
     v.PredictedError = PredictedMeshCellError(*expression, prims, grid, box, boundary,

@@ -214,6 +214,10 @@ Vec3 LeastSquaresApex(const PolygonSet& surface, const Box3& box, double margin,
 /// bar at 1/64: six output creases off the bar's edges).
 constexpr double LoopApexMargin = 1.0 / 1024.0;
 
+/// The crease apexes tried for a cell of several loops (CreaseApexSets): the
+/// k-th try takes each loop's k-th candidate.
+constexpr std::size_t SeveralLoopsCreaseTries = 4;
+
 } // namespace
 
 Vec3 MeshCellApex(const PolygonSet& surface, const Box3& cell)
@@ -328,17 +332,58 @@ std::vector<Vec3> CreaseApexes(const Box3& cell, const std::vector<CreaseSegment
   return apexes;
 }
 
+std::vector<std::vector<Vec3>> CreaseApexSets(const Box3& cell, const std::vector<CreaseSegment>& creases,
+  const std::vector<std::vector<Vec3>>& loops, const std::vector<Vec3>& apexes)
+{
+  std::vector<std::vector<Vec3>> sets;
+  if (loops.size() == 1)
+  {
+    for (const Vec3& apex : CreaseApexes(cell, creases, apexes[0]))
+    {
+      sets.push_back({ apex });
+    }
+    return sets;
+  }
+  const std::vector<ApexRoom> rooms = ApexRooms(loops, cell);
+  std::vector<std::vector<Vec3>> perLoop(loops.size());
+  std::size_t tries = 0;
+  for (std::size_t l = 0; l < loops.size(); ++l)
+  {
+    for (const Vec3& apex : CreaseApexes(rooms[l].Region, creases, apexes[l]))
+    {
+      if (InRoom(apex, rooms[l]))
+      {
+        perLoop[l].push_back(apex);
+      }
+    }
+    if (perLoop[l].empty())
+    {
+      perLoop[l].push_back(apexes[l]);
+    }
+    tries = std::max(tries, perLoop[l].size());
+  }
+  for (std::size_t k = 0; k < std::min(tries, SeveralLoopsCreaseTries); ++k)
+  {
+    sets.emplace_back();
+    for (const std::vector<Vec3>& candidates : perLoop)
+    {
+      sets.back().push_back(candidates[std::min(k, candidates.size() - 1)]);
+    }
+  }
+  return sets;
+}
+
 bool PredictCreaseApex(const PolygonSet& surface, const Box3& cell, const std::vector<CreaseSegment>& creases,
   double reach, double slack, double tolerance, AdaptiveOctree::MeshCellPrediction& prediction)
 {
   const double delta = prediction.Delta;
-  if (prediction.Loops.size() != 1 || prediction.Loops[0].size() < 3 || !(delta < tolerance))
+  if (prediction.Loops.empty() || !(delta < tolerance))
   {
     return false;
   }
-  for (const Vec3& apex : CreaseApexes(cell, creases, prediction.Apexes[0]))
+  for (const std::vector<Vec3>& apexes : CreaseApexSets(cell, creases, prediction.Loops, prediction.Apexes))
   {
-    const std::vector<SourceTriangle> fan = ApexFan(prediction.Loops[0], apex);
+    const std::vector<SourceTriangle> fan = ApexFans(prediction.Loops, apexes);
     if (!CreasesFollowed(creases, fan, reach))
     {
       continue;
@@ -347,7 +392,7 @@ bool PredictCreaseApex(const PolygonSet& surface, const Box3& cell, const std::v
       CertifiedMeshPatchError(surface, fan, slack, tolerance - delta, tolerance - delta, PredictionBudget);
     if (error.Upper + delta <= tolerance)
     {
-      prediction.Apexes[0] = apex;
+      prediction.Apexes = apexes;
       prediction.Bound = error.Upper + delta;
       prediction.OwnFanError = error.Upper;
       prediction.Attained = error.Lower;

@@ -182,10 +182,9 @@
 // That holds where the cell can only pass with one loop, whose apex is
 // MeshCellApex(S_C, C): where S_C is one sheet (its polygons joined across
 // mesh edges that meet the closed cell: a cell of several loops bounds
-// several discs, which no edge of S in the cell joins), or where several
-// loops may not pass (a scene of one mesh with a crease in the cell, below).
-// Where S_C is several sheets and several loops may pass, each loop is
-// fanned around its own apex (Several loops): the spokes then go from each
+// several discs, which no edge of S in the cell joins). Where S_C is
+// several sheets, each loop is fanned around its own apex (Several loops):
+// the spokes then go from each
 // crossing to the apex of its triangle's sheet (SheetSpokesStray) - the
 // least squares point of that sheet's polygons, LoopApexMargin inside the
 // cell - which is the prediction's apex up to the room's choice of polygons
@@ -215,14 +214,19 @@
 // around an own loop's apex, unchanged, and refines that own loop
 // (FinalLoopsRefine, SurfaceExtraction.cxx); elsewhere its patch is bounded
 // by its own certificate, and split by a repair round where that is not
-// within the tolerance. Not in a scene of one mesh with a crease in the
-// cell: a fan per loop would have to be drawn around a crease point each
-// (Crease apexes), which is not done; such cells split (CreaseNotFollowed).
-// Measured (2026-12-06; triangles at 1/64, 1/128, 1/256): the turbine
-// 8 456 -> 6 446, 9 702 -> 8 396, 15 198 -> 13 962; couplingdown 5 978 ->
-// 5 840, 11 792 -> 11 378, 20 056 -> 19 684; fandisk 1 430 -> 1 380, 1 882
-// -> 1 814, 2 892 -> 2 780; armadillo 9 948 -> 9 722, 18 360 -> 18 092,
-// 34 048 -> 33 664 - in 0.93-1.07 times the time (2 threads, interleaved).
+// within the tolerance. In a scene of one mesh the fans must follow the
+// cell's creases too: where they miss one, each loop may take a point of a
+// crease in its room instead (CreaseApexSets: the k-th try takes each loop's
+// k-th, up to 4), and the extraction looks again at the final fans the same
+// way (CellFromOtherApexes, SurfaceExtraction.cxx) - as for one loop (Crease
+// apexes). Measured (2026-12-06; triangles at 1/64, 1/128, 1/256): the
+// turbine 8 456 -> 6 146, 9 702 -> 8 104, 15 198 -> 13 748; couplingdown
+// 5 978 -> 5 410, 11 792 -> 11 252, 20 056 -> 19 452; fandisk 1 430 ->
+// 1 370, 1 882 -> 1 724, 2 892 -> 2 704; armadillo 9 948 -> 9 378, 18 360 ->
+// 17 408, 34 048 -> 33 280. (Before a crease apex per loop, such cells split:
+// couplingdown 5 840 at 1/64, armadillo 18 092 at 1/128; accepted without
+// it - the union of the fans asked to follow the creases, no second look -
+// a sharp edge of armadillo lay beyond the tolerance of every output crease.)
 //
 // Probes: once the fan P and the chords' deltas are known, a few points of
 // P are measured before either bound's branch and bound. Let y be a point of
@@ -378,14 +382,22 @@ std::vector<SourceTriangle> ApexFans(const std::vector<std::vector<Vec3>>& loops
 /// (strictly inside), nearest `apex` first, each once.
 std::vector<Vec3> CreaseApexes(const Box3& cell, const std::vector<CreaseSegment>& creases, const Vec3& apex);
 
+/// The sets of apexes (one per loop of `loops`, around `apexes`) a cell's
+/// fans may take where they miss a crease of `creases` (header: Crease
+/// apexes, Several loops), tried in order: a lone loop's CreaseApexes; with
+/// several loops, each loop's CreaseApexes in its room (those InRoom, or its
+/// own apex where none is), the k-th set each loop's k-th or its last, up to
+/// 4 sets.
+std::vector<std::vector<Vec3>> CreaseApexSets(const Box3& cell, const std::vector<CreaseSegment>& creases,
+  const std::vector<std::vector<Vec3>>& loops, const std::vector<Vec3>& apexes);
+
 /// Where the apex fan of `prediction` (PredictedMeshCellError, within the
 /// tolerance) misses a crease of `creases` (CreasesInCell, CreaseFollowing.h):
 /// the fan over the same loop around a point of a crease instead
-/// (CreaseApexes of its apex) - the first whose fan follows every crease
-/// within `reach` and has E(P) + delta within `tolerance` (header: Crease
-/// apexes; `slack` the rounding slack). True when there is one: `prediction`
-/// then holds it as its apex, with its Bound, OwnFanError and Attained.
-/// False for a prediction of several loops (header: Several loops).
+/// (CreaseApexSets) - the first whose fans follow every crease within
+/// `reach` and have E(P) + delta within `tolerance` (header: Crease apexes;
+/// `slack` the rounding slack). True when there is one: `prediction` then
+/// holds it as its apexes, with its Bound, OwnFanError and Attained.
 bool PredictCreaseApex(const PolygonSet& surface, const Box3& cell, const std::vector<CreaseSegment>& creases,
   double reach, double slack, double tolerance, AdaptiveOctree::MeshCellPrediction& prediction);
 
@@ -424,11 +436,11 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
 bool SpokeStrays(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell, unsigned insideCorners,
   const PolygonSet& surface, double tolerance);
 
-/// Where SpokeStrays is true but the cell may pass with several loops
-/// (header: Several loops): true where S_C is one sheet (then the cell can
-/// only pass with one loop, and the spokes' proof stands), else whether a
-/// spoke from a crossing to the apex of its triangle's sheet strays - a
-/// guess (header: Spokes).
+/// Where SpokeStrays is true: true where S_C is one sheet (then the cell can
+/// only pass with one loop, and the spokes' proof stands), else - the cell
+/// may pass with several loops (header: Several loops) - whether a spoke
+/// from a crossing to the apex of its triangle's sheet strays: a guess
+/// (header: Spokes).
 bool SheetSpokesStray(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell, unsigned insideCorners,
   const PolygonSet& surface, double tolerance);
 

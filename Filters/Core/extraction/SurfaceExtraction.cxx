@@ -216,48 +216,48 @@ bool MeshCellFromLoopPoint(const AdaptiveOctree& tree, std::uint32_t n, const Bo
   return true;
 }
 
-/// A cell larger than the tolerance whose fan around the apex `apex` it
-/// was accepted with, drawn over the final loop in `patches`, misses one of
-/// its `creases` by more than `reach` (the prediction checked the fan over
-/// the cell's own loop; the final loop's points between its own may change
-/// the bends at the spokes: CreaseFollowing.h): the first fan around one of
-/// `otherApexes()` (points of the creases, asked for only then) that
-/// follows them all and is certified within the tolerance on its own, in
-/// `patches`, its certificate in `certificate`. False - `patches` unchanged
-/// - where the fan follows them or none does. (One mesh: CreaseApexes,
-/// within CreaseReach; meshes meeting: ApexesOnCreases, within
-/// BooleanCreaseReach.)
-template <typename OtherApexes>
-bool CellFromOtherApex(const AdaptiveOctree& tree, std::uint32_t n, const BoundaryLoopSet& loops,
+/// A cell larger than the tolerance whose fans around the apexes `apexes`
+/// (one per loop) it was accepted with, drawn over the final loops in
+/// `patches`, miss one of its `creases` by more than `reach` (the prediction
+/// checked the fans over the cell's own loops; the final loops' points
+/// between its own may change the bends at the spokes: CreaseFollowing.h):
+/// the first fans around one of `otherApexSets()` (sets of points of the
+/// creases, one per loop, asked for only then) that follow them all and are
+/// certified within the tolerance on their own, in `patches`, their
+/// certificate in `certificate`. False - `patches` unchanged - where the fans
+/// follow them or none do. (One mesh: CreaseApexSets, within CreaseReach;
+/// meshes meeting: ApexesOnCreases, one loop, within BooleanCreaseReach.)
+template <typename OtherApexSets>
+bool CellFromOtherApexes(const AdaptiveOctree& tree, std::uint32_t n, const BoundaryLoopSet& loops,
   const PrimitiveSet& prims, const CrossingVertices& vertices, const TriangleMesh& mesh, const CellSurface& surface,
-  const std::vector<CreaseSegment>& creases, const OtherApexes& otherApexes, double reach, double aim,
-  const Vec3& apex, CellPatches& patches, CellCertificate& certificate)
+  const std::vector<CreaseSegment>& creases, const OtherApexSets& otherApexSets, double reach, double aim,
+  const std::vector<Vec3>& apexes, CellPatches& patches, CellCertificate& certificate)
 {
-  if (loops.LoopSizes.size() != 1 || CreasesFollowed(creases, PatchTriangles(patches, mesh), reach))
+  if (CreasesFollowed(creases, PatchTriangles(patches, mesh), reach))
   {
     return false;
   }
   const OctreeNode& node = tree.Nodes[n];
   const CsgExpression& expression = *tree.Expressions[n];
   const double tolerance = tree.HausdorffTolerance;
-  for (const Vec3& other : otherApexes())
+  for (const std::vector<Vec3>& others : otherApexSets())
   {
-    if (Norm(other - apex) == 0.0)
+    if (others.size() != apexes.size() || std::equal(others.begin(), others.end(), apexes.begin(),
+                                            [](const Vec3& a, const Vec3& b) { return Norm(a - b) == 0.0; }))
     {
-      continue; // (the fan just drawn)
+      continue; // (the fans just drawn)
     }
-    CellPatches fan;
-    const std::vector<Vec3> apexes{ other };
-    TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, fan, nullptr, &apexes);
-    if (!CreasesFollowed(creases, PatchTriangles(fan, mesh), reach))
+    CellPatches fans;
+    TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, fans, nullptr, &others);
+    if (!CreasesFollowed(creases, PatchTriangles(fans, mesh), reach))
     {
       continue;
     }
     const HausdorffEstimate e =
-      CertifiedCellError(surface, fan, mesh, std::min(aim, tolerance), tolerance, FirstCertificateBudget);
+      CertifiedCellError(surface, fans, mesh, std::min(aim, tolerance), tolerance, FirstCertificateBudget);
     if (e.Upper <= tolerance)
     {
-      patches = std::move(fan);
+      patches = std::move(fans);
       certificate.Bound = certificate.Error = e.Upper;
       certificate.Lower = e.Lower;
       return true;
@@ -351,9 +351,9 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
       // bends or two chords); the patch is certified on its own anyway.
       const AdaptiveOctree::MeshCellPrediction& predicted = prediction->second;
       TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches, nullptr, &predicted.Apexes);
-      if (CellFromOtherApex(tree, n, loops, prims, vertices, mesh, surface, creases,
-            [&] { return CreaseApexes(box, creases, predicted.Apexes[0]); }, CreaseReach * tree.HausdorffTolerance,
-            aim, predicted.Apexes[0], patches, certificate))
+      if (CellFromOtherApexes(tree, n, loops, prims, vertices, mesh, surface, creases,
+            [&] { return CreaseApexSets(box, creases, predicted.Loops, predicted.Apexes); },
+            CreaseReach * tree.HausdorffTolerance, aim, predicted.Apexes, patches, certificate))
       {
         return certificate;
       }
@@ -380,9 +380,17 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
       // (MeshBooleanCellError.h).
       const std::vector<Vec3>& apexes = booleanFan->second;
       TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches, nullptr, &apexes);
-      if (CellFromOtherApex(tree, n, loops, prims, vertices, mesh, surface, surface.Creases,
-            [&] { return ApexesOnCreases(box, surface.Creases, apexes[0]); },
-            BooleanCreaseReach * tree.HausdorffTolerance, aim, apexes[0], patches, certificate))
+      const auto otherApexSets = [&] {
+        std::vector<std::vector<Vec3>> sets;
+        for (const Vec3& apex : apexes.size() == 1 ? ApexesOnCreases(box, surface.Creases, apexes[0])
+                                                   : std::vector<Vec3>())
+        {
+          sets.push_back({ apex });
+        }
+        return sets;
+      };
+      if (CellFromOtherApexes(tree, n, loops, prims, vertices, mesh, surface, surface.Creases, otherApexSets,
+            BooleanCreaseReach * tree.HausdorffTolerance, aim, apexes, patches, certificate))
       {
         return certificate;
       }

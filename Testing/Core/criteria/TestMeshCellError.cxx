@@ -996,7 +996,7 @@ TEST(MeshCellError, CertificatesBoundTheMeasuredDistanceAlongNarrowChamfers)
   // both creases where they lie about the tolerance apart (CreaseFollowing.h;
   // 1 378 before, 1 680 with cells accepted only on E(P) + delta, before the
   // per-chord bound, MeshCellError.h). With those tiles drawn straight: 1 640
-  // and 2 680. (At 1/128 since: 1 512 at 09552b7, 1 474 since cells of
+  // and 2 680. (At 1/128 since: 1 512 at 09552b7, 1 444 since cells of
   // several loops grow.)
   struct Case
   {
@@ -1032,9 +1032,10 @@ TEST(MeshCellError, CellsOfSeveralLoopsAreFannedAroundAnApexEach)
   // brute-force distance both ways.
   SceneBuilder b;
   b.Finish(b.Mesh(TiltedSlab()));
-  // Measured: 658 and 1 014 triangles at 1/32 and 1/64, 12 and 24 cells of
-  // two loops; 1 060 and 1 616 before (such cells split), with the same
-  // bounds (0.68 and 1.00 of the tolerance: cells of one loop set them).
+  // Measured: 590 and 1 002 triangles at 1/32 and 1/64, 12 and 23 cells of
+  // two loops (658 and 1 014 before a crease apex per loop); 1 060 and 1 616
+  // before (such cells split), with the same bounds (0.68 and 1.00 of the
+  // tolerance: cells of one loop set them).
   struct Case
   {
     double Tolerance;
