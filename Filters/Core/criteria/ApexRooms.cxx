@@ -105,6 +105,42 @@ Vec3 KeptInRoom(Vec3 apex, const Vec3& fallback, const ApexRoom& room)
   return InRoom(apex, room) ? apex : ClampStrictlyInside(fallback, room.Region);
 }
 
+std::vector<Vec3> InRoomOnly(const std::vector<Vec3>& candidates, const ApexRoom& room)
+{
+  std::vector<Vec3> in;
+  for (const Vec3& p : candidates)
+  {
+    if (InRoom(p, room))
+    {
+      in.push_back(p);
+    }
+  }
+  return in;
+}
+
+std::vector<std::vector<Vec3>> KthApexSets(const std::vector<std::vector<Vec3>>& perLoop, std::size_t most)
+{
+  std::size_t tries = 0;
+  for (const std::vector<Vec3>& candidates : perLoop)
+  {
+    if (candidates.empty())
+    {
+      return {};
+    }
+    tries = std::max(tries, candidates.size());
+  }
+  std::vector<std::vector<Vec3>> sets;
+  for (std::size_t k = 0; k < std::min(tries, most); ++k)
+  {
+    sets.emplace_back();
+    for (const std::vector<Vec3>& candidates : perLoop)
+    {
+      sets.back().push_back(candidates[std::min(k, candidates.size() - 1)]);
+    }
+  }
+  return sets;
+}
+
 bool StrictlyInside(const Vec3& p, const Box3& box)
 {
   for (int a = 0; a < 3; ++a)

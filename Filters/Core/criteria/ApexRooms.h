@@ -62,6 +62,14 @@ bool InRoom(const Vec3& p, const ApexRoom& room);
 /// does not settle.
 Vec3 KeptInRoom(Vec3 apex, const Vec3& fallback, const ApexRoom& room);
 
+/// `candidates` that lie in `room` (InRoom), in order.
+std::vector<Vec3> InRoomOnly(const std::vector<Vec3>& candidates, const ApexRoom& room);
+
+/// The sets of apexes to try, one per loop, from each loop's candidates in
+/// order (`perLoop`): the k-th set takes each loop's k-th candidate, or its
+/// last; at most `most` sets, none where a loop has no candidate.
+std::vector<std::vector<Vec3>> KthApexSets(const std::vector<std::vector<Vec3>>& perLoop, std::size_t most);
+
 /// True when `p` lies strictly inside `box` on every axis (exact comparisons).
 bool StrictlyInside(const Vec3& p, const Box3& box);
 

@@ -319,7 +319,7 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     // In a scene of one mesh every cell draws crease tiles through their
     // crease (CreaseCrossing.h: every non-exact neighbour is a cell of the
     // same mesh, and the decision is the same for a tile and its sub-tiles),
-    // so the loop the prediction starts from may too: the final loop follows
+    // so the loops the prediction starts from may too: the final loops follow
     // the same halves of the trace there.
     // (Without a crease tile the loops are those traced above.)
     const bool creases = oneMesh &&

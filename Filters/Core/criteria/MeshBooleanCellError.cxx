@@ -107,13 +107,7 @@ std::vector<std::vector<Vec3>> ApexCandidates(const MeshBooleanSurface& surface,
   for (std::size_t l = 0; l < loops.size(); ++l)
   {
     const Vec3 planesPoint = LoopApex(surface.OnSurface, rooms[l], loops[l]);
-    for (const Vec3& onCrease : ApexesOnCreases(rooms[l].Region, creases, planesPoint))
-    {
-      if (InRoom(onCrease, rooms[l]))
-      {
-        candidates[l].push_back(onCrease);
-      }
-    }
+    candidates[l] = InRoomOnly(ApexesOnCreases(rooms[l].Region, creases, planesPoint), rooms[l]);
     if (candidates[l].empty())
     {
       candidates[l].push_back(planesPoint);
@@ -160,19 +154,9 @@ std::vector<Vec3> PredictMeshBooleanFan(const CsgExpressionPtr& expression, cons
   // else around a point of the crease where they do, nearest it first
   // (header: Creases) - each loop around its own (Several loops), the k-th
   // try taking each loop's k-th candidate, or its last.
-  const std::vector<std::vector<Vec3>> candidates = ApexCandidates(surface, creases, cell, points);
-  std::size_t tries = 0;
-  for (const std::vector<Vec3>& c : candidates)
+  for (const std::vector<Vec3>& apexes :
+    KthApexSets(ApexCandidates(surface, creases, cell, points), CreaseApexesTried))
   {
-    tries = std::max(tries, c.size());
-  }
-  for (std::size_t k = 0; k < tries; ++k)
-  {
-    std::vector<Vec3> apexes;
-    for (const std::vector<Vec3>& c : candidates)
-    {
-      apexes.push_back(c[std::min(k, c.size() - 1)]);
-    }
     const std::vector<SourceTriangle> fan = ApexFans(points, apexes);
     if (!CreasesFollowed(creases, fan, BooleanCreaseReach * tolerance))
     {

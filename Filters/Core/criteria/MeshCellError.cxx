@@ -344,33 +344,21 @@ std::vector<std::vector<Vec3>> CreaseApexSets(const Box3& cell, const std::vecto
     }
     return sets;
   }
+  // (Where no loop has a crease point in its room, no set: the fans around
+  // the loops' own apexes are the ones that missed.)
   const std::vector<ApexRoom> rooms = ApexRooms(loops, cell);
   std::vector<std::vector<Vec3>> perLoop(loops.size());
-  std::size_t tries = 0;
+  bool any = false;
   for (std::size_t l = 0; l < loops.size(); ++l)
   {
-    for (const Vec3& apex : CreaseApexes(rooms[l].Region, creases, apexes[l]))
-    {
-      if (InRoom(apex, rooms[l]))
-      {
-        perLoop[l].push_back(apex);
-      }
-    }
+    perLoop[l] = InRoomOnly(CreaseApexes(rooms[l].Region, creases, apexes[l]), rooms[l]);
+    any = any || !perLoop[l].empty();
     if (perLoop[l].empty())
     {
       perLoop[l].push_back(apexes[l]);
     }
-    tries = std::max(tries, perLoop[l].size());
   }
-  for (std::size_t k = 0; k < std::min(tries, SeveralLoopsCreaseTries); ++k)
-  {
-    sets.emplace_back();
-    for (const std::vector<Vec3>& candidates : perLoop)
-    {
-      sets.back().push_back(candidates[std::min(k, candidates.size() - 1)]);
-    }
-  }
-  return sets;
+  return any ? KthApexSets(perLoop, SeveralLoopsCreaseTries) : std::vector<std::vector<Vec3>>();
 }
 
 bool PredictCreaseApex(const PolygonSet& surface, const Box3& cell, const std::vector<CreaseSegment>& creases,

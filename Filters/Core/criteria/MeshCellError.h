@@ -193,7 +193,8 @@
 // rests on it; MeshCellError.ProvenFailuresSplitOnlyCellsThePrediction
 // WouldSplit finds no such cell on a slab whose cells hold both its faces,
 // nor on the other scenes). The sheets are asked only where the spokes to
-// S_C's apex stray.
+// S_C's apex stray, and for up to 8 of them (MostSheetsAsked: a cell of
+// more splits on the one apex's spokes, as before).
 //
 // Several loops. A cell whose tests pass with several loops - two sheets of
 // a thin part, a tube's two walls - bounds as many discs of S_C, apart
@@ -391,9 +392,9 @@ std::vector<Vec3> CreaseApexes(const Box3& cell, const std::vector<CreaseSegment
 std::vector<std::vector<Vec3>> CreaseApexSets(const Box3& cell, const std::vector<CreaseSegment>& creases,
   const std::vector<std::vector<Vec3>>& loops, const std::vector<Vec3>& apexes);
 
-/// Where the apex fan of `prediction` (PredictedMeshCellError, within the
-/// tolerance) misses a crease of `creases` (CreasesInCell, CreaseFollowing.h):
-/// the fan over the same loop around a point of a crease instead
+/// Where the apex fans of `prediction` (PredictedMeshCellError, within the
+/// tolerance) miss a crease of `creases` (CreasesInCell, CreaseFollowing.h):
+/// the fans over the same loops around points of creases instead
 /// (CreaseApexSets) - the first whose fans follow every crease within
 /// `reach` and have E(P) + delta within `tolerance` (header: Crease apexes;
 /// `slack` the rounding slack). True when there is one: `prediction` then
@@ -440,7 +441,7 @@ bool SpokeStrays(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3
 /// only pass with one loop, and the spokes' proof stands), else - the cell
 /// may pass with several loops (header: Several loops) - whether a spoke
 /// from a crossing to the apex of its triangle's sheet strays: a guess
-/// (header: Spokes).
+/// (header: Spokes). True too where S_C is more than 8 sheets.
 bool SheetSpokesStray(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell, unsigned insideCorners,
   const PolygonSet& surface, double tolerance);
 

@@ -233,7 +233,8 @@ bool CellFromOtherApexes(const AdaptiveOctree& tree, std::uint32_t n, const Boun
   const std::vector<CreaseSegment>& creases, const OtherApexSets& otherApexSets, double reach, double aim,
   const std::vector<Vec3>& apexes, CellPatches& patches, CellCertificate& certificate)
 {
-  if (CreasesFollowed(creases, PatchTriangles(patches, mesh), reach))
+  if (creases.empty() || loops.LoopSizes.size() != apexes.size() ||
+    CreasesFollowed(creases, PatchTriangles(patches, mesh), reach))
   {
     return false;
   }
@@ -382,15 +383,15 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
       TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches, nullptr, &apexes);
       const auto otherApexSets = [&] {
         std::vector<std::vector<Vec3>> sets;
-        for (const Vec3& apex : apexes.size() == 1 ? ApexesOnCreases(box, surface.Creases, apexes[0])
-                                                   : std::vector<Vec3>())
+        for (const Vec3& apex : ApexesOnCreases(box, surface.Creases, apexes[0]))
         {
           sets.push_back({ apex });
         }
         return sets;
       };
-      if (CellFromOtherApexes(tree, n, loops, prims, vertices, mesh, surface, surface.Creases, otherApexSets,
-            BooleanCreaseReach * tree.HausdorffTolerance, aim, apexes, patches, certificate))
+      if (apexes.size() == 1 &&
+        CellFromOtherApexes(tree, n, loops, prims, vertices, mesh, surface, surface.Creases, otherApexSets,
+          BooleanCreaseReach * tree.HausdorffTolerance, aim, apexes, patches, certificate))
       {
         return certificate;
       }

@@ -133,7 +133,8 @@ public:
     /// The points of the cell's own loops, loop by loop.
     std::vector<std::vector<Vec3>> Loops;
     /// Each loop's apex (MeshCellApex; with several loops, each in its
-    /// loop's room, ApexRooms.h): the extraction's apex fans are around them
+    /// loop's room, ApexRooms.h; or points of creases, MeshCellError.h:
+    /// Crease apexes): the extraction's apex fans are around them
     /// (a fan from a loop point, if drawn instead, is certified on its own).
     std::vector<Vec3> Apexes;
     /// The largest distance between the fans over Loops and the mesh that

@@ -123,3 +123,25 @@ TEST(ApexRooms, AnApexThatCannotSettleFallsBackOnItsLoopsCentroid)
   EXPECT_EQ(clamped[0], std::nextafter(0.0, 1.0));
   EXPECT_EQ(clamped[2], std::nextafter(1.0, 0.0));
 }
+
+TEST(ApexRooms, TheKthSetTakesEachLoopsKthCandidateOrItsLast)
+{
+  const std::vector<std::vector<Vec3>> perLoop{ { Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0) },
+    { Vec3(0, 1, 0) } };
+  const std::vector<std::vector<Vec3>> sets = tpc::KthApexSets(perLoop, 8);
+  ASSERT_EQ(sets.size(), 3u);
+  for (std::size_t k = 0; k < sets.size(); ++k)
+  {
+    ASSERT_EQ(sets[k].size(), 2u);
+    EXPECT_EQ(sets[k][0][0], static_cast<double>(k));
+    EXPECT_EQ(sets[k][1][1], 1.0); // (the second loop's only candidate)
+  }
+  EXPECT_EQ(tpc::KthApexSets(perLoop, 2).size(), 2u);
+  // A loop without a candidate: no set.
+  EXPECT_TRUE(tpc::KthApexSets({ { Vec3(0, 0, 0) }, {} }, 8).empty());
+  // Candidates outside a room are left out, in order.
+  const tpc::ApexRoom room{ Cell, {} };
+  const std::vector<Vec3> in = tpc::InRoomOnly({ Vec3(0.5, 0.5, 0.5), Vec3(0, 0.5, 0.5), Vec3(0.25, 0.5, 0.5) }, room);
+  ASSERT_EQ(in.size(), 2u);
+  EXPECT_EQ(in[1][0], 0.25);
+}

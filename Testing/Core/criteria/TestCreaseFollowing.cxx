@@ -3,6 +3,7 @@
 // runs a chamfered bar whose every crease lies within the tolerance of an
 // output crease (before the criterion, its chamfers' second edges were cut
 // across, up to 1.6 and 2.3 tolerances away at 1/64 and 1/128).
+#include "ApexRooms.h"
 #include "CoreContour.h"
 #include "CreaseCrossing.h"
 #include "CreaseFollowing.h"
@@ -147,6 +148,42 @@ TEST(CreaseFollowing, ACellsFanMovesItsApexOntoACreaseItMissed)
   missed.Delta = 0.01;
   EXPECT_FALSE(tpc::PredictCreaseApex(surface, cell, two, reach, slack, tolerance, missed));
   EXPECT_EQ(tpc::Norm(missed.Apexes[0] - Vec3(0.5, 0.5, 0.3)), 0.0);
+}
+
+TEST(CreaseFollowing, CreaseApexSetsTakeEachLoopsCreasePointsInItsRoom)
+{
+  // One loop: CreaseApexes' points, in order, one set each (as the fan of a
+  // lone loop has always tried them).
+  const tpc::Box3 cell{ { 0, 0, 0 }, { 1, 1, 1 } };
+  const std::vector<tpc::CreaseSegment> creases{ { Vec3(0.2, 0, 0.3), Vec3(0.2, 1, 0.3) },
+    { Vec3(0.8, 0, 0.7), Vec3(0.8, 1, 0.7) } };
+  const std::vector<Vec3> lower{ Vec3(0, 0, 0.2), Vec3(0.4, 0, 0.4), Vec3(0.4, 1, 0.4), Vec3(0, 1, 0.2) };
+  const std::vector<Vec3> upper{ Vec3(0.6, 0, 0.6), Vec3(1, 0, 0.8), Vec3(1, 1, 0.8), Vec3(0.6, 1, 0.6) };
+  const std::vector<Vec3> one = tpc::CreaseApexes(cell, creases, Vec3(0.3, 0.5, 0.3));
+  const std::vector<std::vector<Vec3>> sets = tpc::CreaseApexSets(cell, creases, { lower }, { Vec3(0.3, 0.5, 0.3) });
+  ASSERT_EQ(sets.size(), one.size());
+  for (std::size_t k = 0; k < one.size(); ++k)
+  {
+    ASSERT_EQ(sets[k].size(), 1u);
+    EXPECT_EQ(tpc::Norm(sets[k][0] - one[k]), 0.0);
+  }
+  // Two loops, apart along x (the cell is cut at x = 0.5): each takes the
+  // point of the crease in its own room, never the other's.
+  const std::vector<std::vector<Vec3>> two =
+    tpc::CreaseApexSets(cell, creases, { lower, upper }, { Vec3(0.3, 0.5, 0.3), Vec3(0.7, 0.5, 0.7) });
+  ASSERT_FALSE(two.empty());
+  const std::vector<tpc::ApexRoom> rooms = tpc::ApexRooms({ lower, upper }, cell);
+  for (const std::vector<Vec3>& set : two)
+  {
+    ASSERT_EQ(set.size(), 2u);
+    EXPECT_TRUE(tpc::InRoom(set[0], rooms[0]));
+    EXPECT_TRUE(tpc::InRoom(set[1], rooms[1]));
+  }
+  EXPECT_NEAR(two[0][0][0], 0.2, 1e-15);
+  EXPECT_NEAR(two[0][1][0], 0.8, 1e-15);
+  // No crease point for either loop: no set (the loops' own fans are the
+  // ones that missed).
+  EXPECT_TRUE(tpc::CreaseApexSets(cell, {}, { lower, upper }, { Vec3(0.3, 0.5, 0.3), Vec3(0.7, 0.5, 0.7) }).empty());
 }
 
 TEST(CreaseFollowing, ChamferedBarsCreasesLieWithinTheToleranceOfOutputCreases)

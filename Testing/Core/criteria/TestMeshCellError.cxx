@@ -1005,6 +1005,7 @@ TEST(MeshCellError, CertificatesBoundTheMeasuredDistanceAlongNarrowChamfers)
   };
   for (const Case& c : { Case{ 1.0 / 64, 100 }, Case{ 1.0 / 128, 2300 } })
   {
+    SCOPED_TRACE(c.Tolerance);
     tpctest::ContourRun r;
     const Measured m = ContourOneBallAndCheck(b.Scene, c.Tolerance, r);
     EXPECT_GE(m.OversizedCells, 8u);
@@ -1043,6 +1044,7 @@ TEST(MeshCellError, CellsOfSeveralLoopsAreFannedAroundAnApexEach)
   };
   for (const Case& c : { Case{ 1.0 / 32, 1060 }, Case{ 1.0 / 64, 1616 } })
   {
+    SCOPED_TRACE(c.Tolerance);
     tpctest::ContourRun r;
     const Measured m = ContourOneBallAndCheck(b.Scene, c.Tolerance, r);
     EXPECT_GE(m.SeveralLoops, 10u);
