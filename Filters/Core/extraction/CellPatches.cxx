@@ -135,7 +135,6 @@ void TriangulateCell(const BoundaryLoopSet& loops, const OctreeNode& node, const
   const LatticeIndex size = LatticeIndex(1) << (grid.MaxDepth - node.Level);
   std::vector<std::vector<std::uint32_t>> ids;
   std::vector<std::vector<LoopPoint>> points;
-  std::vector<std::vector<Vec3>> positions;
   std::size_t offset = 0;
   for (const std::uint32_t loopSize : loops.LoopSizes)
   {
@@ -143,14 +142,20 @@ void TriangulateCell(const BoundaryLoopSet& loops, const OctreeNode& node, const
     points.emplace_back();
     GatherLoop(
       loops.Crossings.data() + offset, loopSize, vertices, mesh, box, base, size, ids.back(), points.back());
-    positions.emplace_back();
-    for (const LoopPoint& p : points.back())
-    {
-      positions.back().push_back(p.Position);
-    }
     offset += loopSize;
   }
-  const std::vector<ApexRoom> rooms = ApexRooms(positions, box);
+  // (A lone loop's room is the whole cell: its points are copied out only
+  // where several loops share the cell, as before rooms.)
+  std::vector<std::vector<Vec3>> positions(points.size() > 1 ? points.size() : 0);
+  for (std::size_t l = 0; l < positions.size(); ++l)
+  {
+    for (const LoopPoint& p : points[l])
+    {
+      positions[l].push_back(p.Position);
+    }
+  }
+  const std::vector<ApexRoom> rooms =
+    points.size() > 1 ? ApexRooms(positions, box) : std::vector<ApexRoom>(points.size(), ApexRoom{ box, {} });
   const std::vector<const Vec3*> apexes = ApexesOfLoops(meshApexes, rooms);
   for (std::size_t l = 0; l < ids.size(); ++l)
   {
