@@ -45,13 +45,19 @@ void NearTile(const MeshSolid& mesh, const RootGrid& grid, const TriangleList& t
   }
 }
 
-/// Whether one of `triangles` meets a neighbour at a crease tile's angle or
-/// more: an edge crossing the tile with such a bend has both its triangles
-/// near it, so without one the tile is no crease tile - decided before any
-/// exact test, comparing the same two normals as the crease test below
-/// (and decided by the mesh alone: whatever else each cell lists near the
-/// tile, both cells sharing it find its crease edges).
-bool MayHoldCrease(const MeshSolid& mesh, const TriangleList& triangles, double creaseCosine)
+/// Whether an edge of one of `triangles` bends by a crease tile's angle or
+/// more (the cosine between its two triangles' normals at most
+/// `creaseCosine`) and its box meets `tileBox`, the tile's: an edge crossing
+/// the tile with such a bend has that box, so without one the tile is no
+/// crease tile - decided before any exact test, comparing the same two
+/// normals as the crease test below, and by the mesh and the tile alone
+/// (whatever else each cell lists near the tile, both cells sharing it find
+/// its crease edges). (An edge strictly apart from the tile's box in doubles
+/// stays apart from the tile under the perturbation, as a triangle does:
+/// NearTile.) The edge's box, not its triangles': on a scan a tile often has
+/// a triangle near it whose other edge bends that much far from it
+/// (armadillo at 1/64: 2.5 % fewer side tests, 1 % of the instructions).
+bool MayHoldCrease(const MeshSolid& mesh, const TriangleList& triangles, const Box3& tileBox, double creaseCosine)
 {
   for (const std::uint32_t t : triangles)
   {
@@ -60,7 +66,11 @@ bool MayHoldCrease(const MeshSolid& mesh, const TriangleList& triangles, double 
       const std::uint32_t other = mesh.Across(t, k);
       if (other != MeshSolid::NoTriangle && Dot(mesh.Normal(t), mesh.Normal(other)) <= creaseCosine)
       {
-        return true;
+        const Vec3 ends[2] = { mesh.Vertex(t, k), mesh.Vertex(t, (k + 1) % 3) };
+        if (BoundsOf(ends, 2).Overlaps(tileBox))
+        {
+          return true;
+        }
       }
     }
   }
@@ -154,7 +164,7 @@ std::optional<CreaseTile> CreaseOnTile(const CsgLeaf& leaf, const PrimitiveSet& 
   const double creaseCosine = std::cos(CreaseTileAngleDegrees * M_PI / 180.0);
   thread_local TriangleList near; // (scratch: called for every tile of every cell)
   NearTile(mesh, grid, *leaf.Triangles, axis, plane, tile, near);
-  if (!MayHoldCrease(mesh, near, creaseCosine))
+  if (!MayHoldCrease(mesh, near, TileBox(grid, axis, plane, tile), creaseCosine))
   {
     return std::nullopt;
   }

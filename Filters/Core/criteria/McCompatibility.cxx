@@ -273,13 +273,14 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     }
     return *creasesFound;
   };
+  thread_local TriangleList surfaceTriangles; // (scratch, as meshSurface)
   if (meshBounded)
   {
-    SurfaceInCell(*LoneMeshLeaf(*expression), prims, box, meshSurface);
+    SurfaceInCell(*LoneMeshLeaf(*expression), prims, box, meshSurface, &surfaceTriangles);
   }
   if (meshBounded && provenFailuresFirst &&
     SpokeStrays(*LoneMeshLeaf(*expression), prims, box, mask, meshSurface, tolerance) &&
-    SheetSpokesStray(*LoneMeshLeaf(*expression), prims, box, mask, meshSurface, tolerance))
+    SheetSpokesStray(*LoneMeshLeaf(*expression), prims, box, mask, meshSurface, surfaceTriangles, tolerance))
   {
     v.Reason = SplitReason::HausdorffSize;
     v.SplitBySpoke = true;

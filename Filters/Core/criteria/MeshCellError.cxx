@@ -135,9 +135,14 @@ PolygonSet SurfaceInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives,
   return surface;
 }
 
-void SurfaceInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell, PolygonSet& surface)
+void SurfaceInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell, PolygonSet& surface,
+  TriangleList* triangles)
 {
   const MeshSolid& mesh = primitives.Meshes[leaf.Primitive];
+  if (triangles)
+  {
+    triangles->clear();
+  }
   surface.Recycle(leaf.Triangles->size());
   surface.SetSlackMagnitude(SlackMagnitude(leaf, primitives, cell));
   // (Most triangles of a cell lie in it whole, three corners each; those
@@ -151,6 +156,10 @@ void SurfaceInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Bo
     if (!clipped.empty())
     {
       surface.Add(clipped.data(), clipped.size());
+      if (triangles)
+      {
+        triangles->push_back(t);
+      }
     }
   }
 }
@@ -692,49 +701,57 @@ constexpr double WellCrossed = 1e-3;
 /// split it as before.
 constexpr std::uint32_t MostSheetsAsked = 8;
 
-/// S_C's sheets (header: Spokes): the leaf's listed triangles that meet the
-/// cell (their clip not empty: S_C's polygons, in the same order), joined
-/// into sheets across mesh edges that meet the closed cell.
+/// S_C's sheets (header: Spokes): its polygons' triangles `meeting` (the
+/// listed ones that meet the cell, in order: SurfaceInCell's), joined into
+/// sheets across mesh edges that meet the closed cell.
 struct SurfaceSheets
 {
-  std::vector<std::uint32_t> Triangles;
   std::vector<std::uint32_t> SheetOf; ///< each one's sheet, 0 .. Count - 1
   std::uint32_t Count = 0;
 };
 
-SurfaceSheets SheetsInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell)
+SurfaceSheets SheetsInCell(const MeshSolid& mesh, const TriangleList& meeting, const Box3& cell)
 {
-  const MeshSolid& mesh = primitives.Meshes[leaf.Primitive];
   SurfaceSheets sheets;
-  // (Pruning keeps its parent's order, so the list is in order and the
-  // triangles are found by bisection; were it not, no sheets are told apart.)
-  if (!std::is_sorted(leaf.Triangles->begin(), leaf.Triangles->end()))
+  // (Pruning keeps its parent's order, so the list is in order and
+  // SheetSpokesStray finds a triangle's sheet by bisection; were it not, no
+  // sheets are told apart.)
+  if (!std::is_sorted(meeting.begin(), meeting.end()))
   {
     return sheets;
   }
-  for (const std::uint32_t t : *leaf.Triangles)
+  // Each triangle's place in the list, by its number (1 + the place; 0 where
+  // it is not listed): a lookup per edge, where a bisection per edge was
+  // most of the time of this function in a large cell. Per thread, as large
+  // as the largest mesh asked about, and cleared again before returning.
+  thread_local std::vector<std::uint32_t> placeOf;
+  if (placeOf.size() < mesh.Triangles().size())
   {
-    ClippedCorners clipped{ mesh.Vertex(t, 0), mesh.Vertex(t, 1), mesh.Vertex(t, 2) };
-    ClipToBox(clipped, cell);
-    if (!clipped.empty())
-    {
-      sheets.Triangles.push_back(t);
-    }
+    placeOf.resize(mesh.Triangles().size(), 0);
   }
-  const std::vector<std::uint32_t>& meeting = sheets.Triangles;
+  for (std::size_t i = 0; i < meeting.size(); ++i)
+  {
+    placeOf[meeting[i]] = static_cast<std::uint32_t>(i + 1);
+  }
   UnionFind joined(meeting.size());
   for (std::size_t i = 0; i < meeting.size(); ++i)
   {
     for (int k = 0; k < 3; ++k)
     {
+      // (An end in the closed cell is an edge meeting it - ClipSegment
+      // says so too, at more cost: in a large cell most edges have both.)
       const std::uint32_t u = mesh.Across(meeting[i], k);
-      const auto j = std::lower_bound(meeting.begin(), meeting.end(), u);
+      const std::uint32_t j = u == MeshSolid::NoTriangle ? 0 : placeOf[u];
       Vec3 a = mesh.Vertex(meeting[i], k), b = mesh.Vertex(meeting[i], (k + 1) % 3);
-      if (u != MeshSolid::NoTriangle && j != meeting.end() && *j == u && ClipSegment(a, b, cell))
+      if (j != 0 && (cell.Contains(a) || cell.Contains(b) || ClipSegment(a, b, cell)))
       {
-        joined.Join(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(j - meeting.begin()));
+        joined.Join(static_cast<std::uint32_t>(i), j - 1);
       }
     }
+  }
+  for (const std::uint32_t t : meeting)
+  {
+    placeOf[t] = 0;
   }
   std::vector<std::uint32_t> number(meeting.size(), UINT32_MAX);
   for (std::size_t i = 0; i < meeting.size(); ++i)
@@ -800,10 +817,14 @@ bool SpokeStrays(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3
 }
 
 bool SheetSpokesStray(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell, unsigned insideCorners,
-  const PolygonSet& surface, double tolerance)
+  const PolygonSet& surface, const TriangleList& surfaceTriangles, double tolerance)
 {
-  const SurfaceSheets sheets = SheetsInCell(leaf, primitives, cell);
-  if (sheets.Count <= 1 || sheets.Count > MostSheetsAsked || sheets.Triangles.size() != surface.size())
+  if (surfaceTriangles.size() != surface.size())
+  {
+    return true;
+  }
+  const SurfaceSheets sheets = SheetsInCell(primitives.Meshes[leaf.Primitive], surfaceTriangles, cell);
+  if (sheets.Count <= 1 || sheets.Count > MostSheetsAsked)
   {
     return true;
   }
@@ -820,9 +841,9 @@ bool SheetSpokesStray(const CsgLeaf& leaf, const PrimitiveSet& primitives, const
   }
   const Vec3 apex = MeshCellApex(surface, cell);
   return SpokeFromApexStrays(leaf, primitives, cell, insideCorners, surface, reach, [&](std::uint32_t t) {
-    const auto i = std::lower_bound(sheets.Triangles.begin(), sheets.Triangles.end(), t);
-    const bool found = i != sheets.Triangles.end() && *i == t;
-    return found ? apexes[sheets.SheetOf[static_cast<std::size_t>(i - sheets.Triangles.begin())]] : apex;
+    const auto i = std::lower_bound(surfaceTriangles.begin(), surfaceTriangles.end(), t);
+    const bool found = i != surfaceTriangles.end() && *i == t;
+    return found ? apexes[sheets.SheetOf[static_cast<std::size_t>(i - surfaceTriangles.begin())]] : apex;
   });
 }
 

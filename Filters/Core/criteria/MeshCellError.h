@@ -283,8 +283,11 @@ namespace tpc
 /// ExactCellCriterion.h) clipped to `cell` (the empty clips dropped).
 PolygonSet SurfaceInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives,
   const Box3& cell);
-/// The same in `surface` (cleared first; its memory is reused: ScratchPool.h).
-void SurfaceInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell, PolygonSet& surface);
+/// The same in `surface` (cleared first; its memory is reused: ScratchPool.h);
+/// with `triangles`, the listed triangle each polygon is clipped from, in
+/// the same order (cleared first).
+void SurfaceInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell, PolygonSet& surface,
+  TriangleList* triangles = nullptr);
 
 /// The fan's apex: the point nearest to S_C's planes (least squares, area
 /// weighted, as Dual Contouring places vertices: on a crease or corner of S it
@@ -442,8 +445,10 @@ bool SpokeStrays(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3
 /// may pass with several loops (header: Several loops) - whether a spoke
 /// from a crossing to the apex of its triangle's sheet strays: a guess
 /// (header: Spokes). True too where S_C is more than 8 sheets.
+/// `surfaceTriangles`: the triangle each polygon of `surface` is clipped
+/// from (SurfaceInCell's `triangles`).
 bool SheetSpokesStray(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell, unsigned insideCorners,
-  const PolygonSet& surface, double tolerance);
+  const PolygonSet& surface, const TriangleList& surfaceTriangles, double tolerance);
 
 /// Whether the final loop `final` holds every point of the cell's own loop
 /// `own` in the same cyclic order (up to rounding): then each chord ab of

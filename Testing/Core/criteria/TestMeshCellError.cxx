@@ -1090,19 +1090,23 @@ TEST(MeshCellError, SpokesOfSeveralSheetsGoToEachSheetsApex)
   const unsigned inside = insideCorners(cell);
   ASSERT_NE(inside, 0u); // (corners of both signs: edges the sheets cross)
   ASSERT_NE(inside, 0xFFu);
-  const tpc::PolygonSet surface = tpc::SurfaceInCell(*leaf, b.Scene.Primitives, cell);
+  tpc::PolygonSet surface;
+  tpc::TriangleList triangles;
+  tpc::SurfaceInCell(*leaf, b.Scene.Primitives, cell, surface, &triangles);
   EXPECT_TRUE(tpc::SpokeStrays(*leaf, b.Scene.Primitives, cell, inside, surface, 0.04));
-  EXPECT_FALSE(tpc::SheetSpokesStray(*leaf, b.Scene.Primitives, cell, inside, surface, 0.04));
+  EXPECT_FALSE(tpc::SheetSpokesStray(*leaf, b.Scene.Primitives, cell, inside, surface, triangles, 0.04));
   // A cell that holds the upper face alone is one sheet: the spokes' proof
   // stands, and the sheets do not overrule it.
   const tpc::Box3 upper{ { -0.2, -0.2, 0.1 }, { 0.2, 0.2, 0.5 } };
   const auto upperPruned = tpc::CsgExpression::Prune(b.Scene.Expression, upper, b.Scene.Primitives);
   const tpc::CsgLeaf* upperLeaf = tpc::LoneMeshLeaf(*upperPruned.Expression);
   ASSERT_NE(upperLeaf, nullptr);
-  const tpc::PolygonSet upperSurface = tpc::SurfaceInCell(*upperLeaf, b.Scene.Primitives, upper);
+  tpc::PolygonSet upperSurface;
+  tpc::TriangleList upperTriangles;
+  tpc::SurfaceInCell(*upperLeaf, b.Scene.Primitives, upper, upperSurface, &upperTriangles);
   ASSERT_FALSE(upperSurface.empty());
-  EXPECT_TRUE(
-    tpc::SheetSpokesStray(*upperLeaf, b.Scene.Primitives, upper, insideCorners(upper), upperSurface, 0.04));
+  EXPECT_TRUE(tpc::SheetSpokesStray(
+    *upperLeaf, b.Scene.Primitives, upper, insideCorners(upper), upperSurface, upperTriangles, 0.04));
 }
 
 TEST(MeshCellError, ProvenFailuresSplitOnlyCellsThePredictionWouldSplit)
