@@ -720,19 +720,44 @@ SurfaceSheets SheetsInCell(const MeshSolid& mesh, const TriangleList& meeting, c
   {
     return sheets;
   }
-  // Each triangle's place in the list, by its number (1 + the place; 0 where
-  // it is not listed): a lookup per edge, where a bisection per edge was
-  // most of the time of this function in a large cell. Per thread, as large
-  // as the largest mesh asked about, and cleared again before returning.
-  thread_local std::vector<std::uint32_t> placeOf;
-  if (placeOf.size() < mesh.Triangles().size())
+  // Each triangle's place in the list, by its number: a lookup per edge
+  // (open addressing, at most half full), where a bisection per edge was
+  // most of the time of this function in a large cell. (A table over the
+  // whole mesh would be as fast, but kept per thread it would hold four
+  // bytes a triangle of the largest mesh ever asked about.)
+  int bits = 4;
+  while ((std::size_t{ 1 } << bits) < 2 * meeting.size())
   {
-    placeOf.resize(mesh.Triangles().size(), 0);
+    ++bits;
   }
+  const std::size_t mask = (std::size_t{ 1 } << bits) - 1;
+  const auto slotOf = [&](std::uint32_t t) {
+    return static_cast<std::size_t>((static_cast<std::uint64_t>(t) * 0x9E3779B97F4A7C15ull) >> (64 - bits));
+  };
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> places(mask + 1, { MeshSolid::NoTriangle, 0 });
   for (std::size_t i = 0; i < meeting.size(); ++i)
   {
-    placeOf[meeting[i]] = static_cast<std::uint32_t>(i + 1);
+    std::size_t k = slotOf(meeting[i]);
+    while (places[k].first != MeshSolid::NoTriangle)
+    {
+      k = (k + 1) & mask;
+    }
+    places[k] = { meeting[i], static_cast<std::uint32_t>(i) };
   }
+  const auto placeOf = [&](std::uint32_t t, std::uint32_t& place) {
+    for (std::size_t k = slotOf(t);; k = (k + 1) & mask)
+    {
+      if (places[k].first == t)
+      {
+        place = places[k].second;
+        return true;
+      }
+      if (places[k].first == MeshSolid::NoTriangle)
+      {
+        return false;
+      }
+    }
+  };
   UnionFind joined(meeting.size());
   for (std::size_t i = 0; i < meeting.size(); ++i)
   {
@@ -741,17 +766,14 @@ SurfaceSheets SheetsInCell(const MeshSolid& mesh, const TriangleList& meeting, c
       // (An end in the closed cell is an edge meeting it - ClipSegment
       // says so too, at more cost: in a large cell most edges have both.)
       const std::uint32_t u = mesh.Across(meeting[i], k);
-      const std::uint32_t j = u == MeshSolid::NoTriangle ? 0 : placeOf[u];
+      std::uint32_t j = 0;
       Vec3 a = mesh.Vertex(meeting[i], k), b = mesh.Vertex(meeting[i], (k + 1) % 3);
-      if (j != 0 && (cell.Contains(a) || cell.Contains(b) || ClipSegment(a, b, cell)))
+      if (u != MeshSolid::NoTriangle && placeOf(u, j) &&
+        (cell.Contains(a) || cell.Contains(b) || ClipSegment(a, b, cell)))
       {
-        joined.Join(static_cast<std::uint32_t>(i), j - 1);
+        joined.Join(static_cast<std::uint32_t>(i), j);
       }
     }
-  }
-  for (const std::uint32_t t : meeting)
-  {
-    placeOf[t] = 0;
   }
   std::vector<std::uint32_t> number(meeting.size(), UINT32_MAX);
   for (std::size_t i = 0; i < meeting.size(); ++i)
