@@ -273,7 +273,7 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     }
     return *creasesFound;
   };
-  thread_local TriangleList surfaceTriangles; // (scratch, as meshSurface)
+  TriangleList surfaceTriangles; // (each polygon's triangle, for SheetSpokesStray)
   if (meshBounded)
   {
     SurfaceInCell(*LoneMeshLeaf(*expression), prims, box, meshSurface, &surfaceTriangles);

@@ -142,6 +142,7 @@ void SurfaceInCell(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Bo
   if (triangles)
   {
     triangles->clear();
+    triangles->reserve(leaf.Triangles->size());
   }
   surface.Recycle(leaf.Triangles->size());
   surface.SetSlackMagnitude(SlackMagnitude(leaf, primitives, cell));
