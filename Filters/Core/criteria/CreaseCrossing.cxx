@@ -28,13 +28,11 @@ bool InsideTile(const MeshArrangement& arrangement, const ArrangementPoint& x, i
     arrangement.Side(x, v, tile.V0) > 0 && arrangement.Side(x, v, tile.V1) < 0;
 }
 
-/// The triangles of `triangles` whose bounds meet the tile's closed box. (A
-/// triangle strictly apart from it, in doubles, stays apart from it under
-/// the infinitesimal perturbation: no exact test needs it.)
-void NearTile(const MeshSolid& mesh, const RootGrid& grid, const TriangleList& triangles, int axis,
-  LatticeIndex plane, const FaceTile& tile, TriangleList& near)
+/// The triangles of `triangles` whose bounds meet `tileBox`, the tile's
+/// closed box. (A triangle strictly apart from it, in doubles, stays apart
+/// from it under the infinitesimal perturbation: no exact test needs it.)
+void NearTile(const MeshSolid& mesh, const TriangleList& triangles, const Box3& tileBox, TriangleList& near)
 {
-  const Box3 tileBox = TileBox(grid, axis, plane, tile);
   near.clear();
   for (const std::uint32_t t : triangles)
   {
@@ -163,8 +161,9 @@ std::optional<CreaseTile> CreaseOnTile(const CsgLeaf& leaf, const PrimitiveSet& 
   const MeshSolid& mesh = primitives.Meshes[leaf.Primitive];
   const double creaseCosine = std::cos(CreaseTileAngleDegrees * M_PI / 180.0);
   thread_local TriangleList near; // (scratch: called for every tile of every cell)
-  NearTile(mesh, grid, *leaf.Triangles, axis, plane, tile, near);
-  if (!MayHoldCrease(mesh, near, TileBox(grid, axis, plane, tile), creaseCosine))
+  const Box3 tileBox = TileBox(grid, axis, plane, tile);
+  NearTile(mesh, *leaf.Triangles, tileBox, near);
+  if (!MayHoldCrease(mesh, near, tileBox, creaseCosine))
   {
     return std::nullopt;
   }

@@ -276,7 +276,8 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   TriangleList surfaceTriangles; // (each polygon's triangle, for SheetSpokesStray)
   if (meshBounded)
   {
-    SurfaceInCell(*LoneMeshLeaf(*expression), prims, box, meshSurface, &surfaceTriangles);
+    SurfaceInCell(
+      *LoneMeshLeaf(*expression), prims, box, meshSurface, provenFailuresFirst ? &surfaceTriangles : nullptr);
   }
   if (meshBounded && provenFailuresFirst &&
     SpokeStrays(*LoneMeshLeaf(*expression), prims, box, mask, meshSurface, tolerance) &&

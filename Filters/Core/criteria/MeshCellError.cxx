@@ -702,21 +702,22 @@ constexpr double WellCrossed = 1e-3;
 /// split it as before.
 constexpr std::uint32_t MostSheetsAsked = 8;
 
-/// S_C's sheets (header: Spokes): its polygons' triangles `meeting` (the
-/// listed ones that meet the cell, in order: SurfaceInCell's), joined into
-/// sheets across mesh edges that meet the closed cell.
+/// S_C's sheets (header: Spokes): each polygon's sheet, in S_C's order.
 struct SurfaceSheets
 {
   std::vector<std::uint32_t> SheetOf; ///< each one's sheet, 0 .. Count - 1
   std::uint32_t Count = 0;
 };
 
+/// S_C's polygons' triangles `meeting` (the listed ones that meet the cell,
+/// in the list's order: SurfaceInCell's `triangles`) joined into sheets
+/// across mesh edges that meet the closed cell.
 SurfaceSheets SheetsInCell(const MeshSolid& mesh, const TriangleList& meeting, const Box3& cell)
 {
   SurfaceSheets sheets;
-  // (Pruning keeps its parent's order, so the list is in order and
-  // SheetSpokesStray finds a triangle's sheet by bisection; were it not, no
-  // sheets are told apart.)
+  // (Pruning keeps its parent's order, so the list - and the part of it
+  // that meets the cell - is in order, and SheetSpokesStray finds a
+  // triangle's sheet by bisection; were it not, no sheets are told apart.)
   if (!std::is_sorted(meeting.begin(), meeting.end()))
   {
     return sheets;
@@ -764,11 +765,11 @@ SurfaceSheets SheetsInCell(const MeshSolid& mesh, const TriangleList& meeting, c
   {
     for (int k = 0; k < 3; ++k)
     {
-      // (An end in the closed cell is an edge meeting it - ClipSegment
-      // says so too, at more cost: in a large cell most edges have both.)
       const std::uint32_t u = mesh.Across(meeting[i], k);
       std::uint32_t j = 0;
       Vec3 a = mesh.Vertex(meeting[i], k), b = mesh.Vertex(meeting[i], (k + 1) % 3);
+      // (An end in the closed cell is an edge meeting it - ClipSegment
+      // says so too, at more cost: in a large cell most edges have both.)
       if (u != MeshSolid::NoTriangle && placeOf(u, j) &&
         (cell.Contains(a) || cell.Contains(b) || ClipSegment(a, b, cell)))
       {

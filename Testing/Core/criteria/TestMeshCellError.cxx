@@ -1109,6 +1109,48 @@ TEST(MeshCellError, SpokesOfSeveralSheetsGoToEachSheetsApex)
     *upperLeaf, b.Scene.Primitives, upper, insideCorners(upper), upperSurface, upperTriangles, 0.04));
 }
 
+TEST(MeshCellError, SheetsOfALargeCellAreJoinedAcrossItsEdges)
+{
+  // A pancake 1.4 wide and 0.12 thick, finely tessellated (an icosphere of
+  // 20 480 triangles, flattened), through a cell that holds a piece of both
+  // its faces - more than a thousand triangles: S_C is told apart into its
+  // two sheets (SheetSpokesStray joins the triangles across the edges that
+  // meet the cell, found in a table of the cell's own triangles), so the
+  // spokes go to each sheet's apex on it and none strays, while the one
+  // apex between the faces is 0.06 from both (SpokeStrays). A cell over the
+  // upper face alone is one sheet, which SheetSpokesStray never overrules.
+  SceneBuilder b;
+  b.Finish(b.Mesh(tpctest::AffineMesh(
+    tpctest::SphereMesh({ 0, 0, 0 }, 1.0, 5), { 0.7, 0.7, 0.06 }, { 0, 0, 1 }, 0.3, { 0, 0, 0 })));
+  const auto insideCorners = [&](const tpc::Box3& box) {
+    unsigned inside = 0;
+    for (int k = 0; k < 8; ++k)
+    {
+      inside |= b.Scene.Expression->IsInside(box.Corner(k), b.Scene.Primitives) ? 1u << k : 0u;
+    }
+    return inside;
+  };
+  const auto sheetsStray = [&](const tpc::Box3& cell, std::size_t& polygons, bool spokeStrays) {
+    const auto pruned = tpc::CsgExpression::Prune(b.Scene.Expression, cell, b.Scene.Primitives);
+    const tpc::CsgLeaf* leaf = tpc::LoneMeshLeaf(*pruned.Expression);
+    EXPECT_NE(leaf, nullptr);
+    tpc::PolygonSet surface;
+    tpc::TriangleList triangles;
+    tpc::SurfaceInCell(*leaf, b.Scene.Primitives, cell, surface, &triangles);
+    polygons = surface.size();
+    EXPECT_EQ(triangles.size(), surface.size());
+    EXPECT_TRUE(std::is_sorted(triangles.begin(), triangles.end()));
+    EXPECT_EQ(tpc::SpokeStrays(*leaf, b.Scene.Primitives, cell, insideCorners(cell), surface, 0.04), spokeStrays);
+    return tpc::SheetSpokesStray(*leaf, b.Scene.Primitives, cell, insideCorners(cell), surface, triangles, 0.04);
+  };
+  std::size_t both = 0, upper = 0;
+  EXPECT_FALSE(sheetsStray({ { -0.2, -0.2, -0.1 }, { 0.2, 0.2, 0.1 } }, both, true));
+  EXPECT_GT(both, 1000u);
+  // (Its spokes do not stray either; were they to, one sheet keeps the proof.)
+  EXPECT_TRUE(sheetsStray({ { -0.2, -0.2, 0.03 }, { 0.2, 0.2, 0.23 } }, upper, false));
+  EXPECT_GT(upper, 500u);
+}
+
 TEST(MeshCellError, ProvenFailuresSplitOnlyCellsThePredictionWouldSplit)
 {
   // Cells of one mesh larger than the tolerance where a spoke of every fan
