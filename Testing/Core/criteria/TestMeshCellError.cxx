@@ -1057,6 +1057,45 @@ TEST(MeshCellError, CellsOfSeveralLoopsAreFannedAroundAnApexEach)
   }
 }
 
+namespace
+{
+/// The spokes' early tests in `cell` of the one-mesh scene `scene`, at
+/// tolerance `tolerance`: SpokeStrays, SheetSpokesStray, S_C's polygons and
+/// the cell's corner signs.
+struct SpokeTests
+{
+  bool Spokes = false;
+  bool Sheets = false;
+  std::size_t Polygons = 0;
+  unsigned Inside = 0;
+};
+
+SpokeTests SpokeTestsIn(const tpctest::Scene& scene, const tpc::Box3& cell, double tolerance)
+{
+  SpokeTests t;
+  for (int k = 0; k < 8; ++k)
+  {
+    t.Inside |= scene.Expression->IsInside(cell.Corner(k), scene.Primitives) ? 1u << k : 0u;
+  }
+  const auto pruned = tpc::CsgExpression::Prune(scene.Expression, cell, scene.Primitives);
+  const tpc::CsgLeaf* leaf = pruned.Expression ? tpc::LoneMeshLeaf(*pruned.Expression) : nullptr;
+  EXPECT_NE(leaf, nullptr);
+  if (!leaf)
+  {
+    return t;
+  }
+  tpc::PolygonSet surface;
+  tpc::TriangleList triangles;
+  tpc::SurfaceInCell(*leaf, scene.Primitives, cell, surface, &triangles);
+  EXPECT_EQ(triangles.size(), surface.size());
+  EXPECT_TRUE(std::is_sorted(triangles.begin(), triangles.end()));
+  t.Polygons = surface.size();
+  t.Spokes = tpc::SpokeStrays(*leaf, scene.Primitives, cell, t.Inside, surface, tolerance);
+  t.Sheets = tpc::SheetSpokesStray(*leaf, scene.Primitives, cell, t.Inside, surface, triangles, tolerance);
+  return t;
+}
+} // namespace
+
 TEST(MeshCellError, SpokesOfSeveralSheetsGoToEachSheetsApex)
 {
   // A slab 0.12 thick, turned 30 degrees about y, through a cell that holds
@@ -1075,38 +1114,16 @@ TEST(MeshCellError, SpokesOfSeveralSheetsGoToEachSheetsApex)
   }
   SceneBuilder b;
   b.Finish(b.Mesh(tpc::MeshSolid(points, box.Triangles())));
-  const tpc::Box3 cell{ { -0.2, -0.2, -0.1 }, { 0.2, 0.2, 0.3 } };
-  const auto pruned = tpc::CsgExpression::Prune(b.Scene.Expression, cell, b.Scene.Primitives);
-  const tpc::CsgLeaf* leaf = tpc::LoneMeshLeaf(*pruned.Expression);
-  ASSERT_NE(leaf, nullptr);
-  const auto insideCorners = [&](const tpc::Box3& box) {
-    unsigned inside = 0;
-    for (int k = 0; k < 8; ++k)
-    {
-      inside |= b.Scene.Expression->IsInside(box.Corner(k), b.Scene.Primitives) ? 1u << k : 0u;
-    }
-    return inside;
-  };
-  const unsigned inside = insideCorners(cell);
-  ASSERT_NE(inside, 0u); // (corners of both signs: edges the sheets cross)
-  ASSERT_NE(inside, 0xFFu);
-  tpc::PolygonSet surface;
-  tpc::TriangleList triangles;
-  tpc::SurfaceInCell(*leaf, b.Scene.Primitives, cell, surface, &triangles);
-  EXPECT_TRUE(tpc::SpokeStrays(*leaf, b.Scene.Primitives, cell, inside, surface, 0.04));
-  EXPECT_FALSE(tpc::SheetSpokesStray(*leaf, b.Scene.Primitives, cell, inside, surface, triangles, 0.04));
+  const SpokeTests both = SpokeTestsIn(b.Scene, { { -0.2, -0.2, -0.1 }, { 0.2, 0.2, 0.3 } }, 0.04);
+  ASSERT_NE(both.Inside, 0u); // (corners of both signs: edges the sheets cross)
+  ASSERT_NE(both.Inside, 0xFFu);
+  EXPECT_TRUE(both.Spokes);
+  EXPECT_FALSE(both.Sheets);
   // A cell that holds the upper face alone is one sheet: the spokes' proof
   // stands, and the sheets do not overrule it.
-  const tpc::Box3 upper{ { -0.2, -0.2, 0.1 }, { 0.2, 0.2, 0.5 } };
-  const auto upperPruned = tpc::CsgExpression::Prune(b.Scene.Expression, upper, b.Scene.Primitives);
-  const tpc::CsgLeaf* upperLeaf = tpc::LoneMeshLeaf(*upperPruned.Expression);
-  ASSERT_NE(upperLeaf, nullptr);
-  tpc::PolygonSet upperSurface;
-  tpc::TriangleList upperTriangles;
-  tpc::SurfaceInCell(*upperLeaf, b.Scene.Primitives, upper, upperSurface, &upperTriangles);
-  ASSERT_FALSE(upperSurface.empty());
-  EXPECT_TRUE(tpc::SheetSpokesStray(
-    *upperLeaf, b.Scene.Primitives, upper, insideCorners(upper), upperSurface, upperTriangles, 0.04));
+  const SpokeTests upper = SpokeTestsIn(b.Scene, { { -0.2, -0.2, 0.1 }, { 0.2, 0.2, 0.5 } }, 0.04);
+  ASSERT_GT(upper.Polygons, 0u);
+  EXPECT_TRUE(upper.Sheets);
 }
 
 TEST(MeshCellError, SheetsOfALargeCellAreJoinedAcrossItsEdges)
@@ -1122,33 +1139,14 @@ TEST(MeshCellError, SheetsOfALargeCellAreJoinedAcrossItsEdges)
   SceneBuilder b;
   b.Finish(b.Mesh(tpctest::AffineMesh(
     tpctest::SphereMesh({ 0, 0, 0 }, 1.0, 5), { 0.7, 0.7, 0.06 }, { 0, 0, 1 }, 0.3, { 0, 0, 0 })));
-  const auto insideCorners = [&](const tpc::Box3& box) {
-    unsigned inside = 0;
-    for (int k = 0; k < 8; ++k)
-    {
-      inside |= b.Scene.Expression->IsInside(box.Corner(k), b.Scene.Primitives) ? 1u << k : 0u;
-    }
-    return inside;
-  };
-  const auto sheetsStray = [&](const tpc::Box3& cell, std::size_t& polygons, bool spokeStrays) {
-    const auto pruned = tpc::CsgExpression::Prune(b.Scene.Expression, cell, b.Scene.Primitives);
-    const tpc::CsgLeaf* leaf = tpc::LoneMeshLeaf(*pruned.Expression);
-    EXPECT_NE(leaf, nullptr);
-    tpc::PolygonSet surface;
-    tpc::TriangleList triangles;
-    tpc::SurfaceInCell(*leaf, b.Scene.Primitives, cell, surface, &triangles);
-    polygons = surface.size();
-    EXPECT_EQ(triangles.size(), surface.size());
-    EXPECT_TRUE(std::is_sorted(triangles.begin(), triangles.end()));
-    EXPECT_EQ(tpc::SpokeStrays(*leaf, b.Scene.Primitives, cell, insideCorners(cell), surface, 0.04), spokeStrays);
-    return tpc::SheetSpokesStray(*leaf, b.Scene.Primitives, cell, insideCorners(cell), surface, triangles, 0.04);
-  };
-  std::size_t both = 0, upper = 0;
-  EXPECT_FALSE(sheetsStray({ { -0.2, -0.2, -0.1 }, { 0.2, 0.2, 0.1 } }, both, true));
-  EXPECT_GT(both, 1000u);
-  // (Its spokes do not stray either; were they to, one sheet keeps the proof.)
-  EXPECT_TRUE(sheetsStray({ { -0.2, -0.2, 0.03 }, { 0.2, 0.2, 0.23 } }, upper, false));
-  EXPECT_GT(upper, 500u);
+  const SpokeTests both = SpokeTestsIn(b.Scene, { { -0.2, -0.2, -0.1 }, { 0.2, 0.2, 0.1 } }, 0.04);
+  EXPECT_GT(both.Polygons, 1000u);
+  EXPECT_TRUE(both.Spokes);
+  EXPECT_FALSE(both.Sheets);
+  const SpokeTests upper = SpokeTestsIn(b.Scene, { { -0.2, -0.2, 0.03 }, { 0.2, 0.2, 0.23 } }, 0.04);
+  EXPECT_GT(upper.Polygons, 500u);
+  EXPECT_FALSE(upper.Spokes); // (nor do its spokes stray; had they, one sheet keeps the proof)
+  EXPECT_TRUE(upper.Sheets);
 }
 
 TEST(MeshCellError, ProvenFailuresSplitOnlyCellsThePredictionWouldSplit)
