@@ -328,7 +328,7 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
       MarkCreaseTiles(boundary, *LoneMeshLeaf(*expression), prims, grid, [](int, std::size_t) { return true; });
     v.PredictedError = PredictedMeshCellError(*expression, prims, grid, box, boundary,
       creases ? TraceBoundaryLoops(boundary) : loops, tolerance, v.MeshPrediction, &meshSurface,
-      provenFailuresFirst);
+      provenFailuresFirst, oneMesh ? &meshCreases() : nullptr);
     v.ErrorBounded = v.MeshSurface = v.PredictedError <= tolerance;
     // Failed with chords far from the trace: again over a loop whose wide
     // chords' tiles are split (MeshCellError.h: Chords refined) - not in a
@@ -342,8 +342,9 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     }
     if (!v.ErrorBounded)
     {
-      v.Reason = SplitReason::HausdorffSize;
+      v.Reason = v.MeshPrediction.CreasesMissed ? SplitReason::CreaseNotFollowed : SplitReason::HausdorffSize;
       v.SplitByProbe = v.MeshPrediction.ProbeStrayed;
+      v.SplitByCreases = v.MeshPrediction.CreasesMissed;
       return v;
     }
     // Its fan must draw the mesh's creases too (CreaseFollowing.h), where
@@ -354,7 +355,9 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     {
       const CsgLeaf& leaf = *LoneMeshLeaf(*expression);
       const double reach = CreaseReach * tolerance;
-      if (!CreasesFollowed(meshCreases(), ApexFans(v.MeshPrediction.Loops, v.MeshPrediction.Apexes), reach))
+      // (Asked already where the prediction looked at the creases first.)
+      if (!v.MeshPrediction.ApexFanFollowsCreases &&
+        !CreasesFollowed(meshCreases(), ApexFans(v.MeshPrediction.Loops, v.MeshPrediction.Apexes), reach))
       {
         if (!PredictCreaseApex(meshSurface, box, meshCreases(), reach, RoundingSlack(leaf, prims, box), tolerance,
               v.MeshPrediction))

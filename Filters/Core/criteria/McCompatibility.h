@@ -75,6 +75,9 @@ struct McCompatibility
   /// Split for its size because its prediction's fan has a point too far
   /// from the mesh (MeshCellError.h: Probes).
   bool SplitByProbe = false;
+  /// Split because no fan its prediction could draw follows its creases,
+  /// found before the branch and bound (MeshCellError.h: Creases first).
+  bool SplitByCreases = false;
   /// Passed on a prediction made over finer chords (MeshCellError.h: Chords
   /// refined).
   bool ChordsRefined = false;

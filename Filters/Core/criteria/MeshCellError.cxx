@@ -391,6 +391,7 @@ bool PredictCreaseApex(const PolygonSet& surface, const Box3& cell, const std::v
     if (error.Upper + delta <= tolerance)
     {
       prediction.Apexes = apexes;
+      prediction.ApexFanFollowsCreases = true;
       prediction.Bound = error.Upper + delta;
       prediction.OwnFanError = error.Upper;
       prediction.Attained = error.Lower;
@@ -597,10 +598,24 @@ int RefineChordTiles(const CsgExpressionPtr& expression, const PrimitiveSet& pri
   return splits;
 }
 
+namespace
+{
+/// Whether one of the fans over `loops` around the sets of crease points
+/// CreaseApexSets gives for `apexes` follows every crease of `creases`
+/// within `reach` (header: Creases first).
+bool CreaseApexFanFollows(const Box3& cell, const std::vector<CreaseSegment>& creases, double reach,
+  const std::vector<std::vector<Vec3>>& loops, const std::vector<Vec3>& apexes)
+{
+  const std::vector<std::vector<Vec3>> others = CreaseApexSets(cell, creases, loops, apexes);
+  return std::any_of(others.begin(), others.end(),
+    [&](const std::vector<Vec3>& set) { return CreasesFollowed(creases, ApexFans(loops, set), reach); });
+}
+} // namespace
+
 double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSet& primitives,
   const RootGrid& grid, const Box3& cell, const CellBoundary& boundary, const BoundaryLoopSet& loops,
   double tolerance, AdaptiveOctree::MeshCellPrediction& prediction, const PolygonSet* given,
-  bool probesFirst)
+  bool probesFirst, const std::vector<CreaseSegment>* creases)
 {
   prediction = AdaptiveOctree::MeshCellPrediction();
   const CsgLeaf* leaf = LoneMeshLeaf(expression);
@@ -668,6 +683,16 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
   {
     prediction.ProbeStrayed = true;
     return HUGE_VAL;
+  }
+  if (probesFirst && creases && !creases->empty())
+  {
+    const double reach = CreaseReach * tolerance;
+    prediction.ApexFanFollowsCreases = CreasesFollowed(*creases, fan, reach);
+    if (!prediction.ApexFanFollowsCreases && !CreaseApexFanFollows(cell, *creases, reach, points, apexes))
+    {
+      prediction.CreasesMissed = true;
+      return HUGE_VAL;
+    }
   }
   const HausdorffEstimate error =
     CertifiedMeshPatchError(surface, fan, slack, tolerance - delta, tolerance - delta, PredictionBudget);

@@ -104,6 +104,24 @@
 // armadillo - a scan, whose sharp edges are followed too - 21 736 ->
 // 20 124.)
 //
+// Creases first. The fans a cell of a scene of one mesh may pass with are
+// the fan over its loops around S_C's apexes and those around the sets of
+// crease points CreaseApexSets gives for the same loops and apexes; each
+// must follow every crease of the cell within the reach (CreasesFollowed,
+// asked of the first after its branch and bound, of the others before
+// theirs: PredictCreaseApex). None of this depends on the branch and bound,
+// and chords are never refined in a cell that must draw creases (Chords
+// refined): where none of these fans follows the creases, the cell splits
+// whatever E(P) + delta is - for its size where the bound fails,
+// CreaseNotFollowed where it passes. So the prediction asks it first, after
+// the probes (Probes), and fails without a branch and bound, the cell
+// reported CreaseNotFollowed: the same cells split, the same surface (the
+// grid's reason may read CreaseNotFollowed where it read HausdorffSize). Measured (2026-12-06, tpc_benchmark on one
+// thread under callgrind, the same surfaces): at 1/64 and 1/128 the turbine
+// splits 25 and 47 cells so, 1.8 % and 2.4 % fewer instructions; armadillo
+// 44 and 67 cells, 1.2 % and 1.0 %; couplingdown 1 and 70 cells, 0.2 % and
+// 0.6 %.
+//
 // Chords refined. Face refinement tiles a face as the topology tests need
 // (FaceRefinement.h), not for the error: a chord across a tile whose trace
 // bends - over a fillet, a hole's rim, a scan's curve - strays from it by
@@ -423,12 +441,16 @@ bool PredictCreaseApex(const PolygonSet& surface, const Box3& cell, const std::v
 /// E(P) + delta having failed before E(P) was proven).
 /// `surface`: S_C when the caller has it (SurfaceInCell with `cell`), else
 /// null. With `probesFirst`, the fan's probes (header: Probes) may fail it
-/// before the branch and bound (then prediction.ProbeStrayed is set): off
-/// only to check that they change nothing.
+/// before the branch and bound (then prediction.ProbeStrayed is set), and,
+/// given the cell's `creases` (CreasesInCell, in a scene of one mesh, where
+/// its fan must follow them), so may fans that follow them around no apex
+/// (header: Creases first; then prediction.CreasesMissed is set): off only
+/// to check that they change nothing.
 double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSet& primitives,
   const RootGrid& grid, const Box3& cell, const CellBoundary& boundary, const BoundaryLoopSet& loops,
   double tolerance, AdaptiveOctree::MeshCellPrediction& prediction,
-  const PolygonSet* surface = nullptr, bool probesFirst = true);
+  const PolygonSet* surface = nullptr, bool probesFirst = true,
+  const std::vector<CreaseSegment>* creases = nullptr);
 
 /// Whether a spoke of the fan over every loop the tests could trace in
 /// `cell` strays farther than `tolerance` from S_C `surface` (header:

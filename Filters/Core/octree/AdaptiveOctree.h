@@ -150,6 +150,13 @@ public:
     /// Set where the prediction failed at a probe, before its branch and
     /// bound (MeshCellError.h: Probes; such cells split).
     bool ProbeStrayed = false;
+    /// Found where the prediction looked at the cell's creases first
+    /// (MeshCellError.h: Creases first; or where PredictCreaseApex chose
+    /// Apexes): the fan over Loops around Apexes follows them; no fan over
+    /// Loops - around S_C's apexes or around crease points - does (such
+    /// cells split).
+    bool ApexFanFollowsCreases = false;
+    bool CreasesMissed = false;
     /// The chords' largest deviation from the trace, delta, with the
     /// rounding slack (+inf until computed).
     double Delta = HUGE_VAL;

@@ -127,6 +127,7 @@ bool DecideCell(AdaptiveOctree& tree, std::uint32_t n, const CellTests& tests, c
   result.SplitsByReason[static_cast<int>(v.Reason)] += mine;
   result.SpokeSplitCells += v.SplitBySpoke ? mine : 0;
   result.ProbeSplitCells += v.SplitByProbe ? mine : 0;
+  result.CreaseSplitCells += v.SplitByCreases ? mine : 0;
   return true;
 }
 

@@ -52,8 +52,9 @@ struct SubdivisionParameters
   double SurfaceDiagonal = 0.0;
   /// Proven failures first: oversized cells of one mesh whose fans would
   /// stray beyond the tolerance split before their tests (MeshCellError.h:
-  /// Spokes), and a prediction whose fan has a point too far from the mesh
-  /// fails before its branch and bound (Probes). Off only to check that this
+  /// Spokes), and a prediction whose fan has a point too far from the mesh,
+  /// or whose fans follow the cell's creases around no apex, fails before
+  /// its branch and bound (Probes, Creases first). Off only to check that this
   /// changes no cell's fate - proven, but for the spokes of a cell of
   /// several sheets that may pass with several loops, which guess
   /// (MeshCellError.h: Spokes; a split is always allowed).
@@ -97,10 +98,11 @@ struct SubdivisionResult
   std::size_t ErrorBoundedCells = 0;
   std::size_t OversizedErrorBoundedCells = 0;
   /// Cells split for their size before their tests (Spokes), or whose
-  /// prediction failed before its branch and bound (Probes);
-  /// ProvenFailuresFirst.
+  /// prediction failed before its branch and bound (Probes), or whose fans
+  /// could follow no crease apex (Creases first); ProvenFailuresFirst.
   std::size_t SpokeSplitCells = 0;
   std::size_t ProbeSplitCells = 0;
+  std::size_t CreaseSplitCells = 0;
   /// Surface cells accepted on a prediction over finer chords (RefineChords).
   std::size_t ChordRefinedCells = 0;
   /// The proven two-sided Hausdorff bound between the exact surface and the

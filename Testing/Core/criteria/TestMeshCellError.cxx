@@ -1153,25 +1153,28 @@ TEST(MeshCellError, ProvenFailuresSplitOnlyCellsThePredictionWouldSplit)
 {
   // Cells of one mesh larger than the tolerance where a spoke of every fan
   // the prediction could be made with strays beyond the tolerance split
-  // before their tests (MeshCellError.h: Spokes), and a prediction whose fan
+  // before their tests (MeshCellError.h: Spokes), a prediction whose fan
   // has a point farther from the mesh than the tolerance minus its chord's
-  // delta fails before its branch and bound (Probes). That only moves the
-  // decision earlier: with both off, every cell meets the same fate and the
-  // surface is the same, point for point. (A check stricter than the
-  // prediction - half the tolerance for the spokes' reach, or for the
-  // probes' - splits cells the tests accept, and the surfaces differ.)
+  // delta fails before its branch and bound (Probes), and so does one whose
+  // fans follow the cell's creases around no apex (Creases first). That
+  // only moves the decision earlier: with all three off, every cell meets
+  // the same fate and the surface is the same, point for point. (A check
+  // stricter than the prediction - half the tolerance for the spokes'
+  // reach, or for the probes', or the crease points' fans left out of the
+  // crease check - splits cells the tests accept, and the surfaces differ.)
   struct Case
   {
     const char* Name;
     tpc::MeshSolid Mesh;
     double Tolerance; ///< absolute
     bool Probes;      ///< whether probes split cells (without refined chords)
+    bool Creases;     ///< whether cells split for their creases first
   };
   // (The slab's cells hold both its faces: there the spokes go to each
   // sheet's apex, MeshCellError.h: Several loops.)
-  const std::vector<Case> cases{ { "sphere", tpctest::SphereMesh({ 0.02, -0.03, 0.01 }, 0.8, 4), 0.05, true },
-    { "torus", tpctest::TorusMesh({ 0.01, 0.02, -0.01 }, 0.6, 0.25, 96, 48), 0.03, true },
-    { "chamfered bar", ChamferedBar(), 0.02, true }, { "tilted slab", TiltedSlab(), 0.04, false } };
+  const std::vector<Case> cases{ { "sphere", tpctest::SphereMesh({ 0.02, -0.03, 0.01 }, 0.8, 4), 0.05, true, false },
+    { "torus", tpctest::TorusMesh({ 0.01, 0.02, -0.01 }, 0.6, 0.25, 96, 48), 0.03, true, false },
+    { "chamfered bar", ChamferedBar(), 0.02, true, true }, { "tilted slab", TiltedSlab(), 0.04, false, true } };
   // (With chords refined too - MeshCellError.h: Chords refined - a cell that
   // failed on a probe is predicted again and may pass, so without it for the
   // probes to be seen splitting cells.)
@@ -1193,6 +1196,8 @@ TEST(MeshCellError, ProvenFailuresSplitOnlyCellsThePredictionWouldSplit)
       EXPECT_EQ(off.SpokeSplitCells, 0u) << c.Name;
       EXPECT_TRUE(refineChords || !c.Probes || on.ProbeSplitCells > 0u) << c.Name;
       EXPECT_EQ(off.ProbeSplitCells, 0u) << c.Name;
+      EXPECT_EQ(c.Creases, on.CreaseSplitCells > 0u) << c.Name;
+      EXPECT_EQ(off.CreaseSplitCells, 0u) << c.Name;
       EXPECT_GT(on.OversizedErrorBoundedCells, 0u) << c.Name; // (cells larger than the tolerance were accepted)
       ASSERT_EQ(on.Octree.Nodes.size(), off.Octree.Nodes.size()) << c.Name;
       for (std::size_t n = 0; n < on.Octree.Nodes.size(); ++n)
@@ -1213,6 +1218,7 @@ TEST(MeshCellError, ProvenFailuresSplitOnlyCellsThePredictionWouldSplit)
       EXPECT_EQ(withSpokes.CertifiedBound, without.CertifiedBound) << c.Name;
       std::cout << c.Name << (refineChords ? " (chords refined)" : "") << ": " << on.SpokeSplitCells << " of "
                 << on.Octree.Nodes.size() << " cells split by a spoke, " << on.ProbeSplitCells << " by a probe, "
+                << on.CreaseSplitCells << " for their creases, "
                 << withSpokes.Mesh.Triangles.size() << " triangles either way\n";
     }
   }
