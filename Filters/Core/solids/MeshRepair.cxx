@@ -2,6 +2,7 @@
 
 #include "ExactPredicates.h"
 #include "MeshEdges.h"
+#include "MeshOrder.h"
 #include "MeshSolid.h"
 #include "SelfIntersection.h"
 #include "UnionFind.h"
@@ -430,6 +431,11 @@ MeshSolid RepairIntoSolid(std::vector<Vec3> points, std::vector<Triangle> triang
   {
     // (Asked to stop, or nothing left: a solid of no triangles.)
     return triangles.empty() ? MeshSolid(std::move(points), {}, {}, parallelFor) : MeshSolid();
+  }
+  // (The cells read it in runs: MeshOrder.h.)
+  if (!InLocalOrder(points, triangles))
+  {
+    OrderAlongMortonCurve(points, triangles, neighbours, MeshSolid::NoTriangle);
   }
   MeshSolid solid(std::move(points), std::move(triangles), std::move(neighbours), parallelFor);
   report.SelfIntersections =

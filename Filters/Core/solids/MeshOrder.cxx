@@ -1,0 +1,150 @@
+#include "MeshOrder.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace tpc
+{
+namespace
+{
+Vec3 Centroid(const std::vector<Vec3>& points, const std::array<std::uint32_t, 3>& t)
+{
+  return (points[t[0]] + points[t[1]] + points[t[2]]) * (1.0 / 3.0);
+}
+
+/// The median of `values` (reordered; 0 for none).
+double Median(std::vector<double>& values)
+{
+  if (values.empty())
+  {
+    return 0.0;
+  }
+  const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
+}
+
+/// The bits of a 21-bit integer spread three apart (bit i to bit 3 i).
+std::uint64_t Spread(std::uint64_t v)
+{
+  v &= 0x1FFFFF;
+  v = (v | v << 32) & 0x1F00000000FFFFull;
+  v = (v | v << 16) & 0x1F0000FF0000FFull;
+  v = (v | v << 8) & 0x100F00F00F00F00Full;
+  v = (v | v << 4) & 0x10C30C30C30C30C3ull;
+  v = (v | v << 2) & 0x1249249249249249ull;
+  return v;
+}
+
+/// The Morton code of `p` on a 2^21 grid over `box` (a NaN coordinate, or
+/// one outside the box, clamped to its ends).
+std::uint64_t MortonCode(const Vec3& p, const Box3& box)
+{
+  std::uint64_t code = 0;
+  for (int a = 0; a < 3; ++a)
+  {
+    const double width = box.Width(a);
+    const double t = width > 0.0 ? (p[a] - box.lo[a]) / width : 0.0;
+    const double cell = std::clamp(std::isnan(t) ? 0.0 : t, 0.0, 1.0) * 2097151.0;
+    code |= Spread(static_cast<std::uint64_t>(cell)) << a;
+  }
+  return code;
+}
+} // namespace
+
+bool InLocalOrder(const std::vector<Vec3>& points, const std::vector<std::array<std::uint32_t, 3>>& triangles)
+{
+  if (triangles.size() < 2)
+  {
+    return true;
+  }
+  std::vector<double> jumps, edges;
+  jumps.reserve(triangles.size() - 1);
+  edges.reserve(triangles.size());
+  Vec3 previous = Centroid(points, triangles[0]);
+  for (std::size_t k = 0; k < triangles.size(); ++k)
+  {
+    const std::array<std::uint32_t, 3>& t = triangles[k];
+    const Vec3 centroid = Centroid(points, t);
+    if (k > 0)
+    {
+      jumps.push_back(Norm(centroid - previous));
+    }
+    previous = centroid;
+    edges.push_back(std::max(
+      { Norm(points[t[1]] - points[t[0]]), Norm(points[t[2]] - points[t[1]]), Norm(points[t[0]] - points[t[2]]) }));
+  }
+  // (A NaN compares false: such a mesh keeps its order.)
+  return !(Median(jumps) > LocalOrderJumps * Median(edges));
+}
+
+void OrderAlongMortonCurve(std::vector<Vec3>& points, std::vector<std::array<std::uint32_t, 3>>& triangles,
+  std::vector<std::array<std::uint32_t, 3>>& neighbours, std::uint32_t none)
+{
+  const std::size_t n = triangles.size();
+  Box3 box{ points.empty() ? Vec3() : points[0], points.empty() ? Vec3() : points[0] };
+  for (const Vec3& p : points)
+  {
+    for (int a = 0; a < 3; ++a)
+    {
+      box.lo[a] = std::min(box.lo[a], p[a]);
+      box.hi[a] = std::max(box.hi[a], p[a]);
+    }
+  }
+  // The triangles by (code, old index): the new order, deterministic.
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(n);
+  for (std::uint32_t t = 0; t < n; ++t)
+  {
+    keyed[t] = { MortonCode(Centroid(points, triangles[t]), box), t };
+  }
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<std::uint32_t> newTriangle(n);
+  for (std::uint32_t k = 0; k < n; ++k)
+  {
+    newTriangle[keyed[k].second] = k;
+  }
+  // The points in the order the reordered triangles first use them.
+  constexpr std::uint32_t unnamed = ~std::uint32_t{ 0 };
+  std::vector<std::uint32_t> newPoint(points.size(), unnamed);
+  std::vector<Vec3> reorderedPoints;
+  reorderedPoints.reserve(points.size());
+  std::vector<std::array<std::uint32_t, 3>> reordered(n);
+  for (std::uint32_t k = 0; k < n; ++k)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const std::uint32_t v = triangles[keyed[k].second][c];
+      if (newPoint[v] == unnamed)
+      {
+        newPoint[v] = static_cast<std::uint32_t>(reorderedPoints.size());
+        reorderedPoints.push_back(points[v]);
+      }
+      reordered[k][c] = newPoint[v];
+    }
+  }
+  for (std::size_t v = 0; v < points.size(); ++v)
+  {
+    if (newPoint[v] == unnamed)
+    {
+      reorderedPoints.push_back(points[v]);
+    }
+  }
+  if (neighbours.size() == n)
+  {
+    std::vector<std::array<std::uint32_t, 3>> renamed(n);
+    for (std::uint32_t k = 0; k < n; ++k)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        const std::uint32_t across = neighbours[keyed[k].second][c];
+        renamed[k][c] = across == none ? none : newTriangle[across];
+      }
+    }
+    neighbours = std::move(renamed);
+  }
+  points = std::move(reorderedPoints);
+  triangles = std::move(reordered);
+}
+
+} // namespace tpc
