@@ -13,12 +13,17 @@ Vec3 Centroid(const std::vector<Vec3>& points, const std::array<std::uint32_t, 3
   return (points[t[0]] + points[t[1]] + points[t[2]]) * (1.0 / 3.0);
 }
 
-/// The median of `values` (reordered; 0 for none).
+/// The median of `values` (reordered; 0 for none; a NaN counted as +inf,
+/// which keeps the order a strict weak one).
 double Median(std::vector<double>& values)
 {
   if (values.empty())
   {
     return 0.0;
+  }
+  for (double& v : values)
+  {
+    v = std::isnan(v) ? HUGE_VAL : v;
   }
   const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
   std::nth_element(values.begin(), middle, values.end());
@@ -75,7 +80,7 @@ bool InLocalOrder(const std::vector<Vec3>& points, const std::vector<std::array<
     edges.push_back(std::max(
       { Norm(points[t[1]] - points[t[0]]), Norm(points[t[2]] - points[t[1]]), Norm(points[t[0]] - points[t[2]]) }));
   }
-  // (A NaN compares false: such a mesh keeps its order.)
+  // (Where lengths are infinite and the comparison fails, the order stays.)
   return !(Median(jumps) > LocalOrderJumps * Median(edges));
 }
 
