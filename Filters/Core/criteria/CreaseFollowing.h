@@ -54,7 +54,9 @@
 // their usual patch missed a crease changed no measured distance).
 // It is a quality criterion, not part of the topology guarantee or of the
 // certified Hausdorff bound: a cell failing it splits (CreaseNotFollowed),
-// like one failing the Hausdorff size.
+// like one failing the Hausdorff size - asked before the error's branch and
+// bound where no fan the cell could be drawn with follows its creases
+// (MeshCellError.h: Creases first).
 #pragma once
 
 #include "CsgExpression.h"

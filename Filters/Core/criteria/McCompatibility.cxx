@@ -342,9 +342,9 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     }
     if (!v.ErrorBounded)
     {
-      v.Reason = v.MeshPrediction.CreasesMissed ? SplitReason::CreaseNotFollowed : SplitReason::HausdorffSize;
+      v.SplitByCreases = v.MeshPrediction.Creases == AdaptiveOctree::MeshCellPrediction::CreaseFans::NoneFollows;
+      v.Reason = v.SplitByCreases ? SplitReason::CreaseNotFollowed : SplitReason::HausdorffSize;
       v.SplitByProbe = v.MeshPrediction.ProbeStrayed;
-      v.SplitByCreases = v.MeshPrediction.CreasesMissed;
       return v;
     }
     // Its fan must draw the mesh's creases too (CreaseFollowing.h), where
@@ -355,9 +355,12 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     {
       const CsgLeaf& leaf = *LoneMeshLeaf(*expression);
       const double reach = CreaseReach * tolerance;
-      // (Asked already where the prediction looked at the creases first.)
-      if (!v.MeshPrediction.ApexFanFollowsCreases &&
-        !CreasesFollowed(meshCreases(), ApexFans(v.MeshPrediction.Loops, v.MeshPrediction.Apexes), reach))
+      // (Known where the prediction looked at the creases first.)
+      using CreaseFans = AdaptiveOctree::MeshCellPrediction::CreaseFans;
+      const CreaseFans found = v.MeshPrediction.Creases;
+      if (found == CreaseFans::OtherFanFollows ||
+        (found == CreaseFans::NotAsked &&
+          !CreasesFollowed(meshCreases(), ApexFans(v.MeshPrediction.Loops, v.MeshPrediction.Apexes), reach)))
       {
         if (!PredictCreaseApex(meshSurface, box, meshCreases(), reach, RoundingSlack(leaf, prims, box), tolerance,
               v.MeshPrediction))

@@ -391,7 +391,7 @@ bool PredictCreaseApex(const PolygonSet& surface, const Box3& cell, const std::v
     if (error.Upper + delta <= tolerance)
     {
       prediction.Apexes = apexes;
-      prediction.ApexFanFollowsCreases = true;
+      prediction.Creases = AdaptiveOctree::MeshCellPrediction::CreaseFans::ApexFanFollows;
       prediction.Bound = error.Upper + delta;
       prediction.OwnFanError = error.Upper;
       prediction.Attained = error.Lower;
@@ -686,11 +686,13 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
   }
   if (probesFirst && creases && !creases->empty())
   {
+    using CreaseFans = AdaptiveOctree::MeshCellPrediction::CreaseFans;
     const double reach = CreaseReach * tolerance;
-    prediction.ApexFanFollowsCreases = CreasesFollowed(*creases, fan, reach);
-    if (!prediction.ApexFanFollowsCreases && !CreaseApexFanFollows(cell, *creases, reach, points, apexes))
+    prediction.Creases = CreasesFollowed(*creases, fan, reach) ? CreaseFans::ApexFanFollows
+      : CreaseApexFanFollows(cell, *creases, reach, points, apexes) ? CreaseFans::OtherFanFollows
+                                                                     : CreaseFans::NoneFollows;
+    if (prediction.Creases == CreaseFans::NoneFollows)
     {
-      prediction.CreasesMissed = true;
       return HUGE_VAL;
     }
   }

@@ -116,7 +116,8 @@
 // CreaseNotFollowed where it passes. So the prediction asks it first, after
 // the probes (Probes), and fails without a branch and bound, the cell
 // reported CreaseNotFollowed: the same cells split, the same surface (the
-// grid's reason may read CreaseNotFollowed where it read HausdorffSize). Measured (2026-12-06, tpc_benchmark on one
+// grid's reasons - SplitReason, its children's SizeReason, an exact cell's
+// FailedTest - may read CreaseNotFollowed where they read HausdorffSize). Measured (2026-12-06, tpc_benchmark on one
 // thread under callgrind, the same surfaces): at 1/64 and 1/128 the turbine
 // splits 25 and 47 cells so, 1.8 % and 2.4 % fewer instructions; armadillo
 // 44 and 67 cells, 1.2 % and 1.0 %; couplingdown 1 and 70 cells, 0.2 % and
@@ -444,8 +445,9 @@ bool PredictCreaseApex(const PolygonSet& surface, const Box3& cell, const std::v
 /// before the branch and bound (then prediction.ProbeStrayed is set), and,
 /// given the cell's `creases` (CreasesInCell, in a scene of one mesh, where
 /// its fan must follow them), so may fans that follow them around no apex
-/// (header: Creases first; then prediction.CreasesMissed is set): off only
-/// to check that they change nothing.
+/// (header: Creases first; then prediction.Creases is NoneFollows, and it
+/// says what was found where the prediction goes on): off only to check that
+/// they change nothing.
 double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSet& primitives,
   const RootGrid& grid, const Box3& cell, const CellBoundary& boundary, const BoundaryLoopSet& loops,
   double tolerance, AdaptiveOctree::MeshCellPrediction& prediction,

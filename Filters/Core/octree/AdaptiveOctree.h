@@ -150,13 +150,17 @@ public:
     /// Set where the prediction failed at a probe, before its branch and
     /// bound (MeshCellError.h: Probes; such cells split).
     bool ProbeStrayed = false;
-    /// Found where the prediction looked at the cell's creases first
-    /// (MeshCellError.h: Creases first; or where PredictCreaseApex chose
-    /// Apexes): the fan over Loops around Apexes follows them; no fan over
-    /// Loops - around S_C's apexes or around crease points - does (such
-    /// cells split).
-    bool ApexFanFollowsCreases = false;
-    bool CreasesMissed = false;
+    /// What the prediction found of the cell's creases before its branch
+    /// and bound (MeshCellError.h: Creases first), where it looked.
+    enum class CreaseFans : std::uint8_t
+    {
+      NotAsked,
+      ApexFanFollows,  ///< the fan over Loops around Apexes follows them
+      OtherFanFollows, ///< it does not, a fan around crease points does
+      NoneFollows      ///< no fan over the loops does: the cell splits
+    };
+    /// (Set to ApexFanFollows too where PredictCreaseApex chose Apexes.)
+    CreaseFans Creases = CreaseFans::NotAsked;
     /// The chords' largest deviation from the trace, delta, with the
     /// rounding slack (+inf until computed).
     double Delta = HUGE_VAL;

@@ -30,9 +30,11 @@ enum class SplitReason : std::uint8_t
                           ///< embedding check of the output (SurfaceEmbedding.h): split when
                           ///< the subdivision ran again (CellRepair.h), or a leaf so marked
                           ///< where no repair round could split it
-  CreaseNotFollowed = 12, ///< cell of one mesh larger than the tolerance whose fan, within
-                          ///< the tolerance of the mesh, would not draw one of its creases,
-                          ///< around its apex or a point of a crease (CreaseFollowing.h)
+  CreaseNotFollowed = 12, ///< cell of one mesh larger than the tolerance whose fan would
+                          ///< not draw one of its creases, around its apex or a point of
+                          ///< a crease (CreaseFollowing.h): its fan within the tolerance of
+                          ///< the mesh, or no fan following them (asked first:
+                          ///< MeshCellError.h, Creases first)
   PatchNotCertified = 13  ///< cell larger than the tolerance whose final patch (after crack
                           ///< patching) a run found beyond the tolerance or could not
                           ///< certify: split when the subdivision ran again (CellRepair.h)

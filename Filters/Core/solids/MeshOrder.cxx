@@ -1,6 +1,7 @@
 #include "MeshOrder.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <utility>
 
@@ -42,15 +43,15 @@ std::uint64_t Spread(std::uint64_t v)
   return v;
 }
 
-/// The Morton code of `p` on a 2^21 grid over `box` (a NaN coordinate, or
-/// one outside the box, clamped to its ends).
+/// The Morton code of `p` on a 2^21 grid over `box` (a coordinate outside
+/// it, or not a number, clamped to its ends or taken as its lower end).
 std::uint64_t MortonCode(const Vec3& p, const Box3& box)
 {
   std::uint64_t code = 0;
   for (int a = 0; a < 3; ++a)
   {
     const double width = box.Width(a);
-    const double t = width > 0.0 ? (p[a] - box.lo[a]) / width : 0.0;
+    const double t = width > 0.0 && std::isfinite(width) ? (p[a] - box.lo[a]) / width : 0.0;
     const double cell = std::clamp(std::isnan(t) ? 0.0 : t, 0.0, 1.0) * 2097151.0;
     code |= Spread(static_cast<std::uint64_t>(cell)) << a;
   }
@@ -67,7 +68,7 @@ bool InLocalOrder(const std::vector<Vec3>& points, const std::vector<std::array<
   std::vector<double> jumps, edges;
   jumps.reserve(triangles.size() - 1);
   edges.reserve(triangles.size());
-  Vec3 previous = Centroid(points, triangles[0]);
+  Vec3 previous;
   for (std::size_t k = 0; k < triangles.size(); ++k)
   {
     const std::array<std::uint32_t, 3>& t = triangles[k];
@@ -88,20 +89,28 @@ void OrderAlongMortonCurve(std::vector<Vec3>& points, std::vector<std::array<std
   std::vector<std::array<std::uint32_t, 3>>& neighbours, std::uint32_t none)
 {
   const std::size_t n = triangles.size();
-  Box3 box{ points.empty() ? Vec3() : points[0], points.empty() ? Vec3() : points[0] };
-  for (const Vec3& p : points)
+  assert(n < none && (neighbours.empty() || neighbours.size() == n));
+  // The curve over the box of the centroids' finite coordinates (a point no
+  // triangle uses, or a non-finite one, would only squeeze it).
+  std::vector<Vec3> centroids(n);
+  Box3 box{ Vec3(HUGE_VAL, HUGE_VAL, HUGE_VAL), Vec3(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL) };
+  for (std::uint32_t t = 0; t < n; ++t)
   {
+    centroids[t] = Centroid(points, triangles[t]);
     for (int a = 0; a < 3; ++a)
     {
-      box.lo[a] = std::min(box.lo[a], p[a]);
-      box.hi[a] = std::max(box.hi[a], p[a]);
+      if (std::isfinite(centroids[t][a]))
+      {
+        box.lo[a] = std::min(box.lo[a], centroids[t][a]);
+        box.hi[a] = std::max(box.hi[a], centroids[t][a]);
+      }
     }
   }
   // The triangles by (code, old index): the new order, deterministic.
   std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(n);
   for (std::uint32_t t = 0; t < n; ++t)
   {
-    keyed[t] = { MortonCode(Centroid(points, triangles[t]), box), t };
+    keyed[t] = { MortonCode(centroids[t], box), t };
   }
   std::sort(keyed.begin(), keyed.end());
   std::vector<std::uint32_t> newTriangle(n);
@@ -135,7 +144,7 @@ void OrderAlongMortonCurve(std::vector<Vec3>& points, std::vector<std::array<std
       reorderedPoints.push_back(points[v]);
     }
   }
-  if (neighbours.size() == n)
+  if (!neighbours.empty())
   {
     std::vector<std::array<std::uint32_t, 3>> renamed(n);
     for (std::uint32_t k = 0; k < n; ++k)

@@ -7,13 +7,13 @@
 // runs; where the order has no locality - armadillo's (a scan): consecutive
 // triangles a quarter of the diagonal apart, their vertices a thousand
 // entries apart - every triangle and vertex read is a cache miss. Measured
-// (2026-12-06, one thread, the filter's time at 1/64): armadillo reordered
-// along a Morton curve took 0.85-0.88 of the time, CGAL's knots 0.95, with
-// as many instructions (within 0.5 %); meshes exported in a local order -
-// a CAD part's triangles patch by patch: the turbine, fandisk,
-// couplingdown, whose consecutive triangles are about an edge apart - took
-// 1.00-1.07 of the time reordered. So only a mesh whose order is not local
-// (InLocalOrder) is reordered.
+// (2026-12-06): armadillo reordered so takes 0.87, 0.93 and 0.95 of the
+// time at 1/64, 1/128 and 1/256 (2 threads; with 1.4 % more instructions at
+// 1/64 - other ties, below), CGAL's knots 0.95 (one thread, 1/64); meshes
+// exported in a local order - a CAD part's triangles patch by patch: the
+// turbine, fandisk, couplingdown, whose consecutive triangles are about an
+// edge apart - took 1.00-1.07 of the time reordered (one thread, 1/64). So
+// only a mesh whose order is not local (InLocalOrder) is reordered.
 //
 // The reordering changes no geometry: the same points and triangles, each
 // triangle's corners in the same order (its orientation and its edges'

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 using tpc::Vec3;
@@ -85,15 +86,61 @@ TEST(MeshOrder, AMeshInNoLocalOrderIsReorderedAlongAMortonCurve)
   EXPECT_EQ(points.back()[2], 7.0);
   // The points in the order the triangles first use them; the neighbours
   // those of the reordered mesh.
-  EXPECT_EQ(triangles[0], (std::array<std::uint32_t, 3>{ 0, 1, 2 }));
+  std::uint32_t named = 0;
+  for (const auto& t : triangles)
+  {
+    for (const std::uint32_t v : t)
+    {
+      ASSERT_LE(v, named) << "a point named before its first use";
+      named = std::max(named, v + 1);
+    }
+  }
+  EXPECT_EQ(named, sphere.Points().size());
   EXPECT_EQ(neighbours, Neighbours(tpc::MeshSolid(points, triangles)));
-  // Consecutive triangles near each other: a Morton curve's runs.
-  double far = 0.0;
+  // Consecutive triangles near each other, as along a Morton curve: a jump
+  // of a tenth of the sphere's diameter is rare (330 of 5 119; shuffled,
+  // 5 076 are), the median jump about an edge (0.08; 1.4 shuffled).
+  std::vector<double> jumps;
   for (std::size_t k = 0; k + 1 < triangles.size(); ++k)
   {
-    far += tpc::Norm(points[triangles[k][0]] - points[triangles[k + 1][0]]) > 0.5 ? 1.0 : 0.0;
+    jumps.push_back(tpc::Norm(points[triangles[k][0]] - points[triangles[k + 1][0]]));
   }
-  EXPECT_LT(far, 0.02 * static_cast<double>(triangles.size()));
+  EXPECT_LT(std::count_if(jumps.begin(), jumps.end(), [](double j) { return j > 0.2; }), 512);
+  std::nth_element(jumps.begin(), jumps.begin() + jumps.size() / 2, jumps.end());
+  EXPECT_LT(jumps[jumps.size() / 2], 0.1);
+}
+
+TEST(MeshOrder, PointsNotANumberLeaveTheCurveOverTheOthers)
+{
+  // A triangle with a NaN corner (the core takes what it is given: the VTK
+  // layer refuses non-finite points) keeps every other triangle's code on
+  // the finite centroids' box; the renaming stays a permutation.
+  std::vector<Vec3> points;
+  Tris triangles;
+  ShuffledSphere(points, triangles);
+  points.push_back(Vec3(std::nan(""), 0.0, 0.0));
+  triangles.push_back({ 0, 1, static_cast<std::uint32_t>(points.size() - 1) });
+  Tris none;
+  tpc::OrderAlongMortonCurve(points, triangles, none, tpc::MeshSolid::NoTriangle);
+  EXPECT_TRUE(none.empty());
+  std::vector<int> uses(points.size(), 0);
+  for (const auto& t : triangles)
+  {
+    for (const std::uint32_t v : t)
+    {
+      ASSERT_LT(v, points.size());
+      uses[v] = 1;
+    }
+  }
+  EXPECT_EQ(std::count(uses.begin(), uses.end(), 1), static_cast<long>(points.size()));
+  triangles.pop_back(); // (somewhere in the order; the sphere's alone are tested above)
+  std::vector<double> jumps;
+  for (std::size_t k = 0; k + 1 < triangles.size(); ++k)
+  {
+    jumps.push_back(tpc::Norm(points[triangles[k][0]] - points[triangles[k + 1][0]]));
+  }
+  std::nth_element(jumps.begin(), jumps.begin() + jumps.size() / 2, jumps.end());
+  EXPECT_LT(jumps[jumps.size() / 2], 0.1);
 }
 
 TEST(MeshOrder, RepairIntoSolidReordersOnlyAMeshInNoLocalOrder)

@@ -2,6 +2,7 @@
 // triangles, inverted or nested shells) and what is reported (open edges,
 // self-intersections), with exact triangle intersection tests.
 #include "MeshBuilders.h"
+#include "MeshOrder.h"
 #include "MeshRepair.h"
 #include "SelfIntersection.h"
 
@@ -117,6 +118,9 @@ TEST(MeshRepair, RepairedIntoASolidAsRepairedThenBuilt)
     Tris repairedTriangles = t;
     const tpc::MeshRepairReport expected = tpc::RepairMesh(repairedPoints, repairedTriangles);
     const tpc::MeshSolid own(repairedPoints, repairedTriangles);
+    // (In a local order, which RepairIntoSolid keeps: a mesh in none is
+    // renamed along a Morton curve, TestMeshOrder.cxx.)
+    ASSERT_TRUE(tpc::InLocalOrder(repairedPoints, repairedTriangles));
     tpc::MeshRepairReport report;
     const tpc::MeshSolid solid = tpc::RepairIntoSolid(p, t, report);
     EXPECT_EQ(report.Describe(), expected.Describe());
