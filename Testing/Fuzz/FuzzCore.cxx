@@ -9,7 +9,9 @@
 //   2. a mesh from the bytes: a valid mesh (icosphere, torus, cube) randomly
 //      perturbed, with triangles dropped, duplicated or flipped and vertices
 //      moved or merged - or plain random triangles - in a shuffled order
-//      where their number is odd (then reordered: MeshOrder.h);
+//      where their number is odd (the 320-triangle icosphere's then reordered
+//      along a Morton curve, MeshOrder.h; the smaller ones still count as in
+//      a local order);
 //   3. a valid mesh combined with primitives.
 // About half the inputs are decimated (Decimate: CertifiedDecimation.h),
 // with the same properties required of the decimated surface.
@@ -224,8 +226,8 @@ bool MeshFromBytes(FuzzedDataProvider& in, tpc::MeshSolid& solid, tpc::MeshRepai
   }
   // The meshes of an odd number of triangles shuffled - decided by their
   // size, which reads no byte, so that the inputs kept for regressions read
-  // as before - and repaired as the filter repairs them: the shuffled ones
-  // then come in no local order and are reordered (MeshOrder.h).
+  // as before - and repaired as the filter repairs them, which reorders those
+  // then in no local order (MeshOrder.h).
   if (triangles.size() % 2 == 1)
   {
     std::mt19937 random(static_cast<std::uint32_t>(triangles.size()));
