@@ -307,7 +307,8 @@ HausdorffEstimate CertifiedSurfacePatchError(const PolygonSet& onSurface, const 
     targets.Add({ t[0], t[1], t[2] });
   }
   const HausdorffEstimate toPatch =
-    OneSidedHausdorff(pieces, targets, enough - slack, giveUp - slack, budget, { nullptr, patchOffsets });
+    OneSidedHausdorff(pieces, targets, enough - slack, giveUp - slack, budget, { nullptr, patchOffsets }, nullptr,
+      toSurface.Lower); // (error.Lower and error.Upper take the maximum with it)
   error.Lower = std::max(error.Lower, toPatch.Lower);
   const double upper = std::max(toSurface.Upper, toPatch.Upper) + slack;
   error.Upper = upper <= giveUp ? upper : HUGE_VAL;

@@ -522,6 +522,59 @@ bool SettledByCommonNearest(Piece& piece, double settle, const Targets& targets,
   return true;
 }
 
+/// A piece settled by a target one of its known corners is nearest to, or
+/// `guess` (the last source's single target, or its parent's), without a
+/// search (header: Known targets): where the single-target bound (1) of one
+/// of them, max_i (d(v_i, Q_t) + p_t) plus the piece's offset, is at most
+/// both `settle` and `lower` (the largest offset distance found at a vertex
+/// so far, or the caller's attainedElsewhere), the piece is settled with it
+/// as its bound; then true. Within the former, neither the branch and
+/// bound's result changes - the
+/// piece is never split (at most `settle`), its corners' g are at most that
+/// bound hence at most `lower` (no corner of it raises the lower bound), and
+/// its bound, at most `lower`, is below the result: every remaining piece's
+/// bound is at least g at its corners, and a corner attaining the final
+/// lower bound is one of them - nor does anything else, where witnesses are
+/// not asked for (among targets giving a bound the search may name
+/// another). Most of S_C's triangles against a fan settle so once the lower
+/// bound is that of the fan's farthest points: a corner shared with the
+/// sources before them gives their target, and the search over every
+/// target, with the new corners' nearest, is saved.
+bool SettledByKnownTarget(Piece& piece, std::uint32_t guess, double settle, const Targets& targets, double lower)
+{
+  const double limit = std::min(settle, lower);
+  if (!targets.CommonNearestSettles || !(piece.Offset <= limit))
+  {
+    return false;
+  }
+  std::array<std::uint32_t, 4> tried{ piece.NearestTarget[0], piece.NearestTarget[1], piece.NearestTarget[2], guess };
+  for (std::size_t k = 0; k < tried.size(); ++k)
+  {
+    const std::uint32_t t = tried[k];
+    if (t == SingleTargetWitness::None || std::find(tried.begin(), tried.begin() + k, t) != tried.begin() + k)
+    {
+      continue;
+    }
+    const double offset = targets.Offsets ? (*targets.Offsets)[t] : 0.0;
+    double worst = 0.0;
+    for (int i = 0; i < 3 && worst + piece.Offset <= limit; ++i)
+    {
+      const bool known = piece.NearestTarget[i] == t;
+      worst = std::max(worst, known ? piece.Nearest[i] : OffsetDistance(targets.Polygons, piece.Vertices[i], t, offset));
+    }
+    if (worst + piece.Offset <= limit)
+    {
+      piece.UpperOfG = piece.Single = worst;
+      piece.Upper = worst + piece.Offset;
+      piece.SingleTarget = t;
+      piece.First = targets.Arena.size();
+      piece.Count = 0;
+      return true;
+    }
+  }
+  return false;
+}
+
 /// The piece's bound ((1) and (2) of the header; its source's offset added)
 /// from the targets among the candidates (`count` entries of the arena from
 /// `first`) that may be nearest to one of its points (box distance plus
@@ -757,7 +810,7 @@ void HausdorffTargets::Prepare(const PolygonSet& polygons, const std::vector<dou
 
 HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
   const PolygonSet& targets, double enough, double giveUp, std::size_t budget,
-  const DistanceOffsets& offsets, std::vector<SingleTargetWitness>* witnesses)
+  const DistanceOffsets& offsets, std::vector<SingleTargetWitness>* witnesses, double attainedElsewhere)
 {
   // (Prepared for this call alone, in memory kept across calls; the
   // hierarchy only where it is searched - not where witnesses are asked for.)
@@ -771,12 +824,12 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
   }
   thread_local HausdorffTargets prepared;
   prepared.Prepare(targets, offsets.Targets, witnesses == nullptr);
-  return OneSidedHausdorff(sources, prepared, enough, giveUp, budget, offsets.Sources, witnesses);
+  return OneSidedHausdorff(sources, prepared, enough, giveUp, budget, offsets.Sources, witnesses, attainedElsewhere);
 }
 
 HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
   const HausdorffTargets& prepared, double enough, double giveUp, std::size_t budget,
-  const std::vector<double>* sourceOffsets, std::vector<SingleTargetWitness>* witnesses)
+  const std::vector<double>* sourceOffsets, std::vector<SingleTargetWitness>* witnesses, double attainedElsewhere)
 {
   HausdorffEstimate estimate;
   if (witnesses)
@@ -825,8 +878,16 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
     queue.push_back(piece);
     std::push_heap(queue.begin(), queue.end());
   };
-  for (std::size_t k = 0; k < sources.size(); ++k)
-  {
+  // Each source evaluated in order, or settled by a target its corners or
+  // the last source gave (SettledByKnownTarget) within the lower bound found
+  // so far or `attainedElsewhere`; those settled above the former wait in
+  // `deferred`: where no piece is left to split, their bounds count as they
+  // are, else they are evaluated again before the splits, so that the lower
+  // bound the splits stop at is the one found without `attainedElsewhere`.
+  std::uint32_t guess = SingleTargetWitness::None;
+  thread_local std::vector<std::pair<std::size_t, double>> deferred; // (source, bound)
+  deferred.clear();
+  const auto evaluateSource = [&](std::size_t k, double floor) {
     Piece piece{ sources[k], 0, 0, HUGE_VAL, HUGE_VAL, offsets.Sources ? (*offsets.Sources)[k] : 0.0 };
     std::array<CornerDistances::Slot*, 3> slots;
     for (int i = 0; i < 3; ++i)
@@ -836,7 +897,20 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
       piece.Nearest[i] = known ? slots[i]->G : HUGE_VAL;
       piece.NearestTarget[i] = known ? slots[i]->Target : SingleTargetWitness::None;
     }
-    evaluate(piece, 0, targets.size(), HUGE_VAL, settle, context, estimate.Lower);
+    if (SettledByKnownTarget(piece, guess, settle, context, std::max(estimate.Lower, floor)))
+    {
+      guess = piece.SingleTarget;
+      if (piece.Upper > estimate.Lower)
+      {
+        deferred.emplace_back(k, piece.Upper);
+        return;
+      }
+    }
+    else
+    {
+      evaluate(piece, 0, targets.size(), HUGE_VAL, settle, context, estimate.Lower);
+      guess = piece.SingleTarget != SingleTargetWitness::None ? piece.SingleTarget : guess;
+    }
     for (int i = 0; i < 3; ++i)
     {
       // (Where two corners of the piece found the same free slot - equal, or
@@ -851,6 +925,22 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
       (*witnesses)[k] = { piece.SingleTarget, piece.Single + piece.Offset };
     }
     keep(piece);
+  };
+  for (std::size_t k = 0; k < sources.size(); ++k)
+  {
+    evaluateSource(k, attainedElsewhere);
+  }
+  const bool splits = !queue.empty();
+  for (std::size_t d = 0, count = deferred.size(); d < count; ++d)
+  {
+    if (splits)
+    {
+      evaluateSource(deferred[d].first, 0.0); // (never deferred again)
+    }
+    else
+    {
+      settledUpper = std::max(settledUpper, deferred[d].second);
+    }
   }
   std::size_t evaluated = sources.size();
   while (!queue.empty() && evaluated < budget && estimate.Lower <= giveUp)
@@ -882,6 +972,11 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
         parent.Offset };
       piece.Nearest = { g[child[0]], g[child[1]], g[child[2]] };
       piece.NearestTarget = { nearestTarget[child[0]], nearestTarget[child[1]], nearestTarget[child[2]] };
+      if (SettledByKnownTarget(piece, parent.SingleTarget, settle, context, estimate.Lower))
+      {
+        keep(piece);
+        continue;
+      }
       evaluate(piece, parent.First, parent.Count, parent.UpperOfG, settle, context, estimate.Lower);
       for (int i = 0; i < 3; ++i)
       {

@@ -744,6 +744,103 @@ TEST(PolygonHausdorff, ManyTargetsSearchedInAHierarchyBoundAsTheirScanWould)
   }
 }
 
+TEST(PolygonHausdorff, ABoundAttainedElsewhereChangesNeitherMaximum)
+{
+  // A caller that takes the maximum with a value attained elsewhere (the
+  // other direction's Lower: CertifiedSurfacePatchError) passes it, and
+  // sources whose single-target bound is within it settle without a search
+  // (PolygonHausdorff.cxx, SettledByKnownTarget). The maxima with it of Upper
+  // and of Lower must be those without it, bit for bit: small triangles over
+  // a fan's few large ones (where most settle so) and crumpled sheets both
+  // ways (scanned and searched in the hierarchy), with and without offsets,
+  // with every piece settled at once, with pieces split (the sources settled
+  // within that value alone are then searched before the splits), stopping
+  // at giveUp or for the budget; values from 0 to above Upper.
+  std::mt19937 random(41);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<SourceTriangle> bumps, fan;
+  BumpsUnderAFan(12, bumps, fan);
+  const std::vector<SourceTriangle> fine = CrumpledSheet(7, 0.0, random);
+  const std::vector<SourceTriangle> coarse = CrumpledSheet(6, 0.03, random);
+  const std::vector<std::pair<std::vector<SourceTriangle>, std::vector<SourceTriangle>>> pairs{ { bumps, fan },
+    { fine, coarse }, { coarse, fine } };
+  std::size_t changed = 0; // (calls whose Upper or Lower the value changed: it was used)
+  for (std::size_t c = 0; c < pairs.size(); ++c)
+  {
+    const auto& [from, to] = pairs[c];
+    const tpc::PolygonSet targets = AsPolygons(to);
+    std::vector<double> o(from.size()), p(targets.size());
+    for (double& x : o)
+    {
+      x = 0.02 * unit(random);
+    }
+    for (double& x : p)
+    {
+      x = 0.01 + 0.02 * unit(random);
+    }
+    for (const bool withOffsets : { false, true })
+    {
+      const tpc::DistanceOffsets offsets = withOffsets ? tpc::DistanceOffsets{ &o, &p } : tpc::DistanceOffsets{};
+      const tpc::HausdorffEstimate first = tpc::OneSidedHausdorff(from, targets, 0.0, HUGE_VAL, 200000, offsets);
+      for (const double enough : { 0.0, 0.5 * first.Lower, 2.0 * first.Upper })
+      for (const double giveUp : { HUGE_VAL, 1.03 * first.Upper })
+      for (const std::size_t budget : { std::size_t{ 200000 }, std::size_t{ 40 } })
+      {
+        const tpc::HausdorffEstimate plain = tpc::OneSidedHausdorff(from, targets, enough, giveUp, budget, offsets);
+        for (const double elsewhere : { 0.0, 0.5 * plain.Lower, plain.Lower, 0.5 * (plain.Lower + plain.Upper),
+               plain.Upper, 2.0 * plain.Upper })
+        {
+          const tpc::HausdorffEstimate e =
+            tpc::OneSidedHausdorff(from, targets, enough, giveUp, budget, offsets, nullptr, elsewhere);
+          const std::string what = "pair " + std::to_string(c) + (withOffsets ? ", offsets" : "") + ", enough " +
+            std::to_string(enough) + ", give up " + std::to_string(giveUp) + ", budget " +
+            std::to_string(budget) + ", elsewhere " + std::to_string(elsewhere);
+          EXPECT_EQ(std::max(elsewhere, e.Upper), std::max(elsewhere, plain.Upper)) << what;
+          EXPECT_EQ(std::max(elsewhere, e.Lower), std::max(elsewhere, plain.Lower)) << what;
+          changed += e.Upper != plain.Upper || e.Lower != plain.Lower ? 1 : 0;
+        }
+      }
+    }
+  }
+  EXPECT_GT(changed, 0u);
+  // Where pieces are split, the splits stop within 10 % of the lower bound
+  // found: sources settled within the value alone must be searched first, or
+  // the lower bound would be lower and the splits go on. A large triangle
+  // over a pyramid it touches at its corners (split for its middle, less
+  // than `enough` from the pyramid), and a row of small triangles rising from
+  // 0.05 to `enough` over a square target, each settled by the target the
+  // last one was (within the value, not within the lower bound found so
+  // far): the splits stop within 10 % of `enough` (searched without the
+  // value, they would go on to `enough`: checked).
+  std::size_t stoppedAbove = 0; // (cases whose Upper stopped above `enough`: where it matters)
+  for (const double depth : { 0.03, 0.035, 0.04, 0.042, 0.045 })
+  {
+    const double enough = 0.1;
+    const Vec3 a(0, 0, 0), b(1, 0, 0), c(0, 1, 0), middle = (a + b + c) * (1.0 / 3.0);
+    // (The pyramid's faces are tilted: the centroid is 2 depth / sqrt(1 +
+    // 36 depth^2) from them, 0.06 to 0.08, so the lower bound the large
+    // triangle's pieces come upon stays below 0.1 / 1.1.)
+    const Vec3 apex = middle - Vec3(0, 0, 2.0 * depth);
+    std::vector<SourceTriangle> from{ { a, b, c } };
+    std::vector<SourceTriangle> to{ { a, b, apex }, { b, c, apex }, { c, a, apex }, { Vec3(4, 0, 0), Vec3(6, 0, 0),
+      Vec3(6, 2, 0) } };
+    for (int k = 0; k <= 10; ++k)
+    {
+      const double x = 4.5 + 0.1 * k, z = 0.05 + 0.005 * k;
+      from.push_back({ Vec3(x, 0.2, z), Vec3(x + 0.05, 0.2, z), Vec3(x + 0.05, 0.25, z) });
+    }
+    const tpc::PolygonSet targets = AsPolygons(to);
+    const tpc::HausdorffEstimate plain = tpc::OneSidedHausdorff(from, targets, enough, HUGE_VAL, 200000);
+    const tpc::HausdorffEstimate e =
+      tpc::OneSidedHausdorff(from, targets, enough, HUGE_VAL, 200000, {}, nullptr, enough);
+    EXPECT_EQ(std::max(enough, e.Upper), std::max(enough, plain.Upper)) << depth;
+    EXPECT_EQ(std::max(enough, e.Lower), std::max(enough, plain.Lower)) << depth;
+    EXPECT_GE(plain.Upper, SampledHausdorff(from, to) * (1 - 1e-12)) << depth;
+    stoppedAbove += plain.Upper > enough ? 1 : 0;
+  }
+  EXPECT_GT(stoppedAbove, 0u);
+}
+
 TEST(PolygonHausdorff, PreparedTargetsBoundAsEachCallWould)
 {
   // Targets prepared once (HausdorffTargets: their boxes and hierarchy) and
