@@ -308,7 +308,7 @@ HausdorffEstimate CertifiedSurfacePatchError(const PolygonSet& onSurface, const 
   }
   const HausdorffEstimate toPatch =
     OneSidedHausdorff(pieces, targets, enough - slack, giveUp - slack, budget, { nullptr, patchOffsets }, nullptr,
-      toSurface.Lower); // (error.Lower and error.Upper take the maximum with it)
+      toSurface.Lower); // (error.Lower takes the maximum with it, error.Upper with toSurface.Upper, at least it)
   error.Lower = std::max(error.Lower, toPatch.Lower);
   const double upper = std::max(toSurface.Upper, toPatch.Upper) + slack;
   error.Upper = upper <= giveUp ? upper : HUGE_VAL;

@@ -481,7 +481,9 @@ struct Targets
   std::vector<std::pair<double, std::uint32_t>>& InReach;
   std::vector<std::uint32_t>& Arena;
   const std::vector<double>* Offsets; ///< per target; null for zeros
-  bool CommonNearestSettles; ///< Evaluate's shortcut allowed (no witnesses asked for)
+  /// Pieces may settle without a search (SettledByCommonNearest,
+  /// SettledByKnownTarget): no witnesses asked for.
+  bool CommonNearestSettles;
   /// Searched instead of the candidates (EvaluateInHierarchy); null where
   /// the targets are few.
   const TargetHierarchy* Hierarchy;
@@ -493,6 +495,17 @@ struct Targets
     return WithOffsets ? (*this->Offsets)[t] : 0.0;
   }
 };
+
+/// Settles `piece` with the single-target bound (1) `single` of g, attained
+/// at target `target`: its bound, and no candidates kept (never split).
+void SettleWith(Piece& piece, double single, std::uint32_t target, const Targets& targets)
+{
+  piece.UpperOfG = piece.Single = single;
+  piece.Upper = single + piece.Offset;
+  piece.SingleTarget = target;
+  piece.First = targets.Arena.size();
+  piece.Count = 0;
+}
 
 /// Every corner known and nearest to one target t: the single-target bound
 /// (1) is then max_i g(v_i), attained at t, and nothing is below it (it is
@@ -513,33 +526,28 @@ bool SettledByCommonNearest(Piece& piece, double settle, const Targets& targets,
   {
     return false;
   }
-  piece.UpperOfG = piece.Single = vertexMax;
-  piece.Upper = vertexMax + piece.Offset;
-  piece.SingleTarget = near[0];
+  SettleWith(piece, vertexMax, near[0], targets);
   lower = std::max(lower, vertexMax + piece.Offset);
-  piece.First = targets.Arena.size();
-  piece.Count = 0;
   return true;
 }
 
-/// A piece settled by a target one of its known corners is nearest to, or
-/// `guess` (the last source's single target, or its parent's), without a
-/// search (header: Known targets): where the single-target bound (1) of one
-/// of them, max_i (d(v_i, Q_t) + p_t) plus the piece's offset, is at most
-/// both `settle` and `lower` (the largest offset distance found at a vertex
-/// so far, or the caller's attainedElsewhere), the piece is settled with it
-/// as its bound; then true. Within the former, neither the branch and
-/// bound's result changes - the
-/// piece is never split (at most `settle`), its corners' g are at most that
-/// bound hence at most `lower` (no corner of it raises the lower bound), and
-/// its bound, at most `lower`, is below the result: every remaining piece's
-/// bound is at least g at its corners, and a corner attaining the final
-/// lower bound is one of them - nor does anything else, where witnesses are
-/// not asked for (among targets giving a bound the search may name
-/// another). Most of S_C's triangles against a fan settle so once the lower
-/// bound is that of the fan's farthest points: a corner shared with the
-/// sources before them gives their target, and the search over every
-/// target, with the new corners' nearest, is saved.
+/// A piece settled without a search (header: Known targets) by a target one
+/// of its known corners is nearest to, or `guess` (the last source's single
+/// target, or its parent's): where the single-target bound (1) of one of
+/// them, max_i (d(v_i, Q_t) + p_t), plus the piece's offset is at most both
+/// `settle` and `lower`, it is the piece's bound; then true. `lower` is the
+/// largest offset distance found at a vertex so far - or, for a source, its
+/// maximum with the caller's attainedElsewhere. Within the former the
+/// result is the same in exact arithmetic: the piece is never split (at
+/// most `settle`); its corners' g are at most its bound, hence at most
+/// `lower`, so none raises the lower bound; and its bound, at most `lower`,
+/// is at most the result, every remaining piece's bound being at least g at
+/// its corners, one of which attains the final lower bound. (Computed, a
+/// corner's g may differ by an ulp with the order of the searches, as in
+/// Evaluate: the same bit for bit on the tests and scenes compared.) Most of
+/// S_C's triangles against a fan settle so: a corner shared with the sources
+/// before them gives their target, and the search over every target, with
+/// the new corners' nearest, is saved.
 bool SettledByKnownTarget(Piece& piece, std::uint32_t guess, double settle, const Targets& targets, double lower)
 {
   const double limit = std::min(settle, lower);
@@ -560,15 +568,12 @@ bool SettledByKnownTarget(Piece& piece, std::uint32_t guess, double settle, cons
     for (int i = 0; i < 3 && worst + piece.Offset <= limit; ++i)
     {
       const bool known = piece.NearestTarget[i] == t;
-      worst = std::max(worst, known ? piece.Nearest[i] : OffsetDistance(targets.Polygons, piece.Vertices[i], t, offset));
+      worst =
+        std::max(worst, known ? piece.Nearest[i] : OffsetDistance(targets.Polygons, piece.Vertices[i], t, offset));
     }
     if (worst + piece.Offset <= limit)
     {
-      piece.UpperOfG = piece.Single = worst;
-      piece.Upper = worst + piece.Offset;
-      piece.SingleTarget = t;
-      piece.First = targets.Arena.size();
-      piece.Count = 0;
+      SettleWith(piece, worst, t, targets);
       return true;
     }
   }
@@ -887,7 +892,7 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
   std::uint32_t guess = SingleTargetWitness::None;
   thread_local std::vector<std::pair<std::size_t, double>> deferred; // (source, bound)
   deferred.clear();
-  const auto evaluateSource = [&](std::size_t k, double floor) {
+  const auto evaluateSource = [&](std::size_t k, double attained) {
     Piece piece{ sources[k], 0, 0, HUGE_VAL, HUGE_VAL, offsets.Sources ? (*offsets.Sources)[k] : 0.0 };
     std::array<CornerDistances::Slot*, 3> slots;
     for (int i = 0; i < 3; ++i)
@@ -897,7 +902,7 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
       piece.Nearest[i] = known ? slots[i]->G : HUGE_VAL;
       piece.NearestTarget[i] = known ? slots[i]->Target : SingleTargetWitness::None;
     }
-    if (SettledByKnownTarget(piece, guess, settle, context, std::max(estimate.Lower, floor)))
+    if (SettledByKnownTarget(piece, guess, settle, context, std::max(estimate.Lower, attained)))
     {
       guess = piece.SingleTarget;
       if (piece.Upper > estimate.Lower)

@@ -52,7 +52,10 @@
 // search for its new corners' nearest: neither bound returned changes, since
 // its corners are no farther than the lower bound, and every piece left has
 // a bound at least g at its corners, one of which attains the final lower
-// bound (PolygonHausdorff.cxx, SettledByKnownTarget; witnesses turn it off).
+// bound (PolygonHausdorff.cxx, SettledByKnownTarget; witnesses turn it off):
+// the same in exact arithmetic and, computed, bit for bit on the tests and
+// scenes compared (a corner's g may differ by an ulp with the order of the
+// searches, as the hierarchy's may).
 // A caller that takes the maximum with a value attained elsewhere may pass it
 // (attainedElsewhere): sources are then settled within it too, and where
 // pieces are left to split, those settled above the lower bound are searched
@@ -166,7 +169,8 @@ private:
 /// bounded: CertifiedSurfacePatchError). Sources whose single-target bound is
 /// within it are then settled without a search (header: Known targets), so
 /// Upper and Lower may differ where they are below it: max(attainedElsewhere,
-/// Upper) and max(attainedElsewhere, Lower) are those without it.
+/// Upper) and max(attainedElsewhere, Lower) are those without it (as the
+/// header says of the shortcut), and Upper is an upper bound all the same.
 HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
   const PolygonSet& targets, double enough, double giveUp, std::size_t budget = 4096,
   const DistanceOffsets& offsets = {}, std::vector<SingleTargetWitness>* witnesses = nullptr,

@@ -75,6 +75,25 @@ double SampledHausdorff(const std::vector<SourceTriangle>& sources, const std::v
   return worst;
 }
 
+/// Offsets for the branch and bound's tests, drawn from `random`: up to 0.02
+/// for each of `sources`, 0.01 to 0.03 for each of `targets` (none near 0: a
+/// hierarchy node's least offset matters).
+void RandomOffsets(std::mt19937& random, std::size_t sources, std::size_t targets, std::vector<double>& o,
+  std::vector<double>& p)
+{
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  o.resize(sources);
+  p.resize(targets);
+  for (double& x : o)
+  {
+    x = 0.02 * unit(random);
+  }
+  for (double& x : p)
+  {
+    x = 0.01 + 0.02 * unit(random);
+  }
+}
+
 /// A bumpy height field over the unit square, n x n squares of two
 /// triangles each, and a fan of four triangles over the square's sides from
 /// an apex just above its middle: large sources over a fine, non-convex
@@ -700,15 +719,8 @@ TEST(PolygonHausdorff, ManyTargetsSearchedInAHierarchyBoundAsTheirScanWould)
         spacing = std::max(spacing, tpc::Norm(t[(e + 1) % 3] - t[e]) / 40.0);
       }
     }
-    std::vector<double> o(c.From.size()), p(c.Targets.size());
-    for (double& x : o)
-    {
-      x = 0.02 * unit(random);
-    }
-    for (double& x : p)
-    {
-      x = 0.01 + 0.02 * unit(random); // (none near 0: a node's least offset matters)
-    }
+    std::vector<double> o, p;
+    RandomOffsets(random, c.From.size(), c.Targets.size(), o, p);
     struct Stop
     {
       double Enough, GiveUp;
@@ -769,15 +781,9 @@ TEST(PolygonHausdorff, ABoundAttainedElsewhereChangesNeitherMaximum)
   {
     const auto& [from, to] = pairs[c];
     const tpc::PolygonSet targets = AsPolygons(to);
-    std::vector<double> o(from.size()), p(targets.size());
-    for (double& x : o)
-    {
-      x = 0.02 * unit(random);
-    }
-    for (double& x : p)
-    {
-      x = 0.01 + 0.02 * unit(random);
-    }
+    const double sampled = SampledHausdorff(from, to);
+    std::vector<double> o, p;
+    RandomOffsets(random, from.size(), targets.size(), o, p);
     for (const bool withOffsets : { false, true })
     {
       const tpc::DistanceOffsets offsets = withOffsets ? tpc::DistanceOffsets{ &o, &p } : tpc::DistanceOffsets{};
@@ -797,6 +803,10 @@ TEST(PolygonHausdorff, ABoundAttainedElsewhereChangesNeitherMaximum)
             std::to_string(budget) + ", elsewhere " + std::to_string(elsewhere);
           EXPECT_EQ(std::max(elsewhere, e.Upper), std::max(elsewhere, plain.Upper)) << what;
           EXPECT_EQ(std::max(elsewhere, e.Lower), std::max(elsewhere, plain.Lower)) << what;
+          if (!withOffsets)
+          {
+            EXPECT_GE(e.Upper, sampled * (1 - 1e-12)) << what; // (an upper bound all the same)
+          }
           changed += e.Upper != plain.Upper || e.Lower != plain.Lower ? 1 : 0;
         }
       }
@@ -810,8 +820,9 @@ TEST(PolygonHausdorff, ABoundAttainedElsewhereChangesNeitherMaximum)
   // than `enough` from the pyramid), and a row of small triangles rising from
   // 0.05 to `enough` over a square target, each settled by the target the
   // last one was (within the value, not within the lower bound found so
-  // far): the splits stop within 10 % of `enough` (searched without the
-  // value, they would go on to `enough`: checked).
+  // far): the splits stop within 10 % of `enough` (without those sources
+  // searched again before the splits, they would go on to `enough`:
+  // checked).
   std::size_t stoppedAbove = 0; // (cases whose Upper stopped above `enough`: where it matters)
   for (const double depth : { 0.03, 0.035, 0.04, 0.042, 0.045 })
   {
@@ -864,15 +875,8 @@ TEST(PolygonHausdorff, PreparedTargetsBoundAsEachCallWould)
     const auto first = fromTheEnd ? fine.end() - static_cast<std::ptrdiff_t>(count) : fine.begin();
     const tpc::PolygonSet targets =
       AsPolygons(std::vector<SourceTriangle>(first, first + static_cast<std::ptrdiff_t>(count)));
-    std::vector<double> o(coarse.size()), p(targets.size());
-    for (double& x : o)
-    {
-      x = 0.02 * unit(random);
-    }
-    for (double& x : p)
-    {
-      x = 0.01 + 0.02 * unit(random);
-    }
+    std::vector<double> o, p;
+    RandomOffsets(random, coarse.size(), targets.size(), o, p);
     for (const bool withOffsets : { false, true })
     {
       prepared.Prepare(targets, withOffsets ? &p : nullptr);
