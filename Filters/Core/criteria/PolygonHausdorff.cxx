@@ -483,7 +483,7 @@ struct Targets
   const std::vector<double>* Offsets; ///< per target; null for zeros
   /// Pieces may settle without a search (SettledByCommonNearest,
   /// SettledByKnownTarget): no witnesses asked for.
-  bool CommonNearestSettles;
+  bool SettlesWithoutSearch;
   /// Searched instead of the candidates (EvaluateInHierarchy); null where
   /// the targets are few.
   const TargetHierarchy* Hierarchy;
@@ -515,7 +515,7 @@ void SettleWith(Piece& piece, double single, std::uint32_t target, const Targets
 /// targets giving the same bound the search may name another.
 bool SettledByCommonNearest(Piece& piece, double settle, const Targets& targets, double& lower)
 {
-  if (!targets.CommonNearestSettles)
+  if (!targets.SettlesWithoutSearch)
   {
     return false;
   }
@@ -551,7 +551,7 @@ bool SettledByCommonNearest(Piece& piece, double settle, const Targets& targets,
 bool SettledByKnownTarget(Piece& piece, std::uint32_t guess, double settle, const Targets& targets, double lower)
 {
   const double limit = std::min(settle, lower);
-  if (!targets.CommonNearestSettles || !(piece.Offset <= limit))
+  if (!targets.SettlesWithoutSearch || !(piece.Offset <= limit))
   {
     return false;
   }
