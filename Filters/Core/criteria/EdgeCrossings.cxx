@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace tpc
@@ -155,10 +156,99 @@ Vec3 IllinoisRoot(const CsgExpression& expression, const PrimitiveSet& primitive
   return at(0.5 * (ta + tb));
 }
 
+/// Where the expression's exact sign along an axis-aligned edge first
+/// differs from `insideA`, from its leaves' own crossings: when every leaf
+/// is a mesh with the cell's triangles, each leaf's sign changes exactly at
+/// its crossings (those CountCrossings counts), so the expression, evaluated
+/// with each leaf's sign at `a` flipped by its crossings so far, changes at
+/// one of them - found in one pass over the leaves' triangles instead of one
+/// per bisection step. The crossings' coordinates are rounded, and two
+/// leaves' crossings closer than that may be taken in the wrong order: the
+/// coordinate found is kept only where the exact signs (`insideAt`) two
+/// units in the last place either side of it are `insideA` and not, which
+/// brackets an exact change as the bisection's last interval does (units of
+/// the larger end's coordinate, the scale both are rounded on). Nothing
+/// otherwise (another kind of leaf, a crossing without a point, a check
+/// that fails): the bisection decides. `meshInsideAtA(i)`: leaf node i's
+/// exact sign at `a`.
+template <typename InsideAt, typename MeshInsideAtA>
+std::optional<double> FirstChangeAmongLeafCrossings(const CsgExpression& expression, const PrimitiveSet& primitives,
+  const Vec3& a, const Vec3& b, int axis, bool insideA, const InsideAt& insideAt, const MeshInsideAtA& meshInsideAtA)
+{
+  struct LeafCrossing
+  {
+    double Coordinate;
+    std::uint32_t Node;
+  };
+  thread_local std::vector<LeafCrossing> crossings;
+  thread_local std::vector<double> coordinates;
+  crossings.clear();
+  for (std::uint32_t i = 0; i < expression.NodeCount(); ++i)
+  {
+    const CsgExpression::Node& n = expression.NodeAt(i);
+    if (n.NodeKind != CsgExpression::Node::Kind::Leaf)
+    {
+      continue;
+    }
+    if (n.LeafData.Kind != PrimitiveKind::Mesh || !n.Triangles)
+    {
+      return std::nullopt;
+    }
+    coordinates.clear();
+    if (!primitives.Meshes[n.LeafData.Primitive].CrossingCoordinates(a, b, axis, *n.Triangles, coordinates))
+    {
+      return std::nullopt;
+    }
+    for (const double x : coordinates)
+    {
+      crossings.push_back({ x, i });
+    }
+  }
+  std::sort(crossings.begin(), crossings.end(), [](const LeafCrossing& p, const LeafCrossing& q) {
+    return p.Coordinate != q.Coordinate ? p.Coordinate < q.Coordinate : p.Node < q.Node;
+  });
+  thread_local std::vector<std::int8_t> flipped; // (per leaf node: crossed an odd number of times so far)
+  flipped.assign(expression.NodeCount(), 0);
+  std::optional<double> found;
+  for (std::size_t k = 0; k < crossings.size() && !found;)
+  {
+    const double x = crossings[k].Coordinate;
+    for (; k < crossings.size() && crossings[k].Coordinate == x; ++k)
+    {
+      flipped[crossings[k].Node] ^= 1;
+    }
+    const bool inside = expression.Evaluate([&](std::uint32_t i, const CsgExpression::Node& n) {
+      return (meshInsideAtA(i) != (flipped[i] != 0)) == (n.LeafData.Sigma > 0);
+    });
+    if (inside != insideA)
+    {
+      found = x;
+    }
+  }
+  if (!found)
+  {
+    return std::nullopt;
+  }
+  // (Units of the larger end's coordinate: the crossing's own coordinate,
+  // a + s (b - a), is rounded on that scale, as the bisection's points are.)
+  const double scale = std::max(std::fabs(a[axis]), std::fabs(b[axis]));
+  const double step = 2.0 * (std::nextafter(scale, HUGE_VAL) - scale);
+  Vec3 before = a, after = a;
+  before[axis] = std::max(*found - step, a[axis]);
+  after[axis] = std::min(*found + step, b[axis]);
+  if (insideAt(before) != insideA || insideAt(after) == insideA)
+  {
+    return std::nullopt;
+  }
+  return found;
+}
+
 /// Bisection on exact signs. A mesh leaf's sign along an axis-aligned edge
 /// is its sign at `a` (one ray to infinity) flipped by each crossing of the
 /// cell's own triangles between a and the point: the same perturbed solid
-/// as IsInside, so the same answers, without a ray per step.
+/// as IsInside, so the same answers, without a ray per step. Where every
+/// leaf is a mesh, its crossings are found first
+/// (FirstChangeAmongLeafCrossings).
 Vec3 BisectOnExactSigns(
   const CsgExpression& expression, const PrimitiveSet& primitives, const Vec3& a, const Vec3& b, bool insideA)
 {
@@ -187,6 +277,14 @@ Vec3 BisectOnExactSigns(
     }
   }
   std::vector<std::int8_t> meshInsideAtA(expression.NodeCount(), -1);
+  const auto meshInsideAt = [&](std::uint32_t i) {
+    std::int8_t& atA = meshInsideAtA[i];
+    if (atA < 0)
+    {
+      atA = primitives.Meshes[expression.NodeAt(i).LeafData.Primitive].IsInside(a) ? 1 : 0;
+    }
+    return atA != 0;
+  };
   auto insideAt = [&](const Vec3& p) {
     if (!alongAxis)
     {
@@ -199,15 +297,20 @@ Vec3 BisectOnExactSigns(
         return LeafIsInside(leaf, primitives, p);
       }
       const MeshSolid& mesh = primitives.Meshes[leaf.Primitive];
-      std::int8_t& atA = meshInsideAtA[i];
-      if (atA < 0)
-      {
-        atA = mesh.IsInside(a) ? 1 : 0;
-      }
-      const bool inside = (atA != 0) != ((mesh.CountCrossings(a, p, axis, *n.Triangles) & 1) != 0);
+      const bool inside = meshInsideAt(i) != ((mesh.CountCrossings(a, p, axis, *n.Triangles) & 1) != 0);
       return inside == (leaf.Sigma > 0);
     });
   };
+  if (alongAxis)
+  {
+    if (const std::optional<double> x =
+          FirstChangeAmongLeafCrossings(expression, primitives, a, b, axis, insideA, insideAt, meshInsideAt))
+    {
+      Vec3 p = a;
+      p[axis] = *x;
+      return p;
+    }
+  }
   for (int it = 0; it < 60; ++it)
   {
     const double t = 0.5 * (ta + tb);

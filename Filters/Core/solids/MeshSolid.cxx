@@ -237,6 +237,20 @@ int MeshSolid::CountCrossings(
   return crossings;
 }
 
+bool MeshSolid::PlaneCrossing(std::uint32_t t, const Vec3& a, const Vec3& b, int axis, double& coordinate) const
+{
+  const Vec3& p0 = this->Vertex(t, 0);
+  const Vec3 n = Cross(this->Vertex(t, 1) - p0, this->Vertex(t, 2) - p0);
+  const double along = n[axis] * (b[axis] - a[axis]);
+  const double s = along != 0.0 ? Dot(n, p0 - a) / along : -1.0;
+  if (!(s >= 0.0 && s <= 1.0))
+  {
+    return false; // the segment lies in the plane (decided by the perturbation)
+  }
+  coordinate = a[axis] + s * (b[axis] - a[axis]);
+  return true;
+}
+
 bool MeshSolid::CrossingPoint(
   const Vec3& a, const Vec3& b, int axis, const TriangleList& triangles, Vec3& point, std::uint32_t* crossed) const
 {
@@ -246,25 +260,30 @@ bool MeshSolid::CrossingPoint(
     ++crossings;
     hit = t;
   });
-  if (crossings != 1)
+  double coordinate = 0.0;
+  if (crossings != 1 || !this->PlaneCrossing(hit, a, b, axis, coordinate))
   {
     return false;
   }
-  const Vec3& p0 = this->Vertex(hit, 0);
-  const Vec3 n = Cross(this->Vertex(hit, 1) - p0, this->Vertex(hit, 2) - p0);
-  const double along = n[axis] * (b[axis] - a[axis]);
-  const double t = along != 0.0 ? Dot(n, p0 - a) / along : -1.0;
-  if (!(t >= 0.0 && t <= 1.0))
-  {
-    return false; // the segment lies in the plane (decided by the perturbation)
-  }
   point = a;
-  point[axis] = a[axis] + t * (b[axis] - a[axis]);
+  point[axis] = coordinate;
   if (crossed)
   {
     *crossed = hit;
   }
   return true;
+}
+
+bool MeshSolid::CrossingCoordinates(
+  const Vec3& a, const Vec3& b, int axis, const TriangleList& triangles, std::vector<double>& coordinates) const
+{
+  bool placed = true;
+  this->ForEachCrossing(a, b, axis, triangles, [&](std::uint32_t t) {
+    double coordinate = 0.0;
+    placed = placed && this->PlaneCrossing(t, a, b, axis, coordinate);
+    coordinates.push_back(coordinate);
+  });
+  return placed;
 }
 
 namespace

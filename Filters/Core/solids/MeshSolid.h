@@ -101,6 +101,13 @@ public:
   /// triangle in `crossed` (if given). False otherwise.
   bool CrossingPoint(const Vec3& a, const Vec3& b, int axis, const TriangleList& triangles, Vec3& point,
     std::uint32_t* crossed = nullptr) const;
+  /// Every crossing of that segment (those CountCrossings counts): the
+  /// coordinate along `axis` where it meets the crossed triangle's plane
+  /// (floating point, not ordered), appended to `coordinates`. False where a
+  /// crossed triangle's plane holds the segment (the perturbation decides
+  /// it; there is no point to give).
+  bool CrossingCoordinates(
+    const Vec3& a, const Vec3& b, int axis, const TriangleList& triangles, std::vector<double>& coordinates) const;
 
   /// The triangles of `candidates` that may meet the closed box (a
   /// conservative separating-axis test: never drops a triangle that does).
@@ -128,6 +135,10 @@ private:
   /// Normals, boxes and the ray-casting grid, from the vertices and faces.
   void Index(const ParallelFor& parallelFor);
   bool Crosses(std::uint32_t t, const Vec3& a, const Vec3* b, int axis) const;
+  /// Where the segment from a to b (differing along `axis` only) meets
+  /// triangle t's plane: its coordinate along `axis`, in `coordinate`; false
+  /// where the segment lies in the plane.
+  bool PlaneCrossing(std::uint32_t t, const Vec3& a, const Vec3& b, int axis, double& coordinate) const;
   /// The ray-casting grid's column (0: along y, 1: along z) of a coordinate.
   int GridColumn(int k, double coordinate) const;
   /// The ray-casting grid's cell holding p's (y, z).

@@ -4,6 +4,7 @@
 #include "ComplexCellCriterion.h"
 #include "EdgeCrossings.h"
 #include "FaceRefinement.h"
+#include "MeshBooleanSurface.h"
 #include "MeshBuilders.h"
 #include "SceneBuilder.h"
 
@@ -145,4 +146,80 @@ TEST(EdgeCrossings, FoundOnTheExactSurfaceInsideTheSegment)
   const Vec3 s = tpc::FindEdgeCrossing(*cube, m.Scene.Primitives, { 0.25, 0.5, 0.5 }, { 0.25, 0.5, 1.5 }, true);
   EXPECT_NEAR(s[2], 1.0, 1e-12);
   EXPECT_EQ(s[0], 0.25);
+}
+
+TEST(EdgeCrossings, WhereMeshesMeetTheCrossingBracketsAChangeOfTheExactSign)
+{
+  // A sphere's mesh and a tilted cube's in each operation, pruned to boxes
+  // as cells' expressions are (every leaf a mesh with its box's triangles:
+  // the leaves' own crossings, checked against the exact signs), and
+  // lattice-like segments along each axis whose ends differ: the point found
+  // must lie within a few units in the last place (of the ends' coordinate)
+  // of an exact change of the expression's sign - where two meshes cross
+  // near the segment too.
+  const tpc::MeshSolid ball = tpctest::SphereMesh({ 0.1, 0.05, 0 }, 0.5, 2);
+  const tpc::MeshSolid box = tpctest::TiltedMesh(tpctest::CubeMesh({ -0.35, -0.35, -0.35 }, { 0.35, 0.35, 0.35 }));
+  std::uint64_t state = 12345;
+  const auto uniform = [&] {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(state >> 11) * 0x1.0p-53;
+  };
+  int checked = 0, bothMeshesCrossed = 0;
+  for (const auto op : { tpc::CsgTerm::Op::Union, tpc::CsgTerm::Op::Intersection, tpc::CsgTerm::Op::Difference })
+  {
+    SceneBuilder b;
+    const auto expression = b.Finish(tpc::CsgTerm::Combine(op, { b.Mesh(ball), b.Mesh(box) }));
+    const tpc::PrimitiveSet& prims = b.Scene.Primitives;
+    for (int cell = 0; cell < 60; ++cell)
+    {
+      const Vec3 lo{ -0.6 + 1.1 * uniform(), -0.6 + 1.1 * uniform(), -0.6 + 1.1 * uniform() };
+      const double width = 0.1;
+      const tpc::Box3 region{ lo, lo + Vec3(width, width, width) };
+      const auto pruned = tpc::CsgExpression::Prune(expression, region, prims);
+      if (pruned.Sign != tpc::RegionSign::Mixed || !tpc::IsMeshBoolean(*pruned.Expression))
+      {
+        continue;
+      }
+      for (int segment = 0; segment < 20; ++segment)
+      {
+        const int axis = segment % 3;
+        Vec3 a{ lo[0] + width * uniform(), lo[1] + width * uniform(), lo[2] + width * uniform() };
+        a[axis] = lo[axis];
+        Vec3 z = a;
+        z[axis] = lo[axis] + width;
+        const bool insideA = pruned.Expression->IsInside(a, prims);
+        if (insideA == pruned.Expression->IsInside(z, prims))
+        {
+          continue;
+        }
+        const Vec3 p = tpc::FindEdgeCrossing(*pruned.Expression, prims, a, z, insideA);
+        // (Units of the larger end's coordinate: the scale a point of the
+        // segment is rounded on.)
+        const double scale = std::max(std::fabs(a[axis]), std::fabs(z[axis]));
+        const double ulp = std::nextafter(scale, HUGE_VAL) - scale;
+        Vec3 before = p, after = p;
+        before[axis] -= 4.0 * ulp;
+        after[axis] += 4.0 * ulp;
+        for (int k = 0; k < 3; ++k)
+        {
+          if (k != axis)
+          {
+            ASSERT_EQ(p[k], a[k]);
+          }
+        }
+        ASSERT_TRUE(p[axis] >= a[axis] && p[axis] <= z[axis]);
+        EXPECT_EQ(pruned.Expression->IsInside(before, prims), insideA) << "segment " << checked;
+        EXPECT_NE(pruned.Expression->IsInside(after, prims), insideA) << "segment " << checked;
+        ++checked;
+        int crossed = 0;
+        for (const tpc::MeshSolid* m : { &prims.Meshes[0], &prims.Meshes[1] })
+        {
+          crossed += (m->IsInside(a) != m->IsInside(z)) ? 1 : 0;
+        }
+        bothMeshesCrossed += crossed == 2 ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_GT(checked, 200);
+  EXPECT_GT(bothMeshesCrossed, 10);
 }
