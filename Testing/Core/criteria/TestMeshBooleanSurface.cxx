@@ -365,3 +365,52 @@ TEST(MeshBooleanSurface, PolygonsAreApartOnlyFartherThanTheMargin)
   EXPECT_TRUE(tpc::PolygonsApart(span(a), span(b), 0.019));
   EXPECT_FALSE(tpc::PolygonsApart(span(a), span(b), 0.021));
 }
+
+TEST(MeshBooleanSurface, PolygonsCrossingAPlaneAreApartOnlyOutsideThePolygonInIt)
+{
+  // A triangle standing across another's plane, a distance r beyond one of
+  // its sides (the side's outward direction in the plane separates them by
+  // r) or r within it (they cross): apart by a margin below r in the first
+  // case, never in the second - crossing polygons are told by where the
+  // standing one's section lies, which must not be taken for a crossing
+  // outside.
+  const auto span = [](const std::vector<Vec3>& p) { return PointSpan{ p.data(), p.size() }; };
+  std::uint64_t state = 2024;
+  const auto uniform = [&] {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>(state >> 11) * 0x1.0p-53;
+  };
+  int apart = 0;
+  for (int trial = 0; trial < 500; ++trial)
+  {
+    std::vector<Vec3> q;
+    for (int k = 0; k < 3; ++k)
+    {
+      q.push_back({ uniform(), uniform(), uniform() });
+    }
+    const Vec3 n = tpc::Normalized(tpc::Cross(q[1] - q[0], q[2] - q[0]));
+    const int side = trial % 3;
+    const Vec3 e = tpc::Normalized(q[(side + 1) % 3] - q[side]);
+    const Vec3 outward = tpc::Cross(e, n); // (in the plane, away from the third corner)
+    const Vec3 middle = (q[side] + q[(side + 1) % 3]) * 0.5;
+    const Vec3& third = q[(side + 2) % 3];
+    const double height = tpc::Dot(third - middle, outward * -1.0);
+    if (!(height > 0.05) || tpc::Dot(outward, third - middle) > 0.0)
+    {
+      continue; // (thin triangles: the inner point would not be inside)
+    }
+    const double r = 0.01 + 0.02 * uniform();
+    for (const double sign : { 1.0, -1.0 })
+    {
+      const Vec3 x = middle + outward * (sign * r);
+      // (Its own plane holds n and the outward direction - neither normal
+      // separates them; its section by q's plane runs from x further out,
+      // or further in.)
+      const std::vector<Vec3> standing = { x - n * 0.3, x + n * 0.3, x + n * 0.1 + outward * (sign * 0.05) };
+      const bool found = tpc::PolygonsApart(span(standing), span(q), 0.8 * r);
+      EXPECT_EQ(found, sign > 0.0) << "trial " << trial;
+      apart += found ? 1 : 0;
+    }
+  }
+  EXPECT_GT(apart, 100);
+}
