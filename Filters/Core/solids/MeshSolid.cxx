@@ -138,7 +138,7 @@ void MeshSolid::Index(const ParallelFor& parallelFor)
   }
 }
 
-bool MeshSolid::Crosses(std::uint32_t t, const Vec3& a, const Vec3* b, int axis) const
+bool MeshSolid::Crosses(std::uint32_t t, const Vec3& a, const Vec3* b, int axis, bool backward) const
 {
   // Every query point q stands for q + (eps, eps^2, eps^3), one symbolic
   // perturbation shared by all queries, so every answer is about the same
@@ -188,8 +188,10 @@ bool MeshSolid::Crosses(std::uint32_t t, const Vec3& a, const Vec3* b, int axis)
     }
     return false;
   };
-  // Far along +axis the inner side is where the normal's axis component is negative.
-  return inner(a) != (b ? inner(*b) : o < 0);
+  // Far along +axis the inner side is where the normal's axis component is
+  // negative (o < 0), far along -axis where it is positive: the line meets
+  // the plane within the triangle, which the side tests found it crosses.
+  return inner(a) != (b ? inner(*b) : backward ? o > 0 : o < 0);
 }
 
 int MeshSolid::GridColumn(int k, double coordinate) const
@@ -206,7 +208,11 @@ std::size_t MeshSolid::RayCell(const Vec3& p) const
 
 bool MeshSolid::IsInside(const Vec3& p) const
 {
-  return (this->CrossingsAlongX(p, [](std::uint32_t) { return true; }) & 1) != 0;
+  // Along x to the nearer side of the mesh's box: the same parity as the
+  // other way (CrossingsAlongX), past half as many triangles of the column
+  // on average.
+  const bool backward = p[0] - this->Box.lo[0] < this->Box.hi[0] - p[0];
+  return (this->CrossingsAlongX(p, [](std::uint32_t) { return true; }, backward) & 1) != 0;
 }
 
 template <typename Crossed>

@@ -84,13 +84,13 @@ public:
   /// Exact: inside the (symbolically perturbed) solid.
   bool IsInside(const Vec3& p) const;
   /// Exact: how many of the triangles t with counts(t) the ray from p along
-  /// +x crosses, p perturbed as in IsInside (so its parity over a closed
-  /// surface's triangles says whether p is inside that surface; the
-  /// triangles' orientation does not matter - turning one over turns every
-  /// sign its crossing test reads - so this holds for any closed triangles,
-  /// outward or not).
+  /// +x (along -x: `backward`) crosses, p perturbed as in IsInside (so its
+  /// parity over a closed surface's triangles says whether p is inside that
+  /// surface, whichever way the ray goes; the triangles' orientation does
+  /// not matter - turning one over turns every sign its crossing test reads
+  /// - so this holds for any closed triangles, outward or not).
   template <typename Counts>
-  int CrossingsAlongX(const Vec3& p, const Counts& counts) const;
+  int CrossingsAlongX(const Vec3& p, const Counts& counts, bool backward = false) const;
 
   /// Exact number of crossings of the surface by the segment from `a` to `b`,
   /// which differ only along `axis` (a[axis] < b[axis]), among `triangles`
@@ -134,7 +134,10 @@ public:
 private:
   /// Normals, boxes and the ray-casting grid, from the vertices and faces.
   void Index(const ParallelFor& parallelFor);
-  bool Crosses(std::uint32_t t, const Vec3& a, const Vec3* b, int axis) const;
+  /// Whether the segment from a to b (differing along `axis` only, a below
+  /// b), or without b the ray from a along +axis (-axis: `backward`), crosses
+  /// triangle t, a and b perturbed as in IsInside.
+  bool Crosses(std::uint32_t t, const Vec3& a, const Vec3* b, int axis, bool backward = false) const;
   /// Where the segment from a to b (differing along `axis` only) meets
   /// triangle t's plane: its coordinate along `axis`, in `coordinate`; false
   /// where the segment lies in the plane.
@@ -164,10 +167,10 @@ private:
 };
 
 template <typename Counts>
-int MeshSolid::CrossingsAlongX(const Vec3& p, const Counts& counts) const
+int MeshSolid::CrossingsAlongX(const Vec3& p, const Counts& counts, bool backward) const
 {
-  if (this->Faces.empty() || !(p[0] <= this->Box.hi[0]) || p[1] < this->Box.lo[1] || p[1] > this->Box.hi[1] ||
-    p[2] < this->Box.lo[2] || p[2] > this->Box.hi[2])
+  if (this->Faces.empty() || (backward ? !(p[0] >= this->Box.lo[0]) : !(p[0] <= this->Box.hi[0])) ||
+    p[1] < this->Box.lo[1] || p[1] > this->Box.hi[1] || p[2] < this->Box.lo[2] || p[2] > this->Box.hi[2])
   {
     return 0;
   }
@@ -177,11 +180,12 @@ int MeshSolid::CrossingsAlongX(const Vec3& p, const Counts& counts) const
   {
     const std::uint32_t t = this->GridTriangles[i];
     const Box3& b = this->FaceBoxes[t];
-    if (b.hi[0] < p[0] || p[1] < b.lo[1] || p[1] > b.hi[1] || p[2] < b.lo[2] || p[2] > b.hi[2] || !counts(t))
+    if ((backward ? b.lo[0] > p[0] : b.hi[0] < p[0]) || p[1] < b.lo[1] || p[1] > b.hi[1] || p[2] < b.lo[2] ||
+      p[2] > b.hi[2] || !counts(t))
     {
       continue;
     }
-    crossings += this->Crosses(t, p, nullptr, 0) ? 1 : 0;
+    crossings += this->Crosses(t, p, nullptr, 0, backward) ? 1 : 0;
   }
   return crossings;
 }

@@ -219,6 +219,51 @@ TEST(MeshSolid, InsideMatchesTheAnalyticTorusAwayFromTheSurface)
   EXPECT_GT(checked, 15000);
 }
 
+TEST(MeshSolid, RaysEitherWayAlongXAgreeOnInside)
+{
+  // IsInside casts its ray to the nearer side of the box; the crossings
+  // each way must have the same parity at every point - at the vertices,
+  // on the edges and faces of the meshes too, where the perturbation
+  // decides.
+  const tpc::MeshSolid torus = tpctest::TorusMesh({ 0, 0, 0 }, 0.6, 0.25, 24, 12);
+  const tpc::MeshSolid cube = tpctest::TiltedMesh(tpctest::CubeMesh({ -0.5, -0.5, -0.5 }, { 0.5, 0.5, 0.5 }));
+  const tpc::MeshSolid lattice = tpctest::CubeMesh({ -1, -1, -1 }, { 1, 1, 1 });
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.2, 1.2);
+  const auto all = [](std::uint32_t) { return true; };
+  int inside = 0, checked = 0;
+  for (const tpc::MeshSolid* mesh : { &torus, &cube, &lattice })
+  {
+    std::vector<Vec3> queries;
+    for (std::uint32_t t = 0; t < mesh->TriangleCount(); ++t)
+    {
+      const Vec3 &a = mesh->Vertex(t, 0), &b = mesh->Vertex(t, 1), &c = mesh->Vertex(t, 2);
+      queries.insert(queries.end(), { a, (a + b) * 0.5, (a + b + c) * (1.0 / 3.0), a + Vec3(0.25, 0, 0) });
+    }
+    for (int k = 0; k < 2000; ++k)
+    {
+      queries.emplace_back(u(rng), u(rng), u(rng));
+    }
+    for (int i = -5; i <= 5; ++i)
+    {
+      for (int j = -5; j <= 5; ++j)
+      {
+        queries.emplace_back(0.25 * i, 0.25 * j, 0.5);
+      }
+    }
+    for (const Vec3& p : queries)
+    {
+      const int forward = mesh->CrossingsAlongX(p, all, false), backward = mesh->CrossingsAlongX(p, all, true);
+      ASSERT_EQ(forward % 2, backward % 2) << p[0] << " " << p[1] << " " << p[2];
+      ASSERT_EQ(mesh->IsInside(p), forward % 2 == 1);
+      inside += forward % 2;
+      ++checked;
+    }
+  }
+  EXPECT_GT(inside, 500);
+  EXPECT_GT(checked - inside, 500);
+}
+
 TEST(MeshSolid, CrossingCountsAgreeWithInsideChanges)
 {
   const tpc::MeshSolid torus = tpctest::TorusMesh({ 0, 0, 0 }, 0.6, 0.25, 24, 12);
