@@ -350,6 +350,15 @@ bool PolygonsApart(const PointSpan& p, const PointSpan& q, double margin)
       return true;
     }
   }
+  return PolygonsApartBesideTheirBoxes(p, q, margin);
+}
+
+bool PolygonsApartBesideTheirBoxes(const PointSpan& p, const PointSpan& q, double margin)
+{
+  if (p.empty() || q.empty())
+  {
+    return true;
+  }
   const Vec3 np = NewellVector(p), nq = NewellVector(q);
   if (ApartAlong(np, p, q, margin) || ApartAlong(nq, p, q, margin))
   {

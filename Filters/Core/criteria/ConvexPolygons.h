@@ -279,5 +279,9 @@ double LargestOverClippedCorners(const PolygonSet& set, const Box3& box, const V
 /// ulps of the coordinates times the axis's length: the caller's margin
 /// must exceed that (MeshBooleanSurface.h: Rounding).
 bool PolygonsApart(const PointSpan& p, const PointSpan& q, double margin);
+/// The same test on every axis but the coordinate axes: for polygons whose
+/// boxes the caller found within `margin` of each other (there those axes
+/// cannot separate them).
+bool PolygonsApartBesideTheirBoxes(const PointSpan& p, const PointSpan& q, double margin);
 
 } // namespace tpc

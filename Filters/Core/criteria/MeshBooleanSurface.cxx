@@ -71,7 +71,7 @@ int NearPolygons(const PointSpan& corners, std::size_t leaf, const std::vector<P
     const PolygonSet& other = meshSurfaces[j];
     for (std::size_t r = 0; j != leaf && r < other.size() && near < 2; ++r)
     {
-      if (other.Bounds(r).Overlaps(reach) && !PolygonsApart(corners, other[r].Points, margin))
+      if (other.Bounds(r).Overlaps(reach) && !PolygonsApartBesideTheirBoxes(corners, other[r].Points, margin))
       {
         nearest = near == 0 ? std::make_pair(j, r) : nearest;
         ++near;
