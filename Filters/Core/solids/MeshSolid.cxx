@@ -51,12 +51,19 @@ MeshSolid::MeshSolid(std::vector<Vec3> points, std::vector<std::array<std::uint3
 void MeshSolid::Index(const ParallelFor& parallelFor)
 {
   this->Normals.resize(this->Faces.size());
+  this->AxisFacing.resize(this->Faces.size());
   parallelFor(this->Faces.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t t = begin; t < end; ++t)
     {
       const Vec3& a = this->Vertex(static_cast<std::uint32_t>(t), 0);
-      this->Normals[t] = Normalized(
-        Cross(this->Vertex(static_cast<std::uint32_t>(t), 1) - a, this->Vertex(static_cast<std::uint32_t>(t), 2) - a));
+      const Vec3& b = this->Vertex(static_cast<std::uint32_t>(t), 1);
+      const Vec3& c = this->Vertex(static_cast<std::uint32_t>(t), 2);
+      this->Normals[t] = Normalized(Cross(b - a, c - a));
+      for (int axis = 0; axis < 3; ++axis)
+      {
+        const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+        this->AxisFacing[t][axis] = static_cast<std::int8_t>(Orient2D(a[u], a[v], b[u], b[v], c[u], c[v]));
+      }
     }
   });
   this->Box = { { HUGE_VAL, HUGE_VAL, HUGE_VAL }, { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL } };
@@ -147,7 +154,7 @@ bool MeshSolid::Crosses(std::uint32_t t, const Vec3& a, const Vec3* b, int axis,
   const Vec3& A = this->Vertex(t, 0);
   const Vec3& B = this->Vertex(t, 1);
   const Vec3& C = this->Vertex(t, 2);
-  const int o = Orient2D(A[u], A[v], B[u], B[v], C[u], C[v]);
+  const int o = this->AxisFacing[t][axis];
   if (o == 0)
   {
     return false; // parallel to the segment: the perturbed segment misses it
@@ -179,8 +186,7 @@ bool MeshSolid::Crosses(std::uint32_t t, const Vec3& a, const Vec3* b, int axis,
     }
     for (int k = 0; k < 3; ++k)
     {
-      const int uk = (k + 1) % 3, vk = (k + 2) % 3;
-      const int nk = Orient2D(A[uk], A[vk], B[uk], B[vk], C[uk], C[vk]); // sign of n_k
+      const int nk = this->AxisFacing[t][k]; // sign of n_k
       if (nk != 0)
       {
         return nk < 0;

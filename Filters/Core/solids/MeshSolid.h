@@ -155,6 +155,10 @@ private:
   std::vector<std::array<std::uint32_t, 3>> Faces;
   std::vector<Box3> FaceBoxes;
   std::vector<Vec3> Normals;
+  /// Each triangle's exact sign of its normal's component along each axis
+  /// (Orient2D of its corners seen along that axis): read by every crossing
+  /// test (Crosses), made once.
+  std::vector<std::array<std::int8_t, 3>> AxisFacing;
   std::vector<std::array<std::uint32_t, 3>> Neighbours;
   Box3 Box;
   // Ray-casting index: a uniform grid over the (y, z) extent; each cell lists
