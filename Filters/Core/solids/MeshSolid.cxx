@@ -315,6 +315,37 @@ int LowestBit(std::uint64_t bits)
 #endif
 }
 
+/// Whether the segment from a to b meets the box [-h, h] (slabs; computed in
+/// floating point, so a segment a rounding outside may be said to meet it).
+bool SegmentMeetsBox(const Vec3& a, const Vec3& b, const Vec3& h)
+{
+  double t0 = 0.0, t1 = 1.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    const double d = b[k] - a[k];
+    if (d == 0.0)
+    {
+      if (a[k] < -h[k] || a[k] > h[k])
+      {
+        return false;
+      }
+      continue;
+    }
+    double enter = (-h[k] - a[k]) / d, leave = (h[k] - a[k]) / d;
+    if (enter > leave)
+    {
+      std::swap(enter, leave);
+    }
+    t0 = std::max(t0, enter);
+    t1 = std::min(t1, leave);
+    if (!(t0 <= t1))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 /// Conservative separating-axis test: reports overlap unless a separating
 /// axis is found with a margin well above rounding error.
 bool TriangleBoxOverlap(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Box3& box)
@@ -337,6 +368,16 @@ bool TriangleBoxOverlap(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Bo
     if (lo > h[a] + slack || hi < -h[a] - slack)
     {
       return false;
+    }
+  }
+  // A side of the triangle passing through the box (the common case where
+  // neither holds a corner of the other, cells being about the triangles'
+  // size): they meet, which no axis below could deny.
+  for (int i = 0; i < 3; ++i)
+  {
+    if (SegmentMeetsBox(v[i], v[(i + 1) % 3], h))
+    {
+      return true;
     }
   }
   const Vec3 e[3] = { v[1] - v[0], v[2] - v[1], v[0] - v[2] };

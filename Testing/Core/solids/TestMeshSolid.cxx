@@ -324,6 +324,23 @@ TEST(MeshSolid, TriangleBoxOverlapNeverMissesAContact)
   EXPECT_GT(negatives, 100000); // and it does reject
 }
 
+TEST(MeshSolid, ATriangleWhoseSidePassesBesideABoxIsNotListed)
+{
+  // The plane x + z = 2 + d passes the unit box's edge (x = z = 1) at d /
+  // sqrt(2); a triangle in it, corners outside the box and a side passing
+  // its edge, meets the box exactly when d <= 0 - the side's own test must
+  // not list it otherwise (only the plane's axis separates it).
+  const Box3 box{ { 0, 0, 0 }, { 1, 1, 1 } };
+  for (const double d : { 1e-6, 1e-3, -1e-6, -1e-3 })
+  {
+    const tpc::MeshSolid triangle(
+      { { 2 + d, -1, 0 }, { 2 + d, 2, 0 }, { 0, 0.5, 2 + d } }, { { { 0, 1, 2 } } });
+    tpc::TriangleList listed;
+    triangle.Overlapping(box, tpc::TriangleList{ 0 }, listed);
+    EXPECT_EQ(listed.size(), d < 0 ? 1u : 0u) << d;
+  }
+}
+
 TEST(MeshSolid, ABoxFarBeyondTheMeshListsEveryTriangle)
 {
   // The ray-casting grid's columns under a box billions of steps wide: the
