@@ -205,32 +205,6 @@ std::vector<Vec3> SectionVertices(const Box3& box, const SeparatingPlane& plane)
   return vertices;
 }
 
-/// The segment from p to q meets `box` (slabs; box already grown by any slack).
-bool SegmentMeetsBox(const Vec3& p, const Vec3& q, const Box3& box)
-{
-  double t0 = 0.0, t1 = 1.0;
-  for (int a = 0; a < 3; ++a)
-  {
-    const double d = q[a] - p[a];
-    if (d == 0.0)
-    {
-      if (p[a] < box.lo[a] || p[a] > box.hi[a])
-      {
-        return false;
-      }
-      continue;
-    }
-    double lo = (box.lo[a] - p[a]) / d, hi = (box.hi[a] - p[a]) / d;
-    if (lo > hi)
-    {
-      std::swap(lo, hi);
-    }
-    t0 = std::max(t0, lo);
-    t1 = std::min(t1, hi);
-  }
-  return t0 <= t1;
-}
-
 /// A mesh leaf's triangles miss the section: each lies on one side of the
 /// plane, or meets it in a segment that misses the box (grown by the slack).
 bool MeshMissesSection(const MeshSolid& mesh, const TriangleList* triangles, const Box3& box,
@@ -268,7 +242,7 @@ bool MeshMissesSection(const MeshSolid& mesh, const TriangleList* triangles, con
     {
       for (std::size_t b = a; b < ends.size(); ++b)
       {
-        if (SegmentMeetsBox(ends[a], ends[b], grown))
+        if (grown.MeetsSegment(ends[a], ends[b]))
         {
           return false;
         }

@@ -276,62 +276,27 @@ bool ApartAlong(const Vec3& axis, const PointSpan& p, const PointSpan& q, double
   return qLo - pHi > gap || pLo - qHi > gap;
 }
 
-/// Whether polygon `p` crosses the plane of polygon `q` (normal `nq`, not
-/// zero) inside `q`: the two points where p's sides cross that plane, the
-/// segment between them clipped to q within its plane (its sides' inward
-/// half-planes), leave a point. Computed in floating point, so a pair a
-/// rounding apart may be said to meet - never a pair whose projections on
-/// some axis are apart by more than a few ulps, PolygonsApart's margin.
-bool SectionInside(const PointSpan& p, const PointSpan& q, const Vec3& nq)
+/// Whether the normals of `p` and `q` separate them by more than `margin`.
+bool NormalsApart(const PointSpan& p, const PointSpan& q, double margin)
 {
-  Vec3 ends[2];
-  int found = 0;
-  const std::size_t m = p.size();
-  for (std::size_t i = 0; i < m && m > 1; ++i)
+  return ApartAlong(NewellVector(p), p, q, margin) || ApartAlong(NewellVector(q), p, q, margin);
+}
+
+/// Whether the cross product of an edge of `p` and one of `q` separates them
+/// by more than `margin`.
+bool EdgeCrossProductsApart(const PointSpan& p, const PointSpan& q, double margin)
+{
+  for (std::size_t i = 0; i < EdgeCount(p); ++i)
   {
-    const Vec3 &x = p[i], &y = p[(i + 1) % m];
-    const double sx = Dot(nq, x - q[0]), sy = Dot(nq, y - q[0]);
-    if ((sx >= 0.0) != (sy >= 0.0))
+    for (std::size_t k = 0; k < EdgeCount(q); ++k)
     {
-      if (found == 2)
+      if (ApartAlong(Cross(Edge(p, i), Edge(q, k)), p, q, margin))
       {
-        return false; // (a rounding made the section three points: left to the axes)
-      }
-      ends[found++] = x + (y - x) * (sx / (sx - sy));
-    }
-  }
-  if (found != 2)
-  {
-    return false;
-  }
-  double t0 = 0.0, t1 = 1.0;
-  const Vec3 d = ends[1] - ends[0];
-  for (std::size_t k = 0; k < q.size(); ++k)
-  {
-    const Vec3 inward = Cross(nq, q[(k + 1) % q.size()] - q[k]);
-    const double da = Dot(inward, ends[0] - q[k]), dd = Dot(inward, d);
-    // The part of the segment on the inner side: da + t dd >= 0.
-    if (dd == 0.0)
-    {
-      if (da < 0.0)
-      {
-        return false;
+        return true;
       }
     }
-    else if (dd > 0.0)
-    {
-      t0 = std::max(t0, -da / dd);
-    }
-    else
-    {
-      t1 = std::min(t1, -da / dd);
-    }
-    if (!(t0 <= t1))
-    {
-      return false;
-    }
   }
-  return true;
+  return false;
 }
 } // namespace
 
@@ -350,40 +315,85 @@ bool PolygonsApart(const PointSpan& p, const PointSpan& q, double margin)
       return true;
     }
   }
-  return PolygonsApartBesideTheirBoxes(p, q, margin);
+  return NormalsApart(p, q, margin) || EdgeCrossProductsApart(p, q, margin);
 }
 
-bool PolygonsApartBesideTheirBoxes(const PointSpan& p, const PointSpan& q, double margin)
+bool PolygonsApartBesideTheirBoxes(const PointSpan& p, const ConvexPolygon& q, double margin)
 {
-  if (p.empty() || q.empty())
+  if (p.empty() || q.Points.empty())
   {
     return true;
   }
-  const Vec3 np = NewellVector(p), nq = NewellVector(q);
-  if (ApartAlong(np, p, q, margin) || ApartAlong(nq, p, q, margin))
+  if (NormalsApart(p, q.Points, margin))
   {
     return true;
   }
   // Meshes' polygons near one another mostly cross, and crossing polygons
-  // have no separating axis: found so in one pass over each instead of
-  // a projection of both on every pair of their edges (SectionInside: it
-  // never claims polygons apart by the margin to cross, so the answer is
-  // the one the axes below give).
-  if (q.size() > 2 && Norm(nq) > 0.0 && SectionInside(p, q, nq))
+  // have no separating axis: found so in one pass over each instead of a
+  // projection of both on every pair of their edges. Only where q's plane
+  // is known within the rounding (Inward: MeasuredByItsPlane) - collinear
+  // corners' "plane" is rounding noise, whose section would be clipped by
+  // its sides alone, without ends - so that p's section, clipped to q, is a
+  // point both share up to rounding: the axes could not separate them by
+  // the margin either, and the answer is theirs.
+  Vec3 a, b;
+  if (!q.Inward.empty() && SectionByPlane(p, q.Normal, Dot(q.Normal, q.Points[0]), a, b) &&
+    ClipSegmentToPolygon(q, a, b))
   {
     return false;
   }
-  for (std::size_t i = 0; i < EdgeCount(p); ++i)
+  return EdgeCrossProductsApart(p, q.Points, margin);
+}
+
+bool SectionByPlane(const PointSpan& q, const Vec3& n, double offset, Vec3& a, Vec3& b)
+{
+  int found = 0;
+  const std::size_t m = q.size();
+  for (std::size_t i = 0; i < m && found < 2; ++i)
   {
-    for (std::size_t k = 0; k < EdgeCount(q); ++k)
+    const Vec3 &x = q[i], &y = q[(i + 1) % m];
+    const double sx = Dot(n, x) - offset, sy = Dot(n, y) - offset;
+    if ((sx < 0.0) != (sy < 0.0))
     {
-      if (ApartAlong(Cross(Edge(p, i), Edge(q, k)), p, q, margin))
+      (found++ == 0 ? a : b) = x + (y - x) * (sx / (sx - sy));
+    }
+  }
+  return found == 2;
+}
+
+bool ClipSegmentToPolygon(const ConvexPolygon& p, Vec3& a, Vec3& b)
+{
+  double t0 = 0.0, t1 = 1.0;
+  const std::size_t m = p.Points.size();
+  for (std::size_t i = 0; i < m; ++i)
+  {
+    const Vec3 inward = Cross(p.Normal, p.Points[(i + 1) % m] - p.Points[i]);
+    const double da = Dot(inward, a - p.Points[i]), db = Dot(inward, b - p.Points[i]);
+    if (da < 0.0 && db < 0.0)
+    {
+      return false;
+    }
+    if (da < 0.0 || db < 0.0)
+    {
+      const double t = da / (da - db);
+      if (da < 0.0)
       {
-        return true;
+        t0 = std::max(t0, t); // (enters the polygon's side at t)
+      }
+      else
+      {
+        t1 = std::min(t1, t); // (leaves it)
       }
     }
   }
-  return false;
+  if (!(t0 < t1))
+  {
+    return false;
+  }
+  const Vec3 d = b - a;
+  b = a + d * t1;
+  a = a + d * t0;
+  return true;
 }
 
 } // namespace tpc

@@ -279,9 +279,20 @@ double LargestOverClippedCorners(const PolygonSet& set, const Box3& box, const V
 /// ulps of the coordinates times the axis's length: the caller's margin
 /// must exceed that (MeshBooleanSurface.h: Rounding).
 bool PolygonsApart(const PointSpan& p, const PointSpan& q, double margin);
-/// The same test on every axis but the coordinate axes: for polygons whose
+/// The same test on every axis but the coordinate axes, for polygons whose
 /// boxes the caller found within `margin` of each other (there those axes
-/// cannot separate them).
-bool PolygonsApartBesideTheirBoxes(const PointSpan& p, const PointSpan& q, double margin);
+/// cannot separate them); `q` a polygon of a set, whose plane, where it is
+/// known within the rounding, also tells crossing polygons at once.
+bool PolygonsApartBesideTheirBoxes(const PointSpan& p, const ConvexPolygon& q, double margin);
+
+/// The part of polygon `q` (corners in order) in the plane Dot(n, x) =
+/// `offset` (`n` a unit normal): the segment between the points where its
+/// sides cross the plane, in `a` and `b`; false where it does not reach
+/// across.
+bool SectionByPlane(const PointSpan& q, const Vec3& n, double offset, Vec3& a, Vec3& b);
+
+/// The segment [a, b] clipped to convex polygon `p` within its plane (both
+/// in it up to rounding), in place; false where nothing is left.
+bool ClipSegmentToPolygon(const ConvexPolygon& p, Vec3& a, Vec3& b);
 
 } // namespace tpc

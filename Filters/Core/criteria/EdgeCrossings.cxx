@@ -182,18 +182,25 @@ std::optional<double> FirstChangeAmongLeafCrossings(const CsgExpression& express
   };
   thread_local std::vector<LeafCrossing> crossings;
   thread_local std::vector<double> coordinates;
-  crossings.clear();
+  const auto isLeaf = [&](std::uint32_t i) {
+    return expression.NodeAt(i).NodeKind == CsgExpression::Node::Kind::Leaf;
+  };
   for (std::uint32_t i = 0; i < expression.NodeCount(); ++i)
   {
     const CsgExpression::Node& n = expression.NodeAt(i);
-    if (n.NodeKind != CsgExpression::Node::Kind::Leaf)
-    {
-      continue;
-    }
-    if (n.LeafData.Kind != PrimitiveKind::Mesh || !n.Triangles)
+    if (isLeaf(i) && (n.LeafData.Kind != PrimitiveKind::Mesh || !n.Triangles))
     {
       return std::nullopt;
     }
+  }
+  crossings.clear();
+  for (std::uint32_t i = 0; i < expression.NodeCount(); ++i)
+  {
+    if (!isLeaf(i))
+    {
+      continue;
+    }
+    const CsgExpression::Node& n = expression.NodeAt(i);
     coordinates.clear();
     if (!primitives.Meshes[n.LeafData.Primitive].CrossingCoordinates(a, b, axis, *n.Triangles, coordinates))
     {
@@ -204,9 +211,8 @@ std::optional<double> FirstChangeAmongLeafCrossings(const CsgExpression& express
       crossings.push_back({ x, i });
     }
   }
-  std::sort(crossings.begin(), crossings.end(), [](const LeafCrossing& p, const LeafCrossing& q) {
-    return p.Coordinate != q.Coordinate ? p.Coordinate < q.Coordinate : p.Node < q.Node;
-  });
+  std::sort(crossings.begin(), crossings.end(),
+    [](const LeafCrossing& p, const LeafCrossing& q) { return p.Coordinate < q.Coordinate; });
   thread_local std::vector<std::int8_t> flipped; // (per leaf node: crossed an odd number of times so far)
   flipped.assign(expression.NodeCount(), 0);
   std::optional<double> found;

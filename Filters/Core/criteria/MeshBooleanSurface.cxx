@@ -71,7 +71,7 @@ int NearPolygons(const PointSpan& corners, std::size_t leaf, const std::vector<P
     const PolygonSet& other = meshSurfaces[j];
     for (std::size_t r = 0; j != leaf && r < other.size() && near < 2; ++r)
     {
-      if (other.Bounds(r).Overlaps(reach) && !PolygonsApartBesideTheirBoxes(corners, other[r].Points, margin))
+      if (other.Bounds(r).Overlaps(reach) && !PolygonsApartBesideTheirBoxes(corners, other[r], margin))
       {
         nearest = near == 0 ? std::make_pair(j, r) : nearest;
         ++near;
@@ -104,62 +104,6 @@ void ClipToPlane(const ClippedCorners& points, ClippedCorners& out, const Vec3& 
   }
 }
 
-/// The part of polygon `q` in the plane Dot(n, x) = `offset` (`n` a unit
-/// normal): the segment between the points where its sides cross the
-/// plane, in `a` and `b`; false where it does not reach across.
-bool SectionByPlane(const ConvexPolygon& q, const Vec3& n, double offset, Vec3& a, Vec3& b)
-{
-  int found = 0;
-  const std::size_t m = q.Points.size();
-  for (std::size_t i = 0; i < m && found < 2; ++i)
-  {
-    const Vec3 &x = q.Points[i], &y = q.Points[(i + 1) % m];
-    const double sx = Dot(n, x) - offset, sy = Dot(n, y) - offset;
-    if ((sx < 0.0) != (sy < 0.0))
-    {
-      (found++ == 0 ? a : b) = x + (y - x) * (sx / (sx - sy));
-    }
-  }
-  return found == 2;
-}
-
-/// The segment [a, b] clipped to convex polygon `p` within its plane (both
-/// in it up to rounding), in place; false where nothing is left.
-bool ClipSegmentToPolygon(const ConvexPolygon& p, Vec3& a, Vec3& b)
-{
-  double t0 = 0.0, t1 = 1.0;
-  const std::size_t m = p.Points.size();
-  for (std::size_t i = 0; i < m; ++i)
-  {
-    const Vec3 inward = Cross(p.Normal, p.Points[(i + 1) % m] - p.Points[i]);
-    const double da = Dot(inward, a - p.Points[i]), db = Dot(inward, b - p.Points[i]);
-    if (da < 0.0 && db < 0.0)
-    {
-      return false;
-    }
-    if (da < 0.0 || db < 0.0)
-    {
-      const double t = da / (da - db);
-      if (da < 0.0)
-      {
-        t0 = std::max(t0, t); // (enters the polygon's side at t)
-      }
-      else
-      {
-        t1 = std::min(t1, t); // (leaves it)
-      }
-    }
-  }
-  if (!(t0 < t1))
-  {
-    return false;
-  }
-  const Vec3 d = b - a;
-  b = a + d * t1;
-  a = a + d * t0;
-  return true;
-}
-
 /// The segments where two meshes' polygons in the cell cross at
 /// FollowedCreaseDegrees or more between their planes (header of
 /// MeshBooleanSurfaceInCell), appended to `creases`.
@@ -181,7 +125,7 @@ void CrossingCreases(const std::vector<PolygonSet>& meshSurfaces, std::vector<Cr
           const ConvexPolygon q = meshSurfaces[j][k];
           Vec3 a, b;
           if (q.TwiceArea > 0.0 && std::fabs(Dot(p.Normal, q.Normal)) <= parallel &&
-            SectionByPlane(q, p.Normal, Dot(p.Normal, p.Points[0]), a, b) && ClipSegmentToPolygon(p, a, b))
+            SectionByPlane(q.Points, p.Normal, Dot(p.Normal, p.Points[0]), a, b) && ClipSegmentToPolygon(p, a, b))
           {
             creases.push_back({ a, b });
           }

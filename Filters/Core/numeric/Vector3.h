@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <utility>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -138,6 +139,32 @@ struct Box3
       sum += gap * gap;
     }
     return sum;
+  }
+  /// The segment from `p` to `q` meets the closed box (slabs; in floating
+  /// point, so a segment a rounding outside may be said to meet it).
+  bool MeetsSegment(const Vec3& p, const Vec3& q) const
+  {
+    double t0 = 0.0, t1 = 1.0;
+    for (int a = 0; a < 3; ++a)
+    {
+      const double d = q[a] - p[a];
+      if (d == 0.0)
+      {
+        if (p[a] < lo[a] || p[a] > hi[a])
+        {
+          return false;
+        }
+        continue;
+      }
+      double enter = (lo[a] - p[a]) / d, leave = (hi[a] - p[a]) / d;
+      if (enter > leave)
+      {
+        std::swap(enter, leave);
+      }
+      t0 = std::max(t0, enter);
+      t1 = std::min(t1, leave);
+    }
+    return t0 <= t1;
   }
   /// Corner `c` (bit a of c chooses hi on axis a).
   Vec3 Corner(int c) const

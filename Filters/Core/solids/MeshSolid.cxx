@@ -50,6 +50,9 @@ MeshSolid::MeshSolid(std::vector<Vec3> points, std::vector<std::array<std::uint3
 
 void MeshSolid::Index(const ParallelFor& parallelFor)
 {
+  this->Closed = std::all_of(this->Neighbours.begin(), this->Neighbours.end(), [](const auto& across) {
+    return across[0] != NoTriangle && across[1] != NoTriangle && across[2] != NoTriangle;
+  });
   this->Normals.resize(this->Faces.size());
   this->AxisFacing.resize(this->Faces.size());
   parallelFor(this->Faces.size(), [&](std::size_t begin, std::size_t end) {
@@ -217,7 +220,10 @@ bool MeshSolid::IsInside(const Vec3& p) const
   // Along x to the nearer side of the mesh's box: the same parity as the
   // other way (CrossingsAlongX), past half as many triangles of the column
   // on average.
-  const bool backward = p[0] - this->Box.lo[0] < this->Box.hi[0] - p[0];
+  // (A closed mesh only - every edge between two triangles: a line crosses
+  // it an even number of times. An open one, rejected as an input but
+  // oriented first, keeps the ray along +x.)
+  const bool backward = this->Closed && p[0] - this->Box.lo[0] < this->Box.hi[0] - p[0];
   return (this->CrossingsAlongX(p, [](std::uint32_t) { return true; }, backward) & 1) != 0;
 }
 
@@ -257,7 +263,7 @@ bool MeshSolid::PlaneCrossing(std::uint32_t t, const Vec3& a, const Vec3& b, int
   const double s = along != 0.0 ? Dot(n, p0 - a) / along : -1.0;
   if (!(s >= 0.0 && s <= 1.0))
   {
-    return false; // the segment lies in the plane (decided by the perturbation)
+    return false; // the segment lies in the plane (decided by the perturbation), or rounding put it outside
   }
   coordinate = a[axis] + s * (b[axis] - a[axis]);
   return true;
@@ -293,7 +299,10 @@ bool MeshSolid::CrossingCoordinates(
   this->ForEachCrossing(a, b, axis, triangles, [&](std::uint32_t t) {
     double coordinate = 0.0;
     placed = placed && this->PlaneCrossing(t, a, b, axis, coordinate);
-    coordinates.push_back(coordinate);
+    if (placed)
+    {
+      coordinates.push_back(coordinate);
+    }
   });
   return placed;
 }
@@ -313,37 +322,6 @@ int LowestBit(std::uint64_t bits)
   }
   return k;
 #endif
-}
-
-/// Whether the segment from a to b meets the box [-h, h] (slabs; computed in
-/// floating point, so a segment a rounding outside may be said to meet it).
-bool SegmentMeetsBox(const Vec3& a, const Vec3& b, const Vec3& h)
-{
-  double t0 = 0.0, t1 = 1.0;
-  for (int k = 0; k < 3; ++k)
-  {
-    const double d = b[k] - a[k];
-    if (d == 0.0)
-    {
-      if (a[k] < -h[k] || a[k] > h[k])
-      {
-        return false;
-      }
-      continue;
-    }
-    double enter = (-h[k] - a[k]) / d, leave = (h[k] - a[k]) / d;
-    if (enter > leave)
-    {
-      std::swap(enter, leave);
-    }
-    t0 = std::max(t0, enter);
-    t1 = std::min(t1, leave);
-    if (!(t0 <= t1))
-    {
-      return false;
-    }
-  }
-  return true;
 }
 
 /// Conservative separating-axis test: reports overlap unless a separating
@@ -373,12 +351,9 @@ bool TriangleBoxOverlap(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Bo
   // A side of the triangle passing through the box (the common case where
   // neither holds a corner of the other, cells being about the triangles'
   // size): they meet, which no axis below could deny.
-  for (int i = 0; i < 3; ++i)
+  if (box.MeetsSegment(p0, p1) || box.MeetsSegment(p1, p2) || box.MeetsSegment(p2, p0))
   {
-    if (SegmentMeetsBox(v[i], v[(i + 1) % 3], h))
-    {
-      return true;
-    }
+    return true;
   }
   const Vec3 e[3] = { v[1] - v[0], v[2] - v[1], v[0] - v[2] };
   auto separated = [&](const Vec3& axis) {

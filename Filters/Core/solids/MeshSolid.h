@@ -104,8 +104,9 @@ public:
   /// Every crossing of that segment (those CountCrossings counts): the
   /// coordinate along `axis` where it meets the crossed triangle's plane
   /// (floating point, not ordered), appended to `coordinates`. False where a
-  /// crossed triangle's plane holds the segment (the perturbation decides
-  /// it; there is no point to give).
+  /// crossed triangle's plane gives no point (PlaneCrossing: it holds the
+  /// segment, which the perturbation decides, or rounding puts the point
+  /// outside it).
   bool CrossingCoordinates(
     const Vec3& a, const Vec3& b, int axis, const TriangleList& triangles, std::vector<double>& coordinates) const;
 
@@ -134,13 +135,14 @@ public:
 private:
   /// Normals, boxes and the ray-casting grid, from the vertices and faces.
   void Index(const ParallelFor& parallelFor);
-  /// Whether the segment from a to b (differing along `axis` only, a below
-  /// b), or without b the ray from a along +axis (-axis: `backward`), crosses
-  /// triangle t, a and b perturbed as in IsInside.
+  /// Whether the segment from a to b (differing along `axis` only, a at or
+  /// below b), or without b the ray from a along +axis (-axis: `backward`),
+  /// crosses triangle t, a and b perturbed as in IsInside.
   bool Crosses(std::uint32_t t, const Vec3& a, const Vec3* b, int axis, bool backward = false) const;
   /// Where the segment from a to b (differing along `axis` only) meets
   /// triangle t's plane: its coordinate along `axis`, in `coordinate`; false
-  /// where the segment lies in the plane.
+  /// where the segment lies in the plane, or rounding puts the point outside
+  /// the segment.
   bool PlaneCrossing(std::uint32_t t, const Vec3& a, const Vec3& b, int axis, double& coordinate) const;
   /// The ray-casting grid's column (0: along y, 1: along z) of a coordinate.
   int GridColumn(int k, double coordinate) const;
@@ -155,6 +157,9 @@ private:
   std::vector<std::array<std::uint32_t, 3>> Faces;
   std::vector<Box3> FaceBoxes;
   std::vector<Vec3> Normals;
+  /// Every edge between exactly two triangles (IsInside may cast its ray
+  /// either way).
+  bool Closed = false;
   /// Each triangle's exact sign of its normal's component along each axis
   /// (Orient2D of its corners seen along that axis): read by every crossing
   /// test (Crosses), made once.

@@ -372,8 +372,8 @@ TEST(MeshBooleanSurface, PolygonsCrossingAPlaneAreApartOnlyOutsideThePolygonInIt
   // its sides (the side's outward direction in the plane separates them by
   // r) or r within it (they cross): apart by a margin below r in the first
   // case, never in the second - crossing polygons are told by where the
-  // standing one's section lies, which must not be taken for a crossing
-  // outside.
+  // standing one's section lies (PolygonsApartBesideTheirBoxes), which must
+  // not be taken for a crossing outside.
   const auto span = [](const std::vector<Vec3>& p) { return PointSpan{ p.data(), p.size() }; };
   std::uint64_t state = 2024;
   const auto uniform = [&] {
@@ -381,24 +381,30 @@ TEST(MeshBooleanSurface, PolygonsCrossingAPlaneAreApartOnlyOutsideThePolygonInIt
     return static_cast<double>(state >> 11) * 0x1.0p-53;
   };
   int apart = 0;
-  for (int trial = 0; trial < 500; ++trial)
+  for (int trial = 0; trial < 300; ++trial)
   {
+    // An equilateral triangle of side 0.6 (inradius 0.17, so a point 0.03
+    // inside a side's midpoint is well inside it), turned and moved at
+    // random.
+    const Vec3 axis = tpc::Normalized(Vec3(uniform() - 0.5, uniform() - 0.5, uniform() - 0.5));
+    const double angle = 6.0 * uniform(), c = std::cos(angle), s = std::sin(angle);
+    const Vec3 shift(uniform(), uniform(), uniform());
+    tpc::PolygonSet set;
     std::vector<Vec3> q;
     for (int k = 0; k < 3; ++k)
     {
-      q.push_back({ uniform(), uniform(), uniform() });
+      const double at = 2.0 * M_PI / 3.0 * k;
+      const Vec3 corner(0.6 / std::sqrt(3.0) * std::cos(at), 0.6 / std::sqrt(3.0) * std::sin(at), 0.0);
+      q.push_back(corner * c + tpc::Cross(axis, corner) * s + axis * (tpc::Dot(axis, corner) * (1 - c)) + shift);
     }
-    const Vec3 n = tpc::Normalized(tpc::Cross(q[1] - q[0], q[2] - q[0]));
+    set.Add(q.data(), q.size());
+    ASSERT_FALSE(set[0].Inward.empty());
+    const Vec3 n = set[0].Normal;
     const int side = trial % 3;
     const Vec3 e = tpc::Normalized(q[(side + 1) % 3] - q[side]);
-    const Vec3 outward = tpc::Cross(e, n); // (in the plane, away from the third corner)
+    const Vec3 outward = tpc::Cross(e, n); // (in the plane, away from the third corner: counter-clockwise about n)
+    ASSERT_LT(tpc::Dot(outward, q[(side + 2) % 3] - q[side]), 0.0);
     const Vec3 middle = (q[side] + q[(side + 1) % 3]) * 0.5;
-    const Vec3& third = q[(side + 2) % 3];
-    const double height = tpc::Dot(third - middle, outward * -1.0);
-    if (!(height > 0.05) || tpc::Dot(outward, third - middle) > 0.0)
-    {
-      continue; // (thin triangles: the inner point would not be inside)
-    }
     const double r = 0.01 + 0.02 * uniform();
     for (const double sign : { 1.0, -1.0 })
     {
@@ -407,10 +413,11 @@ TEST(MeshBooleanSurface, PolygonsCrossingAPlaneAreApartOnlyOutsideThePolygonInIt
       // separates them; its section by q's plane runs from x further out,
       // or further in.)
       const std::vector<Vec3> standing = { x - n * 0.3, x + n * 0.3, x + n * 0.1 + outward * (sign * 0.05) };
-      const bool found = tpc::PolygonsApart(span(standing), span(q), 0.8 * r);
+      const bool found = tpc::PolygonsApartBesideTheirBoxes(span(standing), set[0], 0.8 * r);
       EXPECT_EQ(found, sign > 0.0) << "trial " << trial;
+      EXPECT_EQ(tpc::PolygonsApart(span(standing), span(q), 0.8 * r), found) << "trial " << trial;
       apart += found ? 1 : 0;
     }
   }
-  EXPECT_GT(apart, 100);
+  EXPECT_EQ(apart, 300);
 }
