@@ -3,10 +3,10 @@
 #pragma once
 
 #include <algorithm>
-#include <utility>
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <utility>
 
 namespace tpc
 {
