@@ -9,7 +9,9 @@
 // it). They move away when the lattice is shifted by a fraction of a cell,
 // so the driver ranks candidate shifts by the length of
 // such creases each would graze and tries the best first
-// (RunOnBestLatticePlacement).
+// (RunOnBestLatticePlacement). A crease edge grazes the planes normal to the
+// axes it is flat along, so the length sums one term per axis, and the
+// shifts along each axis are ranked on their own.
 //
 // Other near-coincidences (a crease passing a hair from a lattice line, met
 // twice by it) are isolated points, as likely on any lattice; the driver's
@@ -59,13 +61,19 @@ struct LatticeSpacings
   double Finest = 1.0;  ///< the finest face-refinement samples (SampleDepth, RootGrid.h)
 };
 
-/// Length of crease (in deepest cells) a lattice with this origin grazes,
-/// weighted by closeness; 0 when none comes close.
-double LatticeShiftPenalty(const LatticeCreases& creases, const Vec3& origin, const LatticeSpacings& spacings);
+/// Length of crease (in deepest cells) the lattice planes normal to `axis`
+/// graze when one of them passes through `origin` (along that axis),
+/// weighted by closeness; 0 when none comes close. A lattice's penalty is the
+/// sum of its three axes' (each crease edge is counted along the axes it is
+/// flat along).
+double LatticeAxisPenalty(const LatticeCreases& creases, int axis, double origin, const LatticeSpacings& spacings);
 
 /// Shifts (each component in [0, LatticeSpacings::Surface), to subtract from
-/// the origin of `base`) best first, at most `count`. The zero shift comes
-/// first among equals, so scenes without meshes keep MakeRootGrid's lattice.
+/// the origin of `base`) best first, at most `count`: the k-th made of the
+/// k-th best shift along each axis, so the first is the best of every
+/// combination tried and each next one differs along every axis. The zero
+/// shift comes first among equals, so scenes without meshes keep
+/// MakeRootGrid's lattice.
 /// Stops early, returning no shift, when `progress` asks to abort.
 std::vector<Vec3> RankLatticeShifts(const PrimitiveSet& primitives, const RootGrid& base,
   double hausdorffTolerance, int maximumDepth, int count, const ParallelFor& parallelFor = SequentialFor,

@@ -98,6 +98,48 @@ TEST(LatticePlacement, FaceInAPlaneIsKeptBetweenTheDeepestPlanes)
   EXPECT_GT(DistanceToPlanes(top, base.Origin[2] - shifts[0][2], deepest), 0.4 * deepest);
 }
 
+TEST(LatticePlacement, EachAxisIsRankedOnItsOwnAndRetriesMoveEveryAxis)
+{
+  // A box whose top and right faces lie on deepest planes of the unshifted
+  // lattice: flat along z and along x. The penalty sums one term per axis,
+  // so each axis's shifts are ranked on their own: the k-th shift is made of
+  // the k-th along each axis (NearTie apart), and every retry moves the
+  // lattice along every axis.
+  const RootGrid base = tpc::MakeRootGrid(Domain, Tolerance, MaximumDepth);
+  const double deepest = std::ldexp(base.RootSize, -MaximumDepth);
+  const auto onPlane = [&](double x, int a) { return base.Origin[a] + std::round((x - base.Origin[a]) / deepest) * deepest; };
+  const double top = onPlane(0.4, 2), right = onPlane(0.35, 0);
+  tpc::PrimitiveSet prims;
+  prims.Meshes.push_back(tpctest::CubeMesh({ -0.3, -0.3, -0.3 }, { right, 0.3, top }));
+  const std::vector<Vec3> shifts = tpc::RankLatticeShifts(prims, base, Tolerance, MaximumDepth, 3);
+  ASSERT_EQ(shifts.size(), 3u);
+
+  tpc::LatticeSpacings spacings;
+  spacings.Surface = SurfaceSpacing(base);
+  spacings.Deepest = deepest;
+  spacings.Finest = std::ldexp(base.RootSize, -tpc::SampleDepth(base, MaximumDepth));
+  const tpc::LatticeCreases creases = tpc::FindLatticeCreases(prims, 4.0 * spacings.Surface, spacings.Finest);
+  ASSERT_FALSE(creases.InPlane[0].empty());
+  ASSERT_FALSE(creases.InPlane[2].empty());
+  for (int a = 0; a < 3; ++a)
+  {
+    const auto penalty = [&](const Vec3& s) {
+      return tpc::LatticeAxisPenalty(creases, a, base.Origin[a] - s[a], spacings);
+    };
+    for (std::size_t k = 1; k < shifts.size(); ++k)
+    {
+      EXPECT_LE(penalty(shifts[0]), 1.05 * penalty(shifts[k])) << "axis " << a << ", shift " << k;
+      for (std::size_t l = 0; l < k; ++l)
+      {
+        EXPECT_NE(shifts[k][a], shifts[l][a]) << "axis " << a << ", shifts " << l << " and " << k;
+      }
+    }
+  }
+  // The faces kept between the deepest planes, along both of their axes.
+  EXPECT_GT(DistanceToPlanes(top, base.Origin[2] - shifts[0][2], deepest), 0.4 * deepest);
+  EXPECT_GT(DistanceToPlanes(right, base.Origin[0] - shifts[0][0], deepest), 0.4 * deepest);
+}
+
 TEST(LatticePlacement, ScenesWithoutMeshesKeepTheUnshiftedLatticeFirst)
 {
   const RootGrid base = tpc::MakeRootGrid(Domain, Tolerance, MaximumDepth);
