@@ -97,9 +97,14 @@ bool TriangleIsDegenerate(const Vec3& a, const Vec3& b, const Vec3& c)
   return ProjectionAxis(a, b, c) < 0;
 }
 
-bool SegmentMeetsTriangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c)
+namespace
 {
-  const int sp = Orient3D(a, b, c, p), sq = Orient3D(a, b, c, q);
+/// SegmentMeetsTriangle, with p's and q's sides of abc's plane known: `sp` =
+/// Orient3D(a, b, c, p), `sq` = Orient3D(a, b, c, q) (the triangle tests have
+/// them already: every side is computed once).
+bool SegmentMeetsTriangleWithSides(
+  const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c, int sp, int sq)
+{
   if (sp != 0 && sp == sq)
   {
     return false;
@@ -119,6 +124,12 @@ bool SegmentMeetsTriangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec
   // same side of (or through) all three edges.
   const int e1 = Orient3D(p, q, a, b), e2 = Orient3D(p, q, b, c), e3 = Orient3D(p, q, c, a);
   return (e1 >= 0 && e2 >= 0 && e3 >= 0) || (e1 <= 0 && e2 <= 0 && e3 <= 0);
+}
+} // namespace
+
+bool SegmentMeetsTriangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  return SegmentMeetsTriangleWithSides(p, q, a, b, c, Orient3D(a, b, c, p), Orient3D(a, b, c, q));
 }
 
 bool TrianglesIntersect(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, const Vec3& e,
@@ -140,10 +151,11 @@ bool TrianglesIntersect(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3&
   {
     return false;
   }
-  // Non-coplanar triangles meet iff an edge of one meets the other.
-  return SegmentMeetsTriangle(a, b, d, e, f) || SegmentMeetsTriangle(b, c, d, e, f) ||
-    SegmentMeetsTriangle(c, a, d, e, f) || SegmentMeetsTriangle(d, e, a, b, c) ||
-    SegmentMeetsTriangle(e, f, a, b, c) || SegmentMeetsTriangle(f, d, a, b, c);
+  // Non-coplanar triangles meet iff an edge of one meets the other (the
+  // edges' ends' sides are the r's and s's).
+  return SegmentMeetsTriangleWithSides(a, b, d, e, f, r1, r2) || SegmentMeetsTriangleWithSides(b, c, d, e, f, r2, r3) ||
+    SegmentMeetsTriangleWithSides(c, a, d, e, f, r3, r1) || SegmentMeetsTriangleWithSides(d, e, a, b, c, s1, s2) ||
+    SegmentMeetsTriangleWithSides(e, f, a, b, c, s2, s3) || SegmentMeetsTriangleWithSides(f, d, a, b, c, s3, s1);
 }
 
 namespace
@@ -243,11 +255,12 @@ bool MeetBeyondSharedVertex(const Vec3* P, const Triangle& t1, const Triangle& t
   // overlap beyond the vertex.
   const Vec3 &o1a = P[t1[(i1 + 1) % 3]], &o1b = P[t1[(i1 + 2) % 3]];
   const Vec3 &o2a = P[t2[(i2 + 1) % 3]], &o2b = P[t2[(i2 + 2) % 3]];
-  if (SegmentMeetsTriangle(o1a, o1b, d, e, f) || SegmentMeetsTriangle(o2a, o2b, a, b, c))
+  const int s2a = Orient3D(a, b, c, o2a), s2b = Orient3D(a, b, c, o2b);
+  if (SegmentMeetsTriangle(o1a, o1b, d, e, f) || SegmentMeetsTriangleWithSides(o2a, o2b, a, b, c, s2a, s2b))
   {
     return true;
   }
-  if (Orient3D(a, b, c, o2a) == 0 && Orient3D(a, b, c, o2b) == 0)
+  if (s2a == 0 && s2b == 0)
   {
     // Coplanar fan around the shared vertex: overlap iff a side edge of one
     // enters the other (the opposite edges were tested above).

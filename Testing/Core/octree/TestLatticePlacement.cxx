@@ -107,7 +107,9 @@ TEST(LatticePlacement, EachAxisIsRankedOnItsOwnAndRetriesMoveEveryAxis)
   // lattice along every axis.
   const RootGrid base = tpc::MakeRootGrid(Domain, Tolerance, MaximumDepth);
   const double deepest = std::ldexp(base.RootSize, -MaximumDepth);
-  const auto onPlane = [&](double x, int a) { return base.Origin[a] + std::round((x - base.Origin[a]) / deepest) * deepest; };
+  const auto onPlane = [&](double x, int a) {
+    return base.Origin[a] + std::round((x - base.Origin[a]) / deepest) * deepest;
+  };
   const double top = onPlane(0.4, 2), right = onPlane(0.35, 0);
   tpc::PrimitiveSet prims;
   prims.Meshes.push_back(tpctest::CubeMesh({ -0.3, -0.3, -0.3 }, { right, 0.3, top }));
