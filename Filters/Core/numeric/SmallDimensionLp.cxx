@@ -68,8 +68,18 @@ bool SolveOneDimension(const LpHalfSpace* cons, std::size_t n, double c, double 
   return true;
 }
 
+/// The reduced constraints of each dimension's subproblems, kept across
+/// Seidel's recursion: a subproblem is built only after the one before it
+/// in that dimension is solved, so one buffer per dimension serves them all
+/// (a vector per violated constraint was a tenth of the turbine's kernel
+/// LPs' instructions).
+struct ReducedConstraints
+{
+  std::vector<LpHalfSpace> ByDimension[MaxLpDimension];
+};
+
 bool Solve(int d, const LpHalfSpace* cons, std::size_t n, const double* c, const double* lo,
-  const double* hi, double* x);
+  const double* hi, double* x, ReducedConstraints& reduced);
 
 /// The hyperplane a.x = b solved for its variable of largest coefficient k:
 /// on it, x_k = Beta - sum_j Gamma_j x_j.
@@ -123,7 +133,7 @@ struct Elimination
 /// problem restricted to that hyperplane, one dimension lower. False when
 /// infeasible.
 bool OptimumOnBoundary(int d, const LpHalfSpace* cons, std::size_t i, const double* c, const double* lo,
-  const double* hi, double* x)
+  const double* hi, double* x, ReducedConstraints& reduced)
 {
   Elimination e;
   if (!e.Of(cons[i], d))
@@ -131,8 +141,8 @@ bool OptimumOnBoundary(int d, const LpHalfSpace* cons, std::size_t i, const doub
     return false; // 0 <= B < 0
   }
   const int k = e.K;
-  std::vector<LpHalfSpace> sub;
-  sub.reserve(i + 2);
+  std::vector<LpHalfSpace>& sub = reduced.ByDimension[d - 2];
+  sub.clear();
   double unit[MaxLpDimension] = {};
   unit[k] = 1.0;
   sub.push_back(e.Reduce(unit, hi[k])); // x_k <= hi_k
@@ -155,7 +165,7 @@ bool OptimumOnBoundary(int d, const LpHalfSpace* cons, std::size_t i, const doub
     }
   }
   double y[MaxLpDimension] = {};
-  if (!Solve(d - 1, sub.data(), sub.size(), subC, subLo, subHi, y))
+  if (!Solve(d - 1, sub.data(), sub.size(), subC, subLo, subHi, y, reduced))
   {
     return false;
   }
@@ -178,7 +188,7 @@ bool OptimumOnBoundary(int d, const LpHalfSpace* cons, std::size_t i, const doub
 /// when optima are not unique, by convexity), so solve the problem restricted
 /// to that hyperplane, one dimension lower.
 bool Solve(int d, const LpHalfSpace* cons, std::size_t n, const double* c, const double* lo,
-  const double* hi, double* x)
+  const double* hi, double* x, ReducedConstraints& reduced)
 {
   if (d == 1)
   {
@@ -190,7 +200,8 @@ bool Solve(int d, const LpHalfSpace* cons, std::size_t n, const double* c, const
   }
   for (std::size_t i = 0; i < n; ++i)
   {
-    if (Dot(cons[i], x, d) > cons[i].B + Slack(cons[i], x, d) && !OptimumOnBoundary(d, cons, i, c, lo, hi, x))
+    if (Dot(cons[i], x, d) > cons[i].B + Slack(cons[i], x, d) &&
+      !OptimumOnBoundary(d, cons, i, c, lo, hi, x, reduced))
     {
       return false;
     }
@@ -227,8 +238,9 @@ LpSolution SolveSmallDimensionLp(int dimension, const std::vector<LpHalfSpace>& 
     z ^= z >> 31;
     std::swap(shuffled[i - 1], shuffled[z % i]);
   }
+  ReducedConstraints reduced;
   result.Feasible =
-    Solve(dimension, shuffled.data(), shuffled.size(), c.data(), lo.data(), hi.data(), result.X.data());
+    Solve(dimension, shuffled.data(), shuffled.size(), c.data(), lo.data(), hi.data(), result.X.data(), reduced);
   if (result.Feasible)
   {
     for (int j = 0; j < dimension; ++j)
