@@ -75,7 +75,7 @@ bool SolveOneDimension(const LpHalfSpace* cons, std::size_t n, double c, double 
 /// LPs' instructions).
 struct ReducedConstraints
 {
-  std::vector<LpHalfSpace> ByDimension[MaxLpDimension];
+  std::vector<LpHalfSpace> ByDimension[MaxLpDimension - 1]; ///< [d - 2]: the subproblems of dimension d - 1
 };
 
 bool Solve(int d, const LpHalfSpace* cons, std::size_t n, const double* c, const double* lo,

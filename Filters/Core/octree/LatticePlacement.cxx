@@ -6,7 +6,6 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <utility>
 
 namespace tpc
 {
@@ -221,9 +220,7 @@ double LatticeAxisPenalty(const LatticeCreases& creases, int axis, double origin
   return penalty;
 }
 
-namespace
-{
-LatticeSpacings SpacingsOf(const RootGrid& base, double hausdorffTolerance, int maximumDepth)
+LatticeSpacings LatticeSpacingsOf(const RootGrid& base, double hausdorffTolerance, int maximumDepth)
 {
   LatticeSpacings spacings;
   int level = 0;
@@ -237,6 +234,16 @@ LatticeSpacings SpacingsOf(const RootGrid& base, double hausdorffTolerance, int 
   return spacings;
 }
 
+double LatticeAxisShift(std::size_t k, int axis, double spacing)
+{
+  // (The R3 sequence's steps, one per axis.)
+  const Vec3 step(0.8191725134, 0.6710436067, 0.5497004779);
+  const double f = static_cast<double>(k) * step[axis];
+  return (f - std::floor(f)) * spacing;
+}
+
+namespace
+{
 struct PricedShift
 {
   double Penalty = 0.0;
@@ -245,30 +252,33 @@ struct PricedShift
 
 /// The first `picks` of one axis's shifts (`priced`, in the sequence's
 /// order), best first, picked one at a time: the first in the sequence of
-/// those left whose penalty is within NearTie of the least left. The penalty
-/// weighs lengths by a judgement of closeness, and which edges count as flat
-/// turns on their coordinates' rounding: the 16 x 12 sphere of
-/// Filter.BadInputs scaled by 1e9 has 83.96 where the unit one has 86.57 (and
-/// 85.27 at another shift), and the lattice should not move for that.
+/// those left whose penalty is within LatticeNearTie of the least left (a
+/// penalty that is not a number counts as infinite). The penalty weighs
+/// lengths by a judgement of closeness, and which edges count as flat turns
+/// on their coordinates' rounding: the 16 x 12 sphere of Filter.BadInputs
+/// scaled by 1e9 has 83.96 where the unit one has 86.57 (and 85.27 at
+/// another shift), and the lattice should not move for that.
 std::vector<double> AxisShiftsInOrder(const std::vector<PricedShift>& priced, std::size_t picks)
 {
-  constexpr double NearTie = 0.05;
+  const auto penalty = [&](std::size_t k) {
+    return std::isnan(priced[k].Penalty) ? HUGE_VAL : priced[k].Penalty;
+  };
   std::vector<std::uint8_t> taken(priced.size(), 0);
   std::vector<double> shifts;
   while (shifts.size() < std::min(picks, priced.size()))
   {
-    double least = HUGE_VAL;
+    std::size_t least = priced.size();
     for (std::size_t k = 0; k < priced.size(); ++k)
     {
-      least = taken[k] ? least : std::min(least, priced[k].Penalty);
+      least = !taken[k] && (least == priced.size() || penalty(k) < penalty(least)) ? k : least;
     }
-    std::size_t k = 0;
-    while (taken[k] || priced[k].Penalty > least * (1.0 + NearTie))
+    std::size_t pick = 0;
+    while (pick < least && (taken[pick] || penalty(pick) > penalty(least) * (1.0 + LatticeNearTie)))
     {
-      ++k;
+      ++pick;
     }
-    taken[k] = 1;
-    shifts.push_back(priced[k].Shift);
+    taken[pick] = 1;
+    shifts.push_back(priced[pick].Shift);
   }
   return shifts;
 }
@@ -278,15 +288,8 @@ std::vector<Vec3> RankLatticeShifts(const PrimitiveSet& primitives, const RootGr
   double hausdorffTolerance, int maximumDepth, int count, const ParallelFor& parallelFor,
   const ProgressCallback& progress)
 {
-  const LatticeSpacings spacings = SpacingsOf(base, hausdorffTolerance, maximumDepth);
-  // Shifts along each axis: none, then a low-discrepancy (Kronecker)
-  // sequence of fractions of the surface cells, one step per axis (the R3
-  // sequence's: MakeRootGrid leaves a margin of a cell).
-  const Vec3 step(0.8191725134, 0.6710436067, 0.5497004779);
-  const auto axisShift = [&](std::size_t k, int a) {
-    const double f = static_cast<double>(k) * step[a];
-    return (f - std::floor(f)) * spacings.Surface;
-  };
+  const LatticeSpacings spacings = LatticeSpacingsOf(base, hausdorffTolerance, maximumDepth);
+  const std::size_t picks = static_cast<std::size_t>(std::clamp(count, 0, static_cast<int>(LatticeShiftsPerAxis)));
   const LatticeCreases creases = primitives.Meshes.empty()
     ? LatticeCreases{}
     : FindLatticeCreases(primitives, 4.0 * spacings.Surface, spacings.Finest, parallelFor);
@@ -298,33 +301,35 @@ std::vector<Vec3> RankLatticeShifts(const PrimitiveSet& primitives, const RootGr
   if (primitives.Meshes.empty())
   {
     // Nothing grazes: the sequence in order, the unshifted lattice first.
-    for (std::size_t k = 0; static_cast<int>(k) < count; ++k)
+    for (std::size_t k = 0; k < picks; ++k)
     {
-      shifts.emplace_back(axisShift(k, 0), axisShift(k, 1), axisShift(k, 2));
+      const double s = spacings.Surface;
+      shifts.emplace_back(LatticeAxisShift(k, 0, s), LatticeAxisShift(k, 1, s), LatticeAxisShift(k, 2, s));
     }
     return shifts;
   }
   // The penalty is a sum of one term per axis, each a function of the
   // origin's coordinate along that axis alone (LatticeAxisPenalty): each
   // axis's shifts are ranked on their own, and the k-th shift returned is
-  // made of the k-th best along each axis - the best first of all
-  // ShiftsPerAxis^3 combinations for the price of 3 ShiftsPerAxis penalties
-  // (until 2026-12-07, 64 shifts of the joint sequence, each priced whole:
-  // 4.8 % of armadillo's instructions at 1/128), and each retry moves the
-  // lattice along every axis, whichever axis made the near-coincidence it is
-  // there to move (BestLatticePlacement.h).
-  constexpr std::size_t ShiftsPerAxis = 16;
+  // made of the k-th best along each axis (AxisShiftsInOrder) - first, one
+  // within LatticeNearTie of the best of all LatticeShiftsPerAxis^3
+  // combinations (each axis's term is), for the price of 3
+  // LatticeShiftsPerAxis penalties (until 2026-12-07, 64 shifts of the joint
+  // sequence, each priced whole: 4.8 % of armadillo's instructions at
+  // 1/128) - and each retry moves the lattice along every axis, whichever
+  // axis made the near-coincidence it is there to move
+  // (BestLatticePlacement.h).
   std::array<std::vector<PricedShift>, 3> priced; // in the sequence's order, per axis
   for (auto& p : priced)
   {
-    p.resize(ShiftsPerAxis);
+    p.resize(LatticeShiftsPerAxis);
   }
-  const bool done = ChunkedFor(3 * ShiftsPerAxis, 4, parallelFor, [&](std::size_t begin, std::size_t end) {
+  const bool done = ChunkedFor(3 * LatticeShiftsPerAxis, 4, parallelFor, [&](std::size_t begin, std::size_t end) {
     for (std::size_t j = begin; j < end; ++j)
     {
-      const int a = static_cast<int>(j / ShiftsPerAxis);
-      const std::size_t k = j % ShiftsPerAxis;
-      const double shift = axisShift(k, a);
+      const int a = static_cast<int>(j / LatticeShiftsPerAxis);
+      const std::size_t k = j % LatticeShiftsPerAxis;
+      const double shift = LatticeAxisShift(k, a, spacings.Surface);
       priced[a][k] = { LatticeAxisPenalty(creases, a, base.Origin[a] - shift, spacings), shift };
     }
   }, ProgressRange(progress, 0.1, 1.0));
@@ -332,7 +337,6 @@ std::vector<Vec3> RankLatticeShifts(const PrimitiveSet& primitives, const RootGr
   {
     return {};
   }
-  const std::size_t picks = std::min(ShiftsPerAxis, static_cast<std::size_t>(std::max(count, 0)));
   const std::array<std::vector<double>, 3> picked = { AxisShiftsInOrder(priced[0], picks),
     AxisShiftsInOrder(priced[1], picks), AxisShiftsInOrder(priced[2], picks) };
   for (std::size_t k = 0; k < picks; ++k)

@@ -23,6 +23,7 @@
 #include "RootGrid.h"
 
 #include <array>
+#include <cstddef>
 #include <vector>
 
 namespace tpc
@@ -61,6 +62,19 @@ struct LatticeSpacings
   double Finest = 1.0;  ///< the finest face-refinement samples (SampleDepth, RootGrid.h)
 };
 
+/// Those of the lattice `base` for the tolerance and depth given.
+LatticeSpacings LatticeSpacingsOf(const RootGrid& base, double hausdorffTolerance, int maximumDepth);
+
+/// Shifts priced along each axis (RankLatticeShifts), and how far above the
+/// least a penalty still counts as a tie.
+constexpr std::size_t LatticeShiftsPerAxis = 16;
+constexpr double LatticeNearTie = 0.05;
+
+/// The k-th shift along `axis` the ranking prices: none for k = 0, then a
+/// low-discrepancy (Kronecker) sequence of fractions of `spacing`
+/// (LatticeSpacings::Surface; MakeRootGrid leaves a margin of a cell).
+double LatticeAxisShift(std::size_t k, int axis, double spacing);
+
 /// Length of crease (in deepest cells) the lattice planes normal to `axis`
 /// graze when one of them passes through `origin` (along that axis),
 /// weighted by closeness; 0 when none comes close. A lattice's penalty is the
@@ -69,12 +83,14 @@ struct LatticeSpacings
 double LatticeAxisPenalty(const LatticeCreases& creases, int axis, double origin, const LatticeSpacings& spacings);
 
 /// Shifts (each component in [0, LatticeSpacings::Surface), to subtract from
-/// the origin of `base`) best first, at most `count`: the k-th made of the
-/// k-th best shift along each axis, so the first is the best of every
-/// combination tried and each next one differs along every axis. The zero
-/// shift comes first among equals, so scenes without meshes keep
-/// MakeRootGrid's lattice.
-/// Stops early, returning no shift, when `progress` asks to abort.
+/// the origin of `base`) best first, min(count, LatticeShiftsPerAxis) of
+/// them (none for count <= 0): the k-th made of the k-th best shift along
+/// each axis (near ties in the sequence's order), so the first is within
+/// LatticeNearTie of the best of every combination tried and each next one
+/// differs along every axis. The zero shift comes first among equals, so
+/// scenes without meshes keep MakeRootGrid's lattice (and take the
+/// sequence's next shifts in its order). Stops early, returning no shift,
+/// when `progress` asks to abort.
 std::vector<Vec3> RankLatticeShifts(const PrimitiveSet& primitives, const RootGrid& base,
   double hausdorffTolerance, int maximumDepth, int count, const ParallelFor& parallelFor = SequentialFor,
   const ProgressCallback& progress = nullptr);

@@ -255,8 +255,12 @@ bool MeetBeyondSharedVertex(const Vec3* P, const Triangle& t1, const Triangle& t
   // overlap beyond the vertex.
   const Vec3 &o1a = P[t1[(i1 + 1) % 3]], &o1b = P[t1[(i1 + 2) % 3]];
   const Vec3 &o2a = P[t2[(i2 + 1) % 3]], &o2b = P[t2[(i2 + 2) % 3]];
+  if (SegmentMeetsTriangle(o1a, o1b, d, e, f))
+  {
+    return true;
+  }
   const int s2a = Orient3D(a, b, c, o2a), s2b = Orient3D(a, b, c, o2b);
-  if (SegmentMeetsTriangle(o1a, o1b, d, e, f) || SegmentMeetsTriangleWithSides(o2a, o2b, a, b, c, s2a, s2b))
+  if (SegmentMeetsTriangleWithSides(o2a, o2b, a, b, c, s2a, s2b))
   {
     return true;
   }

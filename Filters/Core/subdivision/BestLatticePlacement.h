@@ -21,12 +21,13 @@ namespace tpc
 constexpr int LatticePlacements = 3;
 
 /// The subdivision on the best lattice placement. The root grid of
-/// MakeRootGrid is shifted by less than the deepest cell, first by the shift
-/// that keeps lattice planes and lines furthest from the meshes' creases
-/// (LatticePlacement.h); while cells remain unresolved (and the cell limit
-/// was not the cause) the next best shifts are tried, up to
-/// `maximumPlacements`, and the run with the fewest unresolved cells is
-/// kept. Progress rises monotonically over all placements (a run that
+/// MakeRootGrid is shifted by less than a cell of the level below the
+/// tolerance's (LatticeSpacings::Surface), first by the shift that keeps
+/// lattice planes furthest from the meshes' creases (LatticePlacement.h);
+/// while cells remain unresolved (and the cell limit was not the cause) the
+/// ranking's next shifts, each moving the lattice along every axis, are
+/// tried, up to `maximumPlacements`, and the run with the fewest unresolved
+/// cells is kept. Progress rises monotonically over all placements (a run that
 /// needs no retry may jump to 1 at its end).
 struct PlacedSubdivision
 {

@@ -102,9 +102,10 @@ TEST(LatticePlacement, EachAxisIsRankedOnItsOwnAndRetriesMoveEveryAxis)
 {
   // A box whose top and right faces lie on deepest planes of the unshifted
   // lattice: flat along z and along x. The penalty sums one term per axis,
-  // so each axis's shifts are ranked on their own: the k-th shift is made of
-  // the k-th along each axis (NearTie apart), and every retry moves the
-  // lattice along every axis.
+  // so each axis's shifts are ranked on their own: the first shift's term
+  // along each axis is within LatticeNearTie of the least of that axis's
+  // LatticeShiftsPerAxis shifts, the k-th's no more than the later ones' (up
+  // to the same tie), and every retry moves the lattice along every axis.
   const RootGrid base = tpc::MakeRootGrid(Domain, Tolerance, MaximumDepth);
   const double deepest = std::ldexp(base.RootSize, -MaximumDepth);
   const auto onPlane = [&](double x, int a) {
@@ -116,21 +117,27 @@ TEST(LatticePlacement, EachAxisIsRankedOnItsOwnAndRetriesMoveEveryAxis)
   const std::vector<Vec3> shifts = tpc::RankLatticeShifts(prims, base, Tolerance, MaximumDepth, 3);
   ASSERT_EQ(shifts.size(), 3u);
 
-  tpc::LatticeSpacings spacings;
-  spacings.Surface = SurfaceSpacing(base);
-  spacings.Deepest = deepest;
-  spacings.Finest = std::ldexp(base.RootSize, -tpc::SampleDepth(base, MaximumDepth));
+  const tpc::LatticeSpacings spacings = tpc::LatticeSpacingsOf(base, Tolerance, MaximumDepth);
+  EXPECT_EQ(spacings.Deepest, deepest);
+  EXPECT_EQ(spacings.Surface, SurfaceSpacing(base));
   const tpc::LatticeCreases creases = tpc::FindLatticeCreases(prims, 4.0 * spacings.Surface, spacings.Finest);
   ASSERT_FALSE(creases.InPlane[0].empty());
   ASSERT_FALSE(creases.InPlane[2].empty());
+  const double tie = 1.0 + tpc::LatticeNearTie;
   for (int a = 0; a < 3; ++a)
   {
-    const auto penalty = [&](const Vec3& s) {
-      return tpc::LatticeAxisPenalty(creases, a, base.Origin[a] - s[a], spacings);
+    const auto penalty = [&](double shift) {
+      return tpc::LatticeAxisPenalty(creases, a, base.Origin[a] - shift, spacings);
     };
+    double least = HUGE_VAL;
+    for (std::size_t k = 0; k < tpc::LatticeShiftsPerAxis; ++k)
+    {
+      least = std::min(least, penalty(tpc::LatticeAxisShift(k, a, spacings.Surface)));
+    }
+    EXPECT_LE(penalty(shifts[0][a]), tie * least) << "axis " << a;
     for (std::size_t k = 1; k < shifts.size(); ++k)
     {
-      EXPECT_LE(penalty(shifts[0]), 1.05 * penalty(shifts[k])) << "axis " << a << ", shift " << k;
+      EXPECT_LE(penalty(shifts[k - 1][a]), tie * penalty(shifts[k][a])) << "axis " << a << ", shift " << k;
       for (std::size_t l = 0; l < k; ++l)
       {
         EXPECT_NE(shifts[k][a], shifts[l][a]) << "axis " << a << ", shifts " << l << " and " << k;
