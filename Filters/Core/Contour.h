@@ -95,8 +95,9 @@ struct ContourParameters
   /// solid's bounding box, without clipping; it must contain the solid (to
   /// 1 % of its diagonal). For tests that place the lattice on purpose.
   std::optional<Box3> Region;
-  /// At most this many lattice placements (LatticePlacement.h); fewer when
-  /// the inputs violate the assumptions or the pieces cannot agree.
+  /// At most this many lattice placements (LatticePlacement.h: no more than
+  /// LatticeShiftsPerAxis, 16); fewer when the inputs violate the
+  /// assumptions or the pieces cannot agree.
   int LatticePlacements = tpc::LatticePlacements;
   /// Decimate the extracted surface, every collapse certified to keep the
   /// tolerance, the embedding, the topology and the features
