@@ -195,31 +195,12 @@ double PolygonSet::Distance(const Vec3& p, std::size_t i) const
 
 bool ClipSegment(Vec3& a, Vec3& b, const Box3& box)
 {
-  // Liang-Barsky: the parameters of ab inside each slab.
   double t0 = 0.0, t1 = 1.0;
-  const Vec3 d = b - a;
-  for (int axis = 0; axis < 3; ++axis)
+  if (!box.SegmentWithin(a, b, t0, t1))
   {
-    if (d[axis] == 0.0)
-    {
-      if (a[axis] < box.lo[axis] || a[axis] > box.hi[axis])
-      {
-        return false;
-      }
-      continue;
-    }
-    double lo = (box.lo[axis] - a[axis]) / d[axis], hi = (box.hi[axis] - a[axis]) / d[axis];
-    if (lo > hi)
-    {
-      std::swap(lo, hi);
-    }
-    t0 = std::max(t0, lo);
-    t1 = std::min(t1, hi);
-    if (t0 > t1)
-    {
-      return false;
-    }
+    return false;
   }
+  const Vec3 d = b - a;
   const Vec3 start = a + d * t0, end = a + d * t1;
   a = start;
   b = end;
@@ -367,7 +348,9 @@ bool ClipSegmentToPolygon(const ConvexPolygon& p, Vec3& a, Vec3& b)
   const std::size_t m = p.Points.size();
   for (std::size_t i = 0; i < m; ++i)
   {
-    const Vec3 inward = Cross(p.Normal, p.Points[(i + 1) % m] - p.Points[i]);
+    // (A polygon of a set measured by its plane has its sides' inward
+    // normals made already, PolygonSet::Add, the same product.)
+    const Vec3 inward = p.Inward.empty() ? Cross(p.Normal, p.Points[(i + 1) % m] - p.Points[i]) : p.Inward[i];
     const double da = Dot(inward, a - p.Points[i]), db = Dot(inward, b - p.Points[i]);
     if (da < 0.0 && db < 0.0)
     {

@@ -145,6 +145,15 @@ struct Box3
   bool MeetsSegment(const Vec3& p, const Vec3& q) const
   {
     double t0 = 0.0, t1 = 1.0;
+    return this->SegmentWithin(p, q, t0, t1);
+  }
+  /// The part of the segment p + t (q - p), t in [t0, t1] = [0, 1], within
+  /// the closed box (Liang-Barsky: the parameters within each slab), in `t0`
+  /// and `t1`; false where there is none (then t0 and t1 are undefined).
+  bool SegmentWithin(const Vec3& p, const Vec3& q, double& t0, double& t1) const
+  {
+    t0 = 0.0;
+    t1 = 1.0;
     for (int a = 0; a < 3; ++a)
     {
       const double d = q[a] - p[a];
