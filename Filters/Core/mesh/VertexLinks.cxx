@@ -79,8 +79,15 @@ VertexTriangles::VertexTriangles(const Triangle* triangles, std::size_t triangle
 bool CountNonManifoldVertices(const Triangle* triangles, std::size_t triangleCount, std::size_t vertexCount,
   std::int64_t& count, const ParallelFor& parallelFor, const ProgressCallback& progress)
 {
-  const std::size_t nv = vertexCount;
-  const VertexTriangles around(triangles, triangleCount, vertexCount);
+  return CountNonManifoldVertices(
+    triangles, VertexTriangles(triangles, triangleCount, vertexCount), nullptr, count, parallelFor, progress);
+}
+
+bool CountNonManifoldVertices(const Triangle* triangles, const VertexTriangles& around,
+  const std::uint8_t* knownOneCycle, std::int64_t& count, const ParallelFor& parallelFor,
+  const ProgressCallback& progress)
+{
+  const std::size_t nv = around.Start.size() - 1;
   // (A sum: the same count for any number of threads.)
   std::atomic<std::int64_t> pinched{ 0 };
   const bool done = ChunkedFor(nv, std::size_t(1) << 18, parallelFor, [&](std::size_t begin, std::size_t end) {
@@ -88,7 +95,8 @@ bool CountNonManifoldVertices(const Triangle* triangles, std::size_t triangleCou
     for (std::size_t v = begin; v < end; ++v)
     {
       const std::size_t m = around.Count(v);
-      here += m > 0 && !HasOneCycleLink(triangles, static_cast<std::uint32_t>(v), around.Of(v), m);
+      here += m > 0 && !(knownOneCycle && knownOneCycle[v]) &&
+        !HasOneCycleLink(triangles, static_cast<std::uint32_t>(v), around.Of(v), m);
     }
     pinched += here;
   }, progress);

@@ -38,4 +38,11 @@ struct VertexTriangles
 bool CountNonManifoldVertices(const Triangle* triangles, std::size_t triangleCount, std::size_t vertexCount,
   std::int64_t& count, const ParallelFor& parallelFor = SequentialFor, const ProgressCallback& progress = nullptr);
 
+/// The same with the table `around` of those triangles, passing over the
+/// vertices v with knownOneCycle[v] != 0 (null: none), whose triangles the
+/// caller has found to form one cycle (EmbeddedStars.h).
+bool CountNonManifoldVertices(const Triangle* triangles, const VertexTriangles& around,
+  const std::uint8_t* knownOneCycle, std::int64_t& count, const ParallelFor& parallelFor = SequentialFor,
+  const ProgressCallback& progress = nullptr);
+
 } // namespace tpc

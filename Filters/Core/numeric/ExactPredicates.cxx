@@ -15,16 +15,8 @@ struct Difference
   double X, Y;
 };
 
-// Floating-point filters with Shewchuk's a-priori error bounds ("Adaptive
-// Precision Floating-Point Arithmetic and Fast Robust Geometric Predicates",
-// 1997, the bounds ccwerrboundA and o3derrboundA): when |det| exceeds the
-// bound, its sign is exact. Several times cheaper than the interval filter
-// (no rounding-mode arithmetic), which stays as the second stage. Products
-// below MinimumMagnitude could have underflowed: those go to the next stage.
-constexpr double Epsilon = 1.1102230246251565e-16; // 2^-53
-constexpr double Orient2DBound = (3.0 + 16.0 * Epsilon) * Epsilon;
-constexpr double Orient3DBound = (7.0 + 56.0 * Epsilon) * Epsilon;
-constexpr double MinimumMagnitude = 1e-200;
+using predicates::MinimumMagnitude;
+using predicates::Orient3DBound;
 
 /// +1, -1, or 0 when the filter cannot decide.
 int FilteredSignOfDeterminant(const Difference m[3][3])
@@ -113,31 +105,8 @@ int SignOfDeterminant(const Difference m[3][3])
 }
 } // namespace
 
-int Orient2D(double au, double av, double bu, double bv, double cu, double cv)
+int predicates::Orient2DBeyondFilter(double au, double av, double bu, double bv, double cu, double cv)
 {
-  {
-    // Shewchuk's filter on (a - c) x (b - c), the same determinant.
-    const double left = (au - cu) * (bv - cv), right = (av - cv) * (bu - cu);
-    const double det = left - right;
-    const double sum = std::abs(left) + std::abs(right);
-    if ((left > 0.0 && right <= 0.0) || (left < 0.0 && right >= 0.0) || (left == 0.0 && right != 0.0) ||
-      (left != 0.0 && right == 0.0))
-    {
-      // The two products' signs are exact (rounding keeps signs) and differ.
-      if (sum >= MinimumMagnitude && std::isfinite(sum))
-      {
-        return det > 0.0 ? 1 : -1;
-      }
-    }
-    else if (sum >= MinimumMagnitude && std::isfinite(sum))
-    {
-      const double bound = Orient2DBound * sum;
-      if (det > bound || det < -bound)
-      {
-        return det > 0.0 ? 1 : -1;
-      }
-    }
-  }
   const Interval det = (Interval(bu) - Interval(au)) * (Interval(cv) - Interval(av)) -
     (Interval(bv) - Interval(av)) * (Interval(cu) - Interval(au));
   if (det.lo > 0.0)

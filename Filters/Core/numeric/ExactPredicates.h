@@ -9,12 +9,54 @@
 
 #include "Vector3.h"
 
+#include <cfloat>
+#include <cmath>
+
 namespace tpc
 {
 
+namespace predicates
+{
+// Floating-point filters with Shewchuk's a-priori error bounds ("Adaptive
+// Precision Floating-Point Arithmetic and Fast Robust Geometric Predicates",
+// 1997, the bounds ccwerrboundA and o3derrboundA): when |det| exceeds the
+// bound, its sign is exact. Several times cheaper than the interval filter
+// (no rounding-mode arithmetic), which stays as the second stage. Products
+// below MinimumMagnitude could have underflowed: those go to the next stage.
+constexpr double Epsilon = 1.1102230246251565e-16; // 2^-53
+constexpr double Orient2DBound = (3.0 + 16.0 * Epsilon) * Epsilon;
+constexpr double Orient3DBound = (7.0 + 56.0 * Epsilon) * Epsilon;
+constexpr double MinimumMagnitude = 1e-200;
+
+/// Orient2D where its filter cannot decide: the interval, then the exact
+/// stage.
+int Orient2DBeyondFilter(double au, double av, double bu, double bv, double cu, double cv);
+} // namespace predicates
+
 /// Sign of (b - a) x (c - a) for 2-D points given by (u, v) pairs:
-/// +1 counter-clockwise, -1 clockwise, 0 collinear.
-int Orient2D(double au, double av, double bu, double bv, double cu, double cv);
+/// +1 counter-clockwise, -1 clockwise, 0 collinear. The filter, on
+/// (a - c) x (b - c), the same determinant, inline: it decides almost every
+/// call, which then costs no call (the predicate is called from most of the
+/// core's tests: 3.5 % of the turbine's instructions at 1/64 went to it).
+inline int Orient2D(double au, double av, double bu, double bv, double cu, double cv)
+{
+  const double left = (au - cu) * (bv - cv), right = (av - cv) * (bu - cu);
+  const double det = left - right;
+  const double sum = std::abs(left) + std::abs(right);
+  if (sum >= predicates::MinimumMagnitude && sum <= DBL_MAX) // (not a NaN, finite)
+  {
+    const double bound = predicates::Orient2DBound * sum;
+    if (det > bound)
+    {
+      return 1;
+    }
+    if (det < -bound)
+    {
+      return -1;
+    }
+  }
+  return predicates::Orient2DBeyondFilter(au, av, bu, bv, cu, cv);
+}
 
 /// Sign of det[a - d, b - d, c - d] = n . (a - d) with n = (b - a) x (c - a):
 /// +1 when d is on the side opposite to n (behind the triangle a, b, c),

@@ -89,15 +89,12 @@ bool WindsOnceProjected(const Vec3* points, std::uint32_t v, const std::vector<s
   return true;
 }
 
-/// Whether v's star is proven embedded (header), trying the axes in the
+/// Whether v's star, whose link is the one cycle `cycle` ((i) of the
+/// header), is proven embedded by a projection, trying the axes in the
 /// order the star's area vector favours.
-bool StarIsEmbedded(const Vec3* points, const Triangle* triangles, std::uint32_t v, const std::uint32_t* fan,
-  std::size_t m, std::vector<std::pair<std::uint32_t, std::uint32_t>>& edges, std::vector<std::uint32_t>& cycle)
+bool WindsOnceInSomeProjection(const Vec3* points, std::uint32_t v, const std::vector<std::uint32_t>& cycle)
 {
-  if (!LinkCycle(triangles, v, fan, m, edges, cycle))
-  {
-    return false;
-  }
+  const std::size_t m = cycle.size();
   const Vec3& p = points[v];
   Vec3 area;
   for (std::size_t i = 0; i < m; ++i)
@@ -136,25 +133,34 @@ bool StarIsEmbedded(const Vec3* points, const Triangle* triangles, std::uint32_t
 
 EmbeddedStars::EmbeddedStars(const Vec3* points, std::size_t vertexCount, const Triangle* triangles,
   std::size_t count, const ParallelFor& parallelFor)
-  : Proven(vertexCount, 0)
+  : Triangles(triangles)
+  , Around(triangles, count, vertexCount)
+  , Link(vertexCount, NotOneCycle)
 {
-  const VertexTriangles around(triangles, count, vertexCount);
   parallelFor(vertexCount, [&](std::size_t begin, std::size_t end) {
     std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
     std::vector<std::uint32_t> cycle;
     for (std::size_t v = begin; v < end; ++v)
     {
-      this->Proven[v] =
-        StarIsEmbedded(points, triangles, static_cast<std::uint32_t>(v), around.Of(v), around.Count(v), edges, cycle)
-        ? 1
-        : 0;
+      const auto u = static_cast<std::uint32_t>(v);
+      if (LinkCycle(triangles, u, this->Around.Of(v), this->Around.Count(v), edges, cycle))
+      {
+        this->Link[v] = WindsOnceInSomeProjection(points, u, cycle) ? ProvenStar : OneCycle;
+      }
     }
   });
 }
 
 std::size_t EmbeddedStars::ProvenCount() const
 {
-  return static_cast<std::size_t>(std::count(this->Proven.begin(), this->Proven.end(), std::uint8_t{ 1 }));
+  return static_cast<std::size_t>(std::count(this->Link.begin(), this->Link.end(), std::uint8_t{ ProvenStar }));
+}
+
+bool EmbeddedStars::CountNonManifoldVertices(
+  std::int64_t& count, const ParallelFor& parallelFor, const ProgressCallback& progress) const
+{
+  static_assert(NotOneCycle == 0, "the vertices known to be manifold points are those marked nonzero");
+  return tpc::CountNonManifoldVertices(this->Triangles, this->Around, this->Link.data(), count, parallelFor, progress);
 }
 
 } // namespace tpc

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <functional>
 #include <utility>
 
 namespace tpc
@@ -86,33 +87,40 @@ bool InLocalOrder(const std::vector<Vec3>& points, const std::vector<std::array<
 }
 
 void OrderAlongMortonCurve(std::vector<Vec3>& points, std::vector<std::array<std::uint32_t, 3>>& triangles,
-  std::vector<std::array<std::uint32_t, 3>>& neighbours, std::uint32_t none)
+  std::vector<std::array<std::uint32_t, 3>>& neighbours, std::uint32_t none, const ParallelFor& parallelFor)
 {
   const std::size_t n = triangles.size();
   assert(n < none && (neighbours.empty() || neighbours.size() == n));
   // The curve over the box of the centroids' finite coordinates (a point no
   // triangle uses, or a non-finite one, would only squeeze it).
   std::vector<Vec3> centroids(n);
+  parallelFor(n, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t)
+    {
+      centroids[t] = Centroid(points, triangles[t]);
+    }
+  });
   Box3 box{ Vec3(HUGE_VAL, HUGE_VAL, HUGE_VAL), Vec3(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL) };
-  for (std::uint32_t t = 0; t < n; ++t)
+  for (const Vec3& c : centroids)
   {
-    centroids[t] = Centroid(points, triangles[t]);
     for (int a = 0; a < 3; ++a)
     {
-      if (std::isfinite(centroids[t][a]))
+      if (std::isfinite(c[a]))
       {
-        box.lo[a] = std::min(box.lo[a], centroids[t][a]);
-        box.hi[a] = std::max(box.hi[a], centroids[t][a]);
+        box.lo[a] = std::min(box.lo[a], c[a]);
+        box.hi[a] = std::max(box.hi[a], c[a]);
       }
     }
   }
   // The triangles by (code, old index): the new order, deterministic.
   std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(n);
-  for (std::uint32_t t = 0; t < n; ++t)
-  {
-    keyed[t] = { MortonCode(centroids[t], box), t };
-  }
-  std::sort(keyed.begin(), keyed.end());
+  parallelFor(n, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t)
+    {
+      keyed[t] = { MortonCode(centroids[t], box), static_cast<std::uint32_t>(t) };
+    }
+  });
+  ParallelSort(keyed, std::less<>(), parallelFor, nullptr);
   std::vector<std::uint32_t> newTriangle(n);
   for (std::uint32_t k = 0; k < n; ++k)
   {

@@ -24,6 +24,7 @@
 // 9 378 and 17 420).
 #pragma once
 
+#include "Parallel.h"
 #include "Vector3.h"
 
 #include <array>
@@ -46,8 +47,11 @@ constexpr double LocalOrderJumps = 4.0;
 /// in their order), and `points` in the order the reordered triangles first
 /// use them (points no triangle uses last, in their order); renames the
 /// corners of `triangles` and the entries of `neighbours` (the triangle
-/// across each edge, or `none`; empty for none given) to match.
+/// across each edge, or `none`; empty for none given) to match. The codes
+/// and their sort in parallel (the same order on any number of threads: the
+/// keys are distinct).
 void OrderAlongMortonCurve(std::vector<Vec3>& points, std::vector<std::array<std::uint32_t, 3>>& triangles,
-  std::vector<std::array<std::uint32_t, 3>>& neighbours, std::uint32_t none);
+  std::vector<std::array<std::uint32_t, 3>>& neighbours, std::uint32_t none,
+  const ParallelFor& parallelFor = SequentialFor);
 
 } // namespace tpc

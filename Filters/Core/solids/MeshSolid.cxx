@@ -55,6 +55,7 @@ void MeshSolid::Index(const ParallelFor& parallelFor)
   });
   this->Normals.resize(this->Faces.size());
   this->AxisFacing.resize(this->Faces.size());
+  this->FaceBoxes.resize(this->Faces.size());
   parallelFor(this->Faces.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t t = begin; t < end; ++t)
     {
@@ -67,23 +68,17 @@ void MeshSolid::Index(const ParallelFor& parallelFor)
         const int u = (axis + 1) % 3, v = (axis + 2) % 3;
         this->AxisFacing[t][axis] = static_cast<std::int8_t>(Orient2D(a[u], a[v], b[u], b[v], c[u], c[v]));
       }
+      Box3& box = this->FaceBoxes[t];
+      for (int k = 0; k < 3; ++k)
+      {
+        box.lo[k] = std::min({ a[k], b[k], c[k] });
+        box.hi[k] = std::max({ a[k], b[k], c[k] });
+      }
     }
   });
   this->Box = { { HUGE_VAL, HUGE_VAL, HUGE_VAL }, { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL } };
-  this->FaceBoxes.resize(this->Faces.size());
-  for (std::size_t t = 0; t < this->Faces.size(); ++t)
+  for (const Box3& b : this->FaceBoxes)
   {
-    Box3& b = this->FaceBoxes[t];
-    b = { this->Vertex(static_cast<std::uint32_t>(t), 0), this->Vertex(static_cast<std::uint32_t>(t), 0) };
-    for (int k = 1; k < 3; ++k)
-    {
-      const Vec3& p = this->Vertex(static_cast<std::uint32_t>(t), k);
-      for (int a = 0; a < 3; ++a)
-      {
-        b.lo[a] = std::min(b.lo[a], p[a]);
-        b.hi[a] = std::max(b.hi[a], p[a]);
-      }
-    }
     for (int a = 0; a < 3; ++a)
     {
       this->Box.lo[a] = std::min(this->Box.lo[a], b.lo[a]);

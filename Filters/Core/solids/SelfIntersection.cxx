@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
 
 namespace tpc
 {
@@ -398,6 +399,14 @@ struct BinGrid
   {
     return (static_cast<std::uint64_t>(x) * this->Dims[1] + y) * this->Dims[2] + z;
   }
+  /// The bin indices (x, y, z) of key k.
+  std::array<int, 3> Coordinates(std::uint64_t k) const
+  {
+    const auto z = static_cast<int>(k % static_cast<std::uint64_t>(this->Dims[2]));
+    k /= static_cast<std::uint64_t>(this->Dims[2]);
+    return { static_cast<int>(k / static_cast<std::uint64_t>(this->Dims[1])),
+      static_cast<int>(k % static_cast<std::uint64_t>(this->Dims[1])), z };
+  }
   /// The bins triangle box `b` meets, as index ranges per axis.
   void BinRange(const Box3& b, int lo[3], int hi[3]) const
   {
@@ -462,13 +471,6 @@ struct BinnedTriangles
       forEachBin(t, [&](std::uint64_t k) { this->Triangles[fill[k]++] = static_cast<std::uint32_t>(t); });
     }
   }
-  /// The bin of the lower corner of two overlapping boxes' intersection: on
-  /// each axis the larger of their lower indices (Index is monotone).
-  std::uint64_t FirstCommonBin(const BinGrid& grid, std::uint32_t a, std::uint32_t b) const
-  {
-    const std::array<int, 3>&p = this->Lower[a], &q = this->Lower[b];
-    return grid.Key(std::max(p[0], q[0]), std::max(p[1], q[1]), std::max(p[2], q[2]));
-  }
 };
 
 /// How many pairs of triangles `accept` takes, counting at most `limit`,
@@ -528,17 +530,32 @@ std::size_t CountAcceptedPairs(const std::vector<Vec3>& points,
   std::vector<std::size_t> found(Blocks, 0);
   std::size_t total = 0;
   ForEachChunk(Blocks, BlocksPerChunk, parallelFor, [&](std::size_t begin, std::size_t end) {
+    std::vector<std::uint8_t> startsHere; // (per entry of a bin: the axes it starts on there, below)
     for (std::size_t b = begin; b < end; ++b)
     {
       for (std::size_t k = blockBin[b]; k < blockBin[b + 1] && found[b] < limit; ++k)
       {
         const std::size_t i = bins.Start[k], j = bins.Start[k + 1];
+        // Both boxes of a pair in bin k start at or below it on each axis,
+        // so k is their first common bin - the larger lower index on every
+        // axis - exactly when on each axis one of them starts at k: a bit
+        // per axis and entry, and an or per pair, before its boxes are read.
+        // (The pair loop was a quarter of armadillo's input repair and check
+        // when it read both boxes and computed that bin of every pair.)
+        const std::array<int, 3> at = grid.Coordinates(k);
+        startsHere.resize(j - i);
+        for (std::size_t p = i; p < j; ++p)
+        {
+          const std::array<int, 3>& lower = bins.Lower[bins.Triangles[p]];
+          startsHere[p - i] =
+            static_cast<std::uint8_t>((lower[0] == at[0]) | (lower[1] == at[1]) << 1 | (lower[2] == at[2]) << 2);
+        }
         for (std::size_t p = i; p < j && found[b] < limit; ++p)
         {
           for (std::size_t q = p + 1; q < j && found[b] < limit; ++q)
           {
             const std::uint32_t t1 = bins.Triangles[p], t2 = bins.Triangles[q]; // (t1 < t2)
-            if (boxes[t1].Overlaps(boxes[t2]) && bins.FirstCommonBin(grid, t1, t2) == k && accept(t1, t2))
+            if ((startsHere[p - i] | startsHere[q - i]) == 7 && boxes[t1].Overlaps(boxes[t2]) && accept(t1, t2))
             {
               ++found[b];
             }
@@ -560,9 +577,10 @@ std::size_t CountAcceptedPairs(const std::vector<Vec3>& points,
 
 namespace
 {
+/// `stars`: of these triangles, or null to prove them here.
 std::size_t CountImproperPairs(const std::vector<Vec3>& points,
-  const std::vector<std::array<std::uint32_t, 3>>& triangles, const std::vector<Box3>* boxes, std::size_t limit,
-  const ParallelFor& parallelFor, const ProgressCallback& progress)
+  const std::vector<std::array<std::uint32_t, 3>>& triangles, const std::vector<Box3>* boxes,
+  const EmbeddedStars* given, std::size_t limit, const ParallelFor& parallelFor, const ProgressCallback& progress)
 {
   if (triangles.size() < 2 || limit == 0)
   {
@@ -570,7 +588,10 @@ std::size_t CountImproperPairs(const std::vector<Vec3>& points,
   }
   // Pairs sharing a vertex whose star is proven embedded need no test of
   // their own (EmbeddedStars.h): most candidate pairs are neighbours.
-  const EmbeddedStars stars(points.data(), points.size(), triangles.data(), triangles.size(), parallelFor);
+  const std::optional<EmbeddedStars> proven = given
+    ? std::nullopt
+    : std::make_optional<EmbeddedStars>(points.data(), points.size(), triangles.data(), triangles.size(), parallelFor);
+  const EmbeddedStars& stars = given ? *given : *proven;
   return CountAcceptedPairs(points, triangles, boxes, limit, parallelFor, progress,
     [&](std::uint32_t t1, std::uint32_t t2) {
       return !stars.ProveProper(triangles[t1], triangles[t2]) &&
@@ -583,13 +604,14 @@ std::size_t CountSelfIntersections(const std::vector<Vec3>& points,
   const std::vector<std::array<std::uint32_t, 3>>& triangles, std::size_t limit,
   const ParallelFor& parallelFor, const ProgressCallback& progress)
 {
-  return CountImproperPairs(points, triangles, nullptr, limit, parallelFor, progress);
+  return CountImproperPairs(points, triangles, nullptr, nullptr, limit, parallelFor, progress);
 }
 
-std::size_t CountSelfIntersections(
-  const MeshSolid& mesh, std::size_t limit, const ParallelFor& parallelFor, const ProgressCallback& progress)
+std::size_t CountSelfIntersections(const MeshSolid& mesh, const EmbeddedStars& stars, std::size_t limit,
+  const ParallelFor& parallelFor, const ProgressCallback& progress)
 {
-  return CountImproperPairs(mesh.Points(), mesh.Triangles(), &mesh.TriangleBoxes(), limit, parallelFor, progress);
+  return CountImproperPairs(
+    mesh.Points(), mesh.Triangles(), &mesh.TriangleBoxes(), &stars, limit, parallelFor, progress);
 }
 
 std::size_t CountCoincidentFaces(const std::vector<Vec3>& pointsA,

@@ -17,6 +17,7 @@
 namespace tpc
 {
 
+class EmbeddedStars;
 class MeshSolid;
 
 /// Number of improperly meeting triangle pairs, counting at most `limit`
@@ -28,8 +29,9 @@ std::size_t CountSelfIntersections(const std::vector<Vec3>& points,
   const ParallelFor& parallelFor = SequentialFor, const ProgressCallback& progress = nullptr);
 
 /// The same for the triangles of `mesh`, with the boxes it keeps of them
-/// (not a second copy).
-std::size_t CountSelfIntersections(const MeshSolid& mesh, std::size_t limit = 100,
+/// (not a second copy) and `stars`, proven of them (EmbeddedStars.h: the
+/// caller keeps them for the pinched vertices' count).
+std::size_t CountSelfIntersections(const MeshSolid& mesh, const EmbeddedStars& stars, std::size_t limit = 100,
   const ParallelFor& parallelFor = SequentialFor, const ProgressCallback& progress = nullptr);
 
 /// Number of triangle pairs, one from each mesh, that lie in one plane and

@@ -1,8 +1,10 @@
-// Stars proven embedded (EmbeddedStars.h): which vertices are proven, and
-// that a proof never hides a pair the exact test would find.
+// Stars proven embedded (EmbeddedStars.h): which vertices are proven, that a
+// proof never hides a pair the exact test would find, and that their count of
+// pinched vertices is VertexLinks.h's.
 #include "EmbeddedStars.h"
 #include "MeshBuilders.h"
 #include "SelfIntersection.h"
+#include "VertexLinks.h"
 
 #include <gtest/gtest.h>
 
@@ -185,4 +187,58 @@ TEST(EmbeddedStars, NoProofHidesAPairTheExactTestFinds)
   EXPECT_GT(folded, 20);            // (the pushes do fold stars,
   EXPECT_GT(neighboursMeeting, 20); // their own triangles meeting too)
   EXPECT_GT(proven, 10000);
+}
+
+TEST(EmbeddedStars, TheirPinchedVertexCountIsTheLinksOwn)
+{
+  // EmbeddedStars::CountNonManifoldVertices passes over the vertices whose
+  // link it found to be one cycle: the count must be VertexLinks.h's, which
+  // looks at every link - on a cube (one cycle, no star proven: none
+  // pinched), a sphere with a triangle turned over (its corners' links are
+  // one cycle, not one oriented cycle: none pinched), a bow tie and two
+  // tetrahedra sharing a corner (pinched), and pushed spheres.
+  const auto both = [](const std::vector<Vec3>& p, const Tris& t) {
+    std::int64_t byStars = 0, byLinks = 0;
+    EXPECT_TRUE(Stars(p, t).CountNonManifoldVertices(byStars));
+    EXPECT_TRUE(tpc::CountNonManifoldVertices(t.data(), t.size(), p.size(), byLinks));
+    EXPECT_EQ(byStars, byLinks);
+    return byStars;
+  };
+  const tpc::MeshSolid cube = tpctest::CubeMesh({ 0, 0, 0 }, { 1, 1, 1 });
+  EXPECT_EQ(both(cube.Points(), cube.Triangles()), 0);
+  const tpc::MeshSolid sphere = tpctest::SphereMesh({ 0, 0, 0 }, 1.0, 2);
+  Tris turned = sphere.Triangles();
+  std::swap(turned[5][1], turned[5][2]);
+  EXPECT_EQ(both(sphere.Points(), turned), 0);
+  const std::vector<Vec3> corners{ Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(-1, 0, 0),
+    Vec3(0, -1, 0), Vec3(0, 0, -1) };
+  const Tris tetrahedra{ { 0, 2, 1 }, { 0, 1, 3 }, { 0, 3, 2 }, { 1, 2, 3 }, { 0, 4, 5 }, { 0, 6, 4 }, { 0, 5, 6 },
+    { 4, 6, 5 } };
+  EXPECT_EQ(both(corners, tetrahedra), 1);
+  std::vector<Vec3> p;
+  Tris t;
+  Fan({ 0, 72, 144, 216, 288 }, p, t);
+  const auto n = static_cast<std::uint32_t>(p.size());
+  for (const Vec3& q : std::vector<Vec3>(p.begin() + 1, p.end()))
+  {
+    p.push_back(q + Vec3(0, 0, 1));
+  }
+  const Tris first = t;
+  for (const auto& f : first)
+  {
+    t.push_back({ 0, f[1] + n - 1, f[2] + n - 1 });
+  }
+  EXPECT_GE(both(p, t), 1); // (vertex 0; the open fans' rims are no cycles either)
+  std::mt19937 rng(11);
+  for (int trial = 0; trial < 10; ++trial)
+  {
+    std::vector<Vec3> pushed = sphere.Points();
+    std::uniform_real_distribution<double> push(-0.6, 0.6);
+    for (Vec3& q : pushed)
+    {
+      const double x = push(rng), y = push(rng), z = push(rng);
+      q = q + Vec3(x, y, z) * (trial / 10.0);
+    }
+    EXPECT_EQ(both(pushed, sphere.Triangles()), 0) << "trial " << trial;
+  }
 }

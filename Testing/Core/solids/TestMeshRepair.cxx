@@ -173,6 +173,50 @@ TEST(MeshRepair, DuplicatesAndDegeneratesAreDropped)
   EXPECT_TRUE(r.MeetsAssumptions()) << r.Describe();
 }
 
+TEST(MeshRepair, ASoupIsMergedBackWhateverTheSignOfItsZeros)
+{
+  // A torus as a soup - each triangle with its own copies of its corners,
+  // a zero coordinate of every other copy written -0 - and every fifth
+  // triangle again at the end, its corners turned: merging takes every copy
+  // to one vertex (-0 and +0 are one coordinate), the repeats are dropped,
+  // and what is left is the torus.
+  const tpc::MeshSolid torus = tpctest::TorusMesh({ 0, 0, 0 }, 0.6, 0.25, 24, 12);
+  std::vector<Vec3> p;
+  Tris t;
+  int zeros = 0;
+  for (const auto& f : torus.Triangles())
+  {
+    const auto base = static_cast<std::uint32_t>(p.size());
+    for (int k = 0; k < 3; ++k)
+    {
+      Vec3 q = torus.Points()[f[k]];
+      for (int a = 0; a < 3; ++a)
+      {
+        if (q[a] == 0.0 && p.size() % 2 == 1)
+        {
+          q[a] = -0.0;
+          ++zeros;
+        }
+      }
+      p.push_back(q);
+    }
+    t.push_back({ base, base + 1, base + 2 });
+  }
+  const std::size_t triangles = t.size();
+  for (std::size_t k = 0; k < triangles; k += 5)
+  {
+    t.push_back({ t[k][1], t[k][2], t[k][0] });
+  }
+  ASSERT_GT(zeros, 10);
+  const tpc::MeshRepairReport r = tpc::RepairMesh(p, t);
+  EXPECT_EQ(r.MergedVertices, 3 * triangles - torus.Points().size());
+  EXPECT_EQ(r.DuplicateTriangles, (triangles + 4) / 5);
+  EXPECT_EQ(t.size(), triangles);
+  EXPECT_EQ(p.size(), torus.Points().size());
+  EXPECT_EQ(r.Genus, 1);
+  EXPECT_TRUE(r.MeetsAssumptions()) << r.Describe();
+}
+
 TEST(MeshRepair, OpenMeshAndSelfIntersectionsAreReported)
 {
   const tpc::MeshSolid cube = tpctest::CubeMesh({ 0, 0, 0 }, { 1, 1, 1 });
