@@ -132,7 +132,7 @@ int predicates::Orient2DBeyondFilter(double au, double av, double bu, double bv,
   return sum.Sign();
 }
 
-int Orient3D(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
+int predicates::Orient3DBeyondFilter(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
 {
   // Four points in one axis plane (faces of cells, axis-aligned faces of CAD
   // parts) are coplanar: the determinant is exactly zero, which the filters

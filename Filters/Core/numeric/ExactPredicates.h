@@ -31,6 +31,9 @@ constexpr double MinimumMagnitude = 1e-200;
 /// Orient2D where its filter cannot decide: the interval, then the exact
 /// stage.
 int Orient2DBeyondFilter(double au, double av, double bu, double bv, double cu, double cv);
+
+/// Orient3D where its filter cannot decide.
+int Orient3DBeyondFilter(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 } // namespace predicates
 
 /// Sign of (b - a) x (c - a) for 2-D points given by (u, v) pairs:
@@ -60,8 +63,32 @@ inline int Orient2D(double au, double av, double bu, double bv, double cu, doubl
 
 /// Sign of det[a - d, b - d, c - d] = n . (a - d) with n = (b - a) x (c - a):
 /// +1 when d is on the side opposite to n (behind the triangle a, b, c),
-/// -1 in front, 0 coplanar.
-int Orient3D(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+/// -1 in front, 0 coplanar. The filter inline, as Orient2D's (Orient3D was
+/// 2.7 % of the turbine's instructions at 1/64, its out-of-line stages
+/// another 2.5 %).
+inline int Orient3D(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
+{
+  const double ax = a[0] - d[0], ay = a[1] - d[1], az = a[2] - d[2];
+  const double bx = b[0] - d[0], by = b[1] - d[1], bz = b[2] - d[2];
+  const double cx = c[0] - d[0], cy = c[1] - d[1], cz = c[2] - d[2];
+  const double bxcy = bx * cy, cxby = cx * by, cxay = cx * ay, axcy = ax * cy, axby = ax * by, bxay = bx * ay;
+  const double det = az * (bxcy - cxby) + bz * (cxay - axcy) + cz * (axby - bxay);
+  const double permanent = (std::abs(bxcy) + std::abs(cxby)) * std::abs(az) +
+    (std::abs(cxay) + std::abs(axcy)) * std::abs(bz) + (std::abs(axby) + std::abs(bxay)) * std::abs(cz);
+  if (permanent >= predicates::MinimumMagnitude && permanent <= DBL_MAX) // (not a NaN, finite)
+  {
+    const double bound = predicates::Orient3DBound * permanent;
+    if (det > bound)
+    {
+      return 1;
+    }
+    if (det < -bound)
+    {
+      return -1;
+    }
+  }
+  return predicates::Orient3DBeyondFilter(a, b, c, d);
+}
 
 /// Sign of n . u with n = (b - a) x (c - a): which way the triangle faces
 /// relative to the direction u.
