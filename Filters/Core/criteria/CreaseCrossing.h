@@ -98,14 +98,22 @@ constexpr double CreaseTileAngleDegrees = 25.0;
 std::optional<CreaseTile> CreaseOnTile(const CsgLeaf& leaf, const PrimitiveSet& primitives, const RootGrid& grid,
   int axis, LatticeIndex plane, const FaceTile& tile);
 
+class CreaseTileCache; // (CreaseTileCache.h)
+
+/// CreaseOnTile, or the decision `cache` keeps (CreaseTileCache.h) where one
+/// is given.
+std::optional<CreaseTile> DecideCreaseTile(CreaseTileCache* cache, const CsgLeaf& leaf,
+  const PrimitiveSet& primitives, const RootGrid& grid, int axis, LatticeIndex plane, const FaceTile& tile);
+
 /// Marks the crease tiles of every face of `boundary` (a cell of the mesh of
 /// `leaf`) in boundary.Creases, with their halves (the subdivision's
 /// prediction reads them: CreaseOnTile's walk is not repeated), where
 /// `draws(f, k)` says that tile k of face f may be drawn so (both cells
-/// sharing it agree); whether it marked any.
+/// sharing it agree); whether it marked any. `cache` (if given): the
+/// decisions shared with the cells of the same pass.
 template <typename Draws>
 bool MarkCreaseTiles(CellBoundary& boundary, const CsgLeaf& leaf, const PrimitiveSet& primitives,
-  const RootGrid& grid, const Draws& draws)
+  const RootGrid& grid, const Draws& draws, CreaseTileCache* cache = nullptr)
 {
   bool marked = false;
   for (int f = 0; f < 6; ++f)
@@ -117,7 +125,7 @@ bool MarkCreaseTiles(CellBoundary& boundary, const CsgLeaf& leaf, const Primitiv
     {
       if (draws(f, k))
       {
-        boundary.Creases[f][k] = CreaseOnTile(leaf, primitives, grid, axis, plane, boundary.Tiles[f][k]);
+        boundary.Creases[f][k] = DecideCreaseTile(cache, leaf, primitives, grid, axis, plane, boundary.Tiles[f][k]);
         marked = marked || boundary.Creases[f][k];
       }
     }

@@ -190,7 +190,7 @@ std::optional<Vec3> PredictQuadricFan(const QuadricCellError& bound, const Bound
 
 McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& prims,
   double tolerance, int faceRefinementLevels, bool provenFailuresFirst, PolygonSet* surfaceScratch,
-  bool refineChords)
+  bool refineChords, CreaseTileCache* creaseTiles)
 {
   McCompatibility v;
   v.Kind = McVerdict::Split;
@@ -325,7 +325,8 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     // the same halves of the trace there.
     // (Without a crease tile the loops are those traced above.)
     const bool creases = oneMesh &&
-      MarkCreaseTiles(boundary, *LoneMeshLeaf(*expression), prims, grid, [](int, std::size_t) { return true; });
+      MarkCreaseTiles(
+        boundary, *LoneMeshLeaf(*expression), prims, grid, [](int, std::size_t) { return true; }, creaseTiles);
     v.PredictedError = PredictedMeshCellError(*expression, prims, grid, box, boundary,
       creases ? TraceBoundaryLoops(boundary) : loops, tolerance, v.MeshPrediction, &meshSurface,
       provenFailuresFirst, oneMesh ? &meshCreases() : nullptr);

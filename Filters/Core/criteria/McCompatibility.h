@@ -15,6 +15,8 @@
 namespace tpc
 {
 
+class CreaseTileCache; // (CreaseTileCache.h)
+
 /// Outcome of the tests for one cell.
 enum class McVerdict : std::uint8_t
 {
@@ -117,9 +119,11 @@ constexpr int FaceRefinementLevels = 10;
 /// `surfaceScratch`: where S_C is built (a buffer reused across cells,
 /// ScratchPool.h); null for one of its own. With `refineChords`, a mesh
 /// cell's failed prediction is made again over finer chords where they
-/// strayed (MeshCellError.h: Chords refined).
+/// strayed (MeshCellError.h: Chords refined). `creaseTiles` (if given): the
+/// crease tiles decided for the cells tested with it (CreaseTileCache.h).
 McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   const PrimitiveSet& primitives, double tolerance, int faceRefinementLevels = FaceRefinementLevels,
-  bool provenFailuresFirst = true, PolygonSet* surfaceScratch = nullptr, bool refineChords = true);
+  bool provenFailuresFirst = true, PolygonSet* surfaceScratch = nullptr, bool refineChords = true,
+  CreaseTileCache* creaseTiles = nullptr);
 
 } // namespace tpc

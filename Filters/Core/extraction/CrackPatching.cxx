@@ -222,7 +222,8 @@ CellBoundary GatherCellBoundary(const AdaptiveOctree& tree, std::size_t cell)
   return CellBoundaryBuilder(tree, cell).Build();
 }
 
-BoundaryLoopSet CellLoops(const AdaptiveOctree& tree, std::uint32_t cell, const PrimitiveSet& prims)
+BoundaryLoopSet CellLoops(
+  const AdaptiveOctree& tree, std::uint32_t cell, const PrimitiveSet& prims, CreaseTileCache* creaseTiles)
 {
   CellBoundary boundary = GatherCellBoundary(tree, cell);
   const CsgLeaf* own = tree.Nodes[cell].State == CellState::Exact ? LoneMeshLeaf(*tree.Expressions[cell]) : nullptr;
@@ -266,7 +267,7 @@ BoundaryLoopSet CellLoops(const AdaptiveOctree& tree, std::uint32_t cell, const 
         ? LoneMeshLeaf(*tree.Expressions[other])
         : nullptr;
       return theirs && theirs->Primitive == mine->Primitive;
-    });
+    }, creaseTiles);
   }
   else
   {

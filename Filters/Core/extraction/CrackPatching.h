@@ -25,12 +25,15 @@
 namespace tpc
 {
 
+class CreaseTileCache; // (CreaseTileCache.h)
+
 /// The samples on the boundary of leaf `cell`: its faces' tiles from
 /// whichever side is finer, and every sample point on them.
 CellBoundary GatherCellBoundary(const AdaptiveOctree& tree, std::size_t cell);
 
 /// The loops of leaf `cell` traced from its boundary's samples; for an exact
 /// cell, its polygons (ExactCell.h).
-BoundaryLoopSet CellLoops(const AdaptiveOctree& tree, std::uint32_t cell, const PrimitiveSet& primitives);
+BoundaryLoopSet CellLoops(const AdaptiveOctree& tree, std::uint32_t cell, const PrimitiveSet& primitives,
+  CreaseTileCache* creaseTiles = nullptr);
 
 } // namespace tpc

@@ -4,6 +4,7 @@
 #include "CertifiedError.h"
 #include "CrackPatching.h"
 #include "CreaseFollowing.h"
+#include "CreaseTileCache.h"
 #include "CrossingVertices.h"
 #include "ExactCellCriterion.h"
 #include "MeshBooleanCellError.h"
@@ -522,12 +523,14 @@ ExtractionResult ExtractSurface(const AdaptiveOctree& tree, const ImplicitScene&
   const std::vector<std::uint32_t> cells = SurfaceLeaves(tree);
   const std::vector<std::uint8_t> own = OwnCells(tree, cells);
 
-  // Pass 1: each cell's loops, sampled as its neighbours sample (crack patching).
+  // Pass 1: each cell's loops, sampled as its neighbours sample (crack
+  // patching); the crease tiles two cells share decided once.
   std::vector<BoundaryLoopSet> loops(cells.size());
+  CreaseTileCache creaseTiles;
   if (!ChunkedFor(cells.size(), Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i)
         {
-          loops[i] = CellLoops(tree, cells[i], prims);
+          loops[i] = CellLoops(tree, cells[i], prims, &creaseTiles);
         }
       }, ProgressRange(progress, 0.0, 0.4)))
   {

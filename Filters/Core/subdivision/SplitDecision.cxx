@@ -16,7 +16,8 @@ CellState StateOf(RegionSign s)
 } // namespace
 
 CellTests TestCell(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& primitives,
-  const SubdivisionParameters& parameters, const LevelLimits& limits, PolygonSet* surfaceScratch)
+  const SubdivisionParameters& parameters, const LevelLimits& limits, PolygonSet* surfaceScratch,
+  CreaseTileCache* creaseTiles)
 {
   CellTests tests;
   const OctreeNode& node = tree.Nodes[n];
@@ -38,7 +39,7 @@ CellTests TestCell(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveS
     keepsOnFailure ? std::min(levels, ExactCellFaceRefinementLevels) : levels,
     // (A cell stopped by a limit reports the test it fails: all of them run.)
     parameters.ProvenFailuresFirst && !limits.AtDepthLimit && !limits.AtCellLimit, surfaceScratch,
-    parameters.RefineChords);
+    parameters.RefineChords, creaseTiles);
   if (limits.ToleranceSize && tests.Verdict.Kind == McVerdict::Split)
   {
     tests.Facing = HasFacingSurfaces(expression, primitives, tree.Grid.CellBox(limits.Level, tree.Nodes[n].Ijk),

@@ -28,6 +28,8 @@
 namespace tpc
 {
 
+class CreaseTileCache; // (CreaseTileCache.h)
+
 /// What a level knows before deciding its cells.
 struct LevelLimits
 {
@@ -60,9 +62,10 @@ struct CellTests
 };
 
 /// Runs the tests of cell `n` (thread-safe: reads the tree only);
-/// `surfaceScratch` as TestMcCompatibility's.
+/// `surfaceScratch` and `creaseTiles` as TestMcCompatibility's.
 CellTests TestCell(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& primitives,
-  const SubdivisionParameters& parameters, const LevelLimits& limits, PolygonSet* surfaceScratch = nullptr);
+  const SubdivisionParameters& parameters, const LevelLimits& limits, PolygonSet* surfaceScratch = nullptr,
+  CreaseTileCache* creaseTiles = nullptr);
 
 /// Sets the state of cell `n` from its tests and counts it in `result` (its
 /// own trees' cells only, in a piece of a split run); true when the cell is

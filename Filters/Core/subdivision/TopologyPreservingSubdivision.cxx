@@ -1,5 +1,6 @@
 #include "TopologyPreservingSubdivision.h"
 
+#include "CreaseTileCache.h"
 #include "DistinctRecords.h"
 #include "ExactCellCriterion.h"
 #include "QuadricCellError.h"
@@ -129,6 +130,9 @@ private:
   std::vector<std::uint32_t> Active;
   /// Where the tests build S_C, reused from cell to cell and level to level.
   ScratchPool<PolygonSet> SurfaceScratch;
+  /// The crease tiles decided by this level's cells (CreaseTileCache.h),
+  /// cleared after it.
+  CreaseTileCache CreaseTiles;
 };
 
 /// The roots: one per tree, each with the scene's expression pruned to it;
@@ -307,11 +311,12 @@ bool LevelByLevel::TestCells(std::vector<CellTests>& tests)
   AdaptiveOctree& tree = this->Result.Octree;
   tests.resize(this->Active.size());
   const ProgressCallback progress = this->Within(0.2, 0.7);
-  return ForEachChunk(this->Active.size(), Chunk, this->For, [&](std::size_t begin, std::size_t end) {
+  const bool done = ForEachChunk(this->Active.size(), Chunk, this->For, [&](std::size_t begin, std::size_t end) {
     ScratchPool<PolygonSet>::Lease surface(this->SurfaceScratch);
     for (std::size_t i = begin; i < end; ++i)
     {
-      tests[i] = TestCell(tree, this->Active[i], this->Scene.Primitives, this->Parameters, this->Limits, &*surface);
+      tests[i] = TestCell(
+        tree, this->Active[i], this->Scene.Primitives, this->Parameters, this->Limits, &*surface, &this->CreaseTiles);
     }
   }, [&](std::size_t first, std::size_t last) {
     for (std::size_t i = first; i < last; ++i)
@@ -341,6 +346,8 @@ bool LevelByLevel::TestCells(std::vector<CellTests>& tests)
     }
     return progress && progress(static_cast<double>(last) / static_cast<double>(this->Active.size()));
   });
+  this->CreaseTiles.Clear(); // (the next level's tiles are its children's, none of these)
+  return done;
 }
 
 /// Pass 3: each cell's fate, in cell order (SplitDecision.h); the limits

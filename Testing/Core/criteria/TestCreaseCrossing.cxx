@@ -1,9 +1,11 @@
 // Creases of a mesh as polylines of the output (CreaseCrossing.h): which
 // face tiles are crease tiles, where their crossing lies, the trace's two
-// halves; and on whole runs, the creases of a tilted cube and of a tilted
+// halves; the decisions shared between the cells asking (CreaseTileCache.h);
+// and on whole runs, the creases of a tilted cube and of a tilted
 // bar followed by output edges lying on them.
 #include "CoreContour.h"
 #include "CreaseCrossing.h"
+#include "CreaseTileCache.h"
 #include "ExactCellCriterion.h"
 #include "MeshBuilders.h"
 #include "SceneBuilder.h"
@@ -14,6 +16,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <thread>
 
 using tpc::Vec3;
 using tpctest::SceneBuilder;
@@ -160,6 +163,77 @@ TEST(CreaseCrossing, CreaseTilesAndTheirTraceHalves)
   EXPECT_EQ(std::min(wide->Sides[0].size(), wide->Sides[1].size()), 1u);
   // A tile away from the ridge holds no crease.
   EXPECT_FALSE(CreaseOnFaceTile(*leaf, b.Scene.Primitives, 0.125, 0.375, 0.0).has_value());
+}
+
+TEST(CreaseCrossing, SharedDecisionsAreEachTilesOwn)
+{
+  // Tiles of the tent's faces y = 0.5 and y = 0.25 - the same lattice
+  // bounds on two planes, crease tiles and others - each asked of one
+  // CreaseTileCache by two threads at once, as the two cells sharing a tile
+  // ask, and then once more: every answer is CreaseOnTile's for that tile
+  // (a key without the plane, or a decision given out after it was taken,
+  // would fail it).
+  SceneBuilder b;
+  b.Finish(b.Mesh(Tent(0.8, 0.02)));
+  const auto pruned = Whole(b.Scene);
+  const tpc::CsgLeaf* leaf = tpc::LoneMeshLeaf(*pruned);
+  ASSERT_NE(leaf, nullptr);
+  const tpc::RootGrid grid = tpctest::SingleRoot({ -1 - LatticeShift, -1, -1 }, 2.0, 8);
+  struct Asked
+  {
+    tpc::LatticeIndex Plane;
+    tpc::FaceTile Tile;
+  };
+  std::vector<Asked> asked;
+  for (const double y : { 0.5, 0.25 })
+  {
+    for (const auto& [x0, x1, z0] : std::vector<std::array<double, 3>>{
+           { 0.4375, 0.5625, 0.5 }, { 0.125, 0.5625, 0.0 }, { 0.125, 0.375, 0.0 }, { 0.46875, 0.5, 0.5 } })
+    {
+      asked.push_back({ LatticeOf(y), { LatticeOf(z0), LatticeOf(x0, LatticeShift), LatticeOf(0.875),
+                                        LatticeOf(x1, LatticeShift) } });
+    }
+  }
+  const auto same = [](const std::optional<tpc::CreaseTile>& a, const std::optional<tpc::CreaseTile>& b) {
+    if (a.has_value() != b.has_value())
+    {
+      return false;
+    }
+    if (!a)
+    {
+      return true;
+    }
+    const auto equal = [](const std::vector<Vec3>& p, const std::vector<Vec3>& q) {
+      return std::equal(p.begin(), p.end(), q.begin(), q.end(),
+        [](const Vec3& u, const Vec3& v) { return u[0] == v[0] && u[1] == v[1] && u[2] == v[2]; });
+    };
+    return a->X.Partner == b->X.Partner && a->X.Key == b->X.Key && a->Position[0] == b->Position[0] &&
+      a->Position[1] == b->Position[1] && a->Position[2] == b->Position[2] && equal(a->Sides[0], b->Sides[0]) &&
+      equal(a->Sides[1], b->Sides[1]);
+  };
+  int creases = 0;
+  tpc::CreaseTileCache cache;
+  std::vector<std::optional<tpc::CreaseTile>> first(asked.size()), second(asked.size());
+  const auto askAll = [&](std::vector<std::optional<tpc::CreaseTile>>& answers) {
+    for (std::size_t i = 0; i < asked.size(); ++i)
+    {
+      answers[i] = cache.Decide(*leaf, b.Scene.Primitives, grid, 1, asked[i].Plane, asked[i].Tile);
+    }
+  };
+  std::thread other(askAll, std::ref(second));
+  askAll(first);
+  other.join();
+  for (std::size_t i = 0; i < asked.size(); ++i)
+  {
+    const auto own = tpc::CreaseOnTile(*leaf, b.Scene.Primitives, grid, 1, asked[i].Plane, asked[i].Tile);
+    creases += own ? 1 : 0;
+    EXPECT_TRUE(same(first[i], own)) << "tile " << i;
+    EXPECT_TRUE(same(second[i], own)) << "tile " << i;
+    EXPECT_TRUE(same(cache.Decide(*leaf, b.Scene.Primitives, grid, 1, asked[i].Plane, asked[i].Tile), own))
+      << "tile " << i;
+  }
+  EXPECT_GE(creases, 4); // (the ridge crosses both planes: crease tiles on each)
+  EXPECT_LT(creases, static_cast<int>(asked.size()));
 }
 
 TEST(CreaseCrossing, TileWithTwoCreasesRunsThroughTheSharper)
