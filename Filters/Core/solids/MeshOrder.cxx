@@ -155,14 +155,16 @@ void OrderAlongMortonCurve(std::vector<Vec3>& points, std::vector<std::array<std
   if (!neighbours.empty())
   {
     std::vector<std::array<std::uint32_t, 3>> renamed(n);
-    for (std::uint32_t k = 0; k < n; ++k)
-    {
-      for (int c = 0; c < 3; ++c)
+    parallelFor(n, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t k = begin; k < end; ++k)
       {
-        const std::uint32_t across = neighbours[keyed[k].second][c];
-        renamed[k][c] = across == none ? none : newTriangle[across];
+        for (int c = 0; c < 3; ++c)
+        {
+          const std::uint32_t across = neighbours[keyed[k].second][c];
+          renamed[k][c] = across == none ? none : newTriangle[across];
+        }
       }
-    }
+    });
     neighbours = std::move(renamed);
   }
   points = std::move(reorderedPoints);

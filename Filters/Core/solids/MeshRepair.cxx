@@ -303,7 +303,10 @@ std::vector<std::uint32_t> OrientConsistently(std::vector<Triangle>& triangles, 
   UnionFind components(triangles.size());
   const std::vector<Across> across = EdgeNeighbours(uses, triangles.size(), components, r, edges);
   std::vector<EdgeUse>().swap(uses);
-  const std::vector<bool> flips = ConsistentFlips(across, r);
+  // (No edge walked twice the same way - most inputs: nothing turns, and the
+  // search, which would keep every triangle, is not needed.)
+  const std::vector<bool> flips =
+    r.InconsistentEdges == 0 ? std::vector<bool>(triangles.size(), false) : ConsistentFlips(across, r);
   if (neighbours)
   {
     static_assert(Across::None == MeshSolid::NoTriangle, "the same mark for no neighbour");

@@ -100,21 +100,25 @@ void MeshSolid::Index(const ParallelFor& parallelFor)
     const double extent = this->Box.hi[axis] - this->Box.lo[axis];
     this->GridStep[k] = extent > 0.0 ? extent / n : 1.0;
   }
-  auto cellRange = [&](int k, double lo, double hi, int& c0, int& c1) {
-    c0 = this->GridColumn(k, lo);
-    c1 = this->GridColumn(k, hi);
-  };
+  // Each triangle's columns, y0 y1 z0 z1 (in parallel: the floors were most
+  // of the grid's build), then entered by a counting sort.
+  std::vector<std::array<int, 4>> columns(this->Faces.size());
+  const double wy = 1e-9 * this->GridStep[0], wz = 1e-9 * this->GridStep[1];
+  parallelFor(this->Faces.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t)
+    {
+      // Slightly widened: a point on a cell border must find the triangle.
+      const Box3& b = this->FaceBoxes[t];
+      columns[t] = { this->GridColumn(0, b.lo[1] - wy), this->GridColumn(0, b.hi[1] + wy),
+        this->GridColumn(1, b.lo[2] - wz), this->GridColumn(1, b.hi[2] + wz) };
+    }
+  });
   std::vector<std::uint32_t> counts(static_cast<std::size_t>(n) * n + 1, 0);
   for (int pass = 0; pass < 2; ++pass)
   {
     for (std::size_t t = 0; t < this->Faces.size(); ++t)
     {
-      int y0, y1, z0, z1;
-      // Slightly widened: a point on a cell border must find the triangle.
-      const Box3& b = this->FaceBoxes[t];
-      const double wy = 1e-9 * this->GridStep[0], wz = 1e-9 * this->GridStep[1];
-      cellRange(0, b.lo[1] - wy, b.hi[1] + wy, y0, y1);
-      cellRange(1, b.lo[2] - wz, b.hi[2] + wz, z0, z1);
+      const auto [y0, y1, z0, z1] = columns[t];
       for (int y = y0; y <= y1; ++y)
       {
         for (int z = z0; z <= z1; ++z)
