@@ -1,5 +1,6 @@
 #include "CreaseCrossing.h"
 
+#include "CreaseTileCache.h"
 #include "MeshArrangement.h"
 
 #include <algorithm>
@@ -224,6 +225,13 @@ std::optional<CreaseTile> CreaseOnTile(const CsgLeaf& leaf, const PrimitiveSet& 
     crease = std::move(found);
   }
   return crease;
+}
+
+std::optional<CreaseTile> DecideCreaseTile(CreaseTileCache* cache, const CsgLeaf& leaf,
+  const PrimitiveSet& primitives, const RootGrid& grid, int axis, LatticeIndex plane, const FaceTile& tile)
+{
+  return cache ? cache->Decide(leaf, primitives, grid, axis, plane, tile)
+               : CreaseOnTile(leaf, primitives, grid, axis, plane, tile);
 }
 
 } // namespace tpc

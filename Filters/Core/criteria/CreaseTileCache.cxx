@@ -24,7 +24,8 @@ std::optional<CreaseTile> CreaseTileCache::Decide(const CsgLeaf& leaf, const Pri
     const auto found = shard.Tiles.find(key);
     if (found != shard.Tiles.end())
     {
-      // (The other cell sharing the tile: taken out, as no third asks.)
+      // (The other cell sharing the tile: taken out. A cell asking again
+      // decides again, alike.)
       std::optional<CreaseTile> kept = std::move(found->second);
       shard.Tiles.erase(found);
       return kept;
@@ -36,13 +37,6 @@ std::optional<CreaseTile> CreaseTileCache::Decide(const CsgLeaf& leaf, const Pri
   const std::lock_guard<std::mutex> lock(shard.Mutex);
   shard.Tiles.emplace(key, decided);
   return decided;
-}
-
-std::optional<CreaseTile> DecideCreaseTile(CreaseTileCache* cache, const CsgLeaf& leaf,
-  const PrimitiveSet& primitives, const RootGrid& grid, int axis, LatticeIndex plane, const FaceTile& tile)
-{
-  return cache ? cache->Decide(leaf, primitives, grid, axis, plane, tile)
-               : CreaseOnTile(leaf, primitives, grid, axis, plane, tile);
 }
 
 void CreaseTileCache::Clear()

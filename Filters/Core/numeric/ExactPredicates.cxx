@@ -15,34 +15,11 @@ struct Difference
   double X, Y;
 };
 
-using predicates::MinimumMagnitude;
-using predicates::Orient3DBound;
-
-/// +1, -1, or 0 when the filter cannot decide.
-int FilteredSignOfDeterminant(const Difference m[3][3])
+/// Exact sign of the 3x3 determinant of differences where the floating-point
+/// filter (predicates::FilteredDeterminantSign) could not decide: an
+/// interval filter, then the exact sum.
+int SignOfDeterminantBeyondFilter(const Difference m[3][3])
 {
-  const double ax = m[0][0].X - m[0][0].Y, ay = m[0][1].X - m[0][1].Y, az = m[0][2].X - m[0][2].Y;
-  const double bx = m[1][0].X - m[1][0].Y, by = m[1][1].X - m[1][1].Y, bz = m[1][2].X - m[1][2].Y;
-  const double cx = m[2][0].X - m[2][0].Y, cy = m[2][1].X - m[2][1].Y, cz = m[2][2].X - m[2][2].Y;
-  const double bxcy = bx * cy, cxby = cx * by, cxay = cx * ay, axcy = ax * cy, axby = ax * by, bxay = bx * ay;
-  const double det = az * (bxcy - cxby) + bz * (cxay - axcy) + cz * (axby - bxay);
-  const double permanent = (std::abs(bxcy) + std::abs(cxby)) * std::abs(az) +
-    (std::abs(cxay) + std::abs(axcy)) * std::abs(bz) + (std::abs(axby) + std::abs(bxay)) * std::abs(cz);
-  const double bound = Orient3DBound * permanent;
-  if (!(permanent >= MinimumMagnitude) || !std::isfinite(permanent))
-  {
-    return 0;
-  }
-  return det > bound ? 1 : det < -bound ? -1 : 0;
-}
-
-/// Exact sign of the 3x3 determinant of differences, after an interval filter.
-int SignOfDeterminant(const Difference m[3][3])
-{
-  if (const int filtered = FilteredSignOfDeterminant(m))
-  {
-    return filtered;
-  }
   static const int perms[6][3] = { { 0, 1, 2 }, { 1, 2, 0 }, { 2, 0, 1 }, { 0, 2, 1 }, { 2, 1, 0 },
     { 1, 0, 2 } };
   static const int parity[6] = { 1, 1, 1, -1, -1, -1 };
@@ -103,6 +80,15 @@ int SignOfDeterminant(const Difference m[3][3])
   }
   return sum.Sign();
 }
+
+/// Exact sign of the 3x3 determinant of differences.
+int SignOfDeterminant(const Difference m[3][3])
+{
+  const auto value = [&](int r, int c) { return m[r][c].X - m[r][c].Y; };
+  const int filtered = predicates::FilteredDeterminantSign(
+    value(0, 0), value(0, 1), value(0, 2), value(1, 0), value(1, 1), value(1, 2), value(2, 0), value(2, 1), value(2, 2));
+  return filtered ? filtered : SignOfDeterminantBeyondFilter(m);
+}
 } // namespace
 
 int predicates::Orient2DBeyondFilter(double au, double av, double bu, double bv, double cu, double cv)
@@ -147,7 +133,7 @@ int predicates::Orient3DBeyondFilter(const Vec3& a, const Vec3& b, const Vec3& c
   const Difference m[3][3] = { { { a[0], d[0] }, { a[1], d[1] }, { a[2], d[2] } },
     { { b[0], d[0] }, { b[1], d[1] }, { b[2], d[2] } },
     { { c[0], d[0] }, { c[1], d[1] }, { c[2], d[2] } } };
-  return SignOfDeterminant(m);
+  return SignOfDeterminantBeyondFilter(m); // (the inline filter could not decide)
 }
 
 int FacingSign(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& u)

@@ -34,6 +34,23 @@ int Orient2DBeyondFilter(double au, double av, double bu, double bv, double cu, 
 
 /// Orient3D where its filter cannot decide.
 int Orient3DBeyondFilter(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+
+/// The filter of a 3 x 3 determinant with rows (ax, ay, az), (bx, by, bz),
+/// (cx, cy, cz): its sign, or 0 where the filter cannot decide.
+inline int FilteredDeterminantSign(
+  double ax, double ay, double az, double bx, double by, double bz, double cx, double cy, double cz)
+{
+  const double bxcy = bx * cy, cxby = cx * by, cxay = cx * ay, axcy = ax * cy, axby = ax * by, bxay = bx * ay;
+  const double det = az * (bxcy - cxby) + bz * (cxay - axcy) + cz * (axby - bxay);
+  const double permanent = (std::abs(bxcy) + std::abs(cxby)) * std::abs(az) +
+    (std::abs(cxay) + std::abs(axcy)) * std::abs(bz) + (std::abs(axby) + std::abs(bxay)) * std::abs(cz);
+  if (!(permanent >= MinimumMagnitude && permanent <= DBL_MAX)) // (a NaN, infinite, or may have underflowed)
+  {
+    return 0;
+  }
+  const double bound = Orient3DBound * permanent;
+  return det > bound ? 1 : det < -bound ? -1 : 0;
+}
 } // namespace predicates
 
 /// Sign of (b - a) x (c - a) for 2-D points given by (u, v) pairs:
@@ -68,26 +85,9 @@ inline int Orient2D(double au, double av, double bu, double bv, double cu, doubl
 /// another 2.5 %).
 inline int Orient3D(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
 {
-  const double ax = a[0] - d[0], ay = a[1] - d[1], az = a[2] - d[2];
-  const double bx = b[0] - d[0], by = b[1] - d[1], bz = b[2] - d[2];
-  const double cx = c[0] - d[0], cy = c[1] - d[1], cz = c[2] - d[2];
-  const double bxcy = bx * cy, cxby = cx * by, cxay = cx * ay, axcy = ax * cy, axby = ax * by, bxay = bx * ay;
-  const double det = az * (bxcy - cxby) + bz * (cxay - axcy) + cz * (axby - bxay);
-  const double permanent = (std::abs(bxcy) + std::abs(cxby)) * std::abs(az) +
-    (std::abs(cxay) + std::abs(axcy)) * std::abs(bz) + (std::abs(axby) + std::abs(bxay)) * std::abs(cz);
-  if (permanent >= predicates::MinimumMagnitude && permanent <= DBL_MAX) // (not a NaN, finite)
-  {
-    const double bound = predicates::Orient3DBound * permanent;
-    if (det > bound)
-    {
-      return 1;
-    }
-    if (det < -bound)
-    {
-      return -1;
-    }
-  }
-  return predicates::Orient3DBeyondFilter(a, b, c, d);
+  const int filtered = predicates::FilteredDeterminantSign(a[0] - d[0], a[1] - d[1], a[2] - d[2], b[0] - d[0],
+    b[1] - d[1], b[2] - d[2], c[0] - d[0], c[1] - d[1], c[2] - d[2]);
+  return filtered ? filtered : predicates::Orient3DBeyondFilter(a, b, c, d);
 }
 
 /// Sign of n . u with n = (b - a) x (c - a): which way the triangle faces

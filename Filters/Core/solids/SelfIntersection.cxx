@@ -577,7 +577,7 @@ std::size_t CountAcceptedPairs(const std::vector<Vec3>& points,
 
 namespace
 {
-/// `stars`: of these triangles, or null to prove them here.
+/// `given`: the stars proven of these triangles, or null to prove them here.
 std::size_t CountImproperPairs(const std::vector<Vec3>& points,
   const std::vector<std::array<std::uint32_t, 3>>& triangles, const std::vector<Box3>* boxes,
   const EmbeddedStars* given, std::size_t limit, const ParallelFor& parallelFor, const ProgressCallback& progress)
@@ -588,10 +588,12 @@ std::size_t CountImproperPairs(const std::vector<Vec3>& points,
   }
   // Pairs sharing a vertex whose star is proven embedded need no test of
   // their own (EmbeddedStars.h): most candidate pairs are neighbours.
-  const std::optional<EmbeddedStars> proven = given
-    ? std::nullopt
-    : std::make_optional<EmbeddedStars>(points.data(), points.size(), triangles.data(), triangles.size(), parallelFor);
-  const EmbeddedStars& stars = given ? *given : *proven;
+  std::optional<EmbeddedStars> own;
+  if (!given)
+  {
+    own.emplace(points.data(), points.size(), triangles.data(), triangles.size(), parallelFor);
+  }
+  const EmbeddedStars& stars = given ? *given : *own;
   return CountAcceptedPairs(points, triangles, boxes, limit, parallelFor, progress,
     [&](std::uint32_t t1, std::uint32_t t2) {
       return !stars.ProveProper(triangles[t1], triangles[t2]) &&

@@ -346,7 +346,7 @@ bool LevelByLevel::TestCells(std::vector<CellTests>& tests)
     }
     return progress && progress(static_cast<double>(last) / static_cast<double>(this->Active.size()));
   });
-  this->CreaseTiles.Clear(); // (the next level's tiles are its children's, none of these)
+  this->CreaseTiles.Clear(); // (what is left: tiles one cell asked for and the other did not)
   return done;
 }
 

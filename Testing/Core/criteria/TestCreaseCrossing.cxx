@@ -168,30 +168,38 @@ TEST(CreaseCrossing, CreaseTilesAndTheirTraceHalves)
 TEST(CreaseCrossing, SharedDecisionsAreEachTilesOwn)
 {
   // Tiles of the tent's faces y = 0.5 and y = 0.25 - the same lattice
-  // bounds on two planes, crease tiles and others - each asked of one
-  // CreaseTileCache by two threads at once, as the two cells sharing a tile
-  // ask, and then once more: every answer is CreaseOnTile's for that tile
-  // (a key without the plane, or a decision given out after it was taken,
-  // would fail it).
+  // bounds on two planes (the ridge crosses them at different points), crease
+  // tiles and others - asked of a CreaseTileCache as the two cells sharing a
+  // tile ask, each with its own triangle list: first every tile by the cell
+  // below it, then by the cell above (the second takes the decision out);
+  // then by two threads at once. Every answer is CreaseOnTile's for that
+  // tile, with either cell's list (a key without the plane, or a decision
+  // that depended on the list, would fail it).
   SceneBuilder b;
   b.Finish(b.Mesh(Tent(0.8, 0.02)));
-  const auto pruned = Whole(b.Scene);
-  const tpc::CsgLeaf* leaf = tpc::LoneMeshLeaf(*pruned);
+  const auto whole = Whole(b.Scene);
+  const tpc::CsgLeaf* leaf = tpc::LoneMeshLeaf(*whole);
   ASSERT_NE(leaf, nullptr);
   const tpc::RootGrid grid = tpctest::SingleRoot({ -1 - LatticeShift, -1, -1 }, 2.0, 8);
   struct Asked
   {
     tpc::LatticeIndex Plane;
     tpc::FaceTile Tile;
+    std::array<tpc::CsgExpressionPtr, 2> Cells; ///< pruned to the cells below and above the plane
   };
   std::vector<Asked> asked;
   for (const double y : { 0.5, 0.25 })
   {
+    const auto cell = [&](double lo, double hi) {
+      return tpc::CsgExpression::Prune(b.Scene.Expression, { { -1, lo, -1 }, { 1, hi, 1 } }, b.Scene.Primitives)
+        .Expression;
+    };
     for (const auto& [x0, x1, z0] : std::vector<std::array<double, 3>>{
            { 0.4375, 0.5625, 0.5 }, { 0.125, 0.5625, 0.0 }, { 0.125, 0.375, 0.0 }, { 0.46875, 0.5, 0.5 } })
     {
-      asked.push_back({ LatticeOf(y), { LatticeOf(z0), LatticeOf(x0, LatticeShift), LatticeOf(0.875),
-                                        LatticeOf(x1, LatticeShift) } });
+      asked.push_back({ LatticeOf(y),
+        { LatticeOf(z0), LatticeOf(x0, LatticeShift), LatticeOf(0.875), LatticeOf(x1, LatticeShift) },
+        { cell(y - 0.25, y), cell(y, y + 0.25) } });
     }
   }
   const auto same = [](const std::optional<tpc::CreaseTile>& a, const std::optional<tpc::CreaseTile>& b) {
@@ -211,29 +219,45 @@ TEST(CreaseCrossing, SharedDecisionsAreEachTilesOwn)
       a->Position[1] == b->Position[1] && a->Position[2] == b->Position[2] && equal(a->Sides[0], b->Sides[0]) &&
       equal(a->Sides[1], b->Sides[1]);
   };
-  int creases = 0;
-  tpc::CreaseTileCache cache;
-  std::vector<std::optional<tpc::CreaseTile>> first(asked.size()), second(asked.size());
-  const auto askAll = [&](std::vector<std::optional<tpc::CreaseTile>>& answers) {
-    for (std::size_t i = 0; i < asked.size(); ++i)
-    {
-      answers[i] = cache.Decide(*leaf, b.Scene.Primitives, grid, 1, asked[i].Plane, asked[i].Tile);
-    }
+  const auto own = [&](std::size_t i, int side) {
+    return tpc::CreaseOnTile(
+      *tpc::LoneMeshLeaf(*asked[i].Cells[side]), b.Scene.Primitives, grid, 1, asked[i].Plane, asked[i].Tile);
   };
-  std::thread other(askAll, std::ref(second));
-  askAll(first);
-  other.join();
+  int creases = 0;
   for (std::size_t i = 0; i < asked.size(); ++i)
   {
-    const auto own = tpc::CreaseOnTile(*leaf, b.Scene.Primitives, grid, 1, asked[i].Plane, asked[i].Tile);
-    creases += own ? 1 : 0;
-    EXPECT_TRUE(same(first[i], own)) << "tile " << i;
-    EXPECT_TRUE(same(second[i], own)) << "tile " << i;
-    EXPECT_TRUE(same(cache.Decide(*leaf, b.Scene.Primitives, grid, 1, asked[i].Plane, asked[i].Tile), own))
-      << "tile " << i;
+    const auto decided = tpc::CreaseOnTile(*leaf, b.Scene.Primitives, grid, 1, asked[i].Plane, asked[i].Tile);
+    creases += decided ? 1 : 0;
+    ASSERT_TRUE(same(own(i, 0), decided) && same(own(i, 1), decided)) << "tile " << i; // (both cells alike)
   }
   EXPECT_GE(creases, 4); // (the ridge crosses both planes: crease tiles on each)
   EXPECT_LT(creases, static_cast<int>(asked.size()));
+  tpc::CreaseTileCache cache;
+  const auto ask = [&](std::size_t i, int side) {
+    return cache.Decide(
+      *tpc::LoneMeshLeaf(*asked[i].Cells[side]), b.Scene.Primitives, grid, 1, asked[i].Plane, asked[i].Tile);
+  };
+  for (const int side : { 0, 1 })
+  {
+    for (std::size_t i = 0; i < asked.size(); ++i)
+    {
+      EXPECT_TRUE(same(ask(i, side), own(i, side))) << "tile " << i << ", cell " << side;
+    }
+  }
+  std::vector<std::optional<tpc::CreaseTile>> first(asked.size()), second(asked.size());
+  const auto askAll = [&](int side, std::vector<std::optional<tpc::CreaseTile>>& answers) {
+    for (std::size_t i = 0; i < asked.size(); ++i)
+    {
+      answers[i] = ask(i, side);
+    }
+  };
+  std::thread other(askAll, 1, std::ref(second));
+  askAll(0, first);
+  other.join();
+  for (std::size_t i = 0; i < asked.size(); ++i)
+  {
+    EXPECT_TRUE(same(first[i], own(i, 0)) && same(second[i], own(i, 1))) << "tile " << i;
+  }
 }
 
 TEST(CreaseCrossing, TileWithTwoCreasesRunsThroughTheSharper)
