@@ -355,7 +355,12 @@ bool TrianglesMeetImproperly(const Vec3* P, const Triangle& t1, const Triangle& 
 namespace
 {
 /// The bins of a uniform grid over triangle boxes: cells about twice the
-/// mean triangle size, at most about 8 n of them.
+/// median triangle size (a box's largest width), at most about 8 n of them.
+/// (The median, not the mean: a CAD part's few long slivers made the mean's
+/// cells hold many of its small triangles, every pair of them tried; with
+/// the median the turbine's and couplingdown's repair and check take 7 % and
+/// 17 % fewer instructions, reading the file included, armadillo's, of even
+/// triangles, 0.5 % more.)
 struct BinGrid
 {
   Box3 All{ { HUGE_VAL, HUGE_VAL, HUGE_VAL }, { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL } };
@@ -364,18 +369,21 @@ struct BinGrid
 
   BinGrid(const std::vector<Box3>& boxes)
   {
-    double meanSize = 0.0;
-    for (const Box3& b : boxes)
+    std::vector<double> sizes(boxes.size());
+    for (std::size_t t = 0; t < boxes.size(); ++t)
     {
+      const Box3& b = boxes[t];
       for (int a = 0; a < 3; ++a)
       {
         this->All.lo[a] = std::min(this->All.lo[a], b.lo[a]);
         this->All.hi[a] = std::max(this->All.hi[a], b.hi[a]);
       }
-      meanSize += std::max({ b.Width(0), b.Width(1), b.Width(2) });
+      const double size = std::max({ b.Width(0), b.Width(1), b.Width(2) });
+      sizes[t] = std::isnan(size) ? 0.0 : size; // (a strict weak order for the median)
     }
-    meanSize /= static_cast<double>(boxes.size());
-    this->Cell = std::max(2.0 * meanSize, 1e-300);
+    const auto middle = sizes.begin() + static_cast<std::ptrdiff_t>(sizes.size() / 2);
+    std::nth_element(sizes.begin(), middle, sizes.end());
+    this->Cell = std::max(2.0 * *middle, 1e-300);
     for (;;)
     {
       double cells = 1.0;
