@@ -67,6 +67,23 @@ tpc::EmbeddedStars Stars(const std::vector<Vec3>& p, const Tris& t)
 {
   return tpc::EmbeddedStars(p.data(), p.size(), t.data(), t.size());
 }
+
+/// Two fans of five triangles sharing vertex 0 (a bow tie), the second a
+/// copy of the first's rim lifted by 1 along z: two cycles around vertex 0.
+void BowTie(std::vector<Vec3>& p, Tris& t)
+{
+  Fan({ 0, 72, 144, 216, 288 }, p, t);
+  const auto n = static_cast<std::uint32_t>(p.size());
+  for (const Vec3& q : std::vector<Vec3>(p.begin() + 1, p.end()))
+  {
+    p.push_back(q + Vec3(0, 0, 1));
+  }
+  const Tris first = t;
+  for (const auto& f : first)
+  {
+    t.push_back({ 0, f[1] + n - 1, f[2] + n - 1 });
+  }
+}
 } // namespace
 
 TEST(EmbeddedStars, AFanWindingOnceIsProvenOneWindingTwiceIsNot)
@@ -116,17 +133,7 @@ TEST(EmbeddedStars, PinchedAndSharpVerticesProveNothing)
   // Two fans sharing vertex 0 (a bow tie): two cycles.
   std::vector<Vec3> p;
   Tris t;
-  Fan({ 0, 72, 144, 216, 288 }, p, t);
-  const auto n = static_cast<std::uint32_t>(p.size());
-  for (const Vec3& q : std::vector<Vec3>(p.begin() + 1, p.end()))
-  {
-    p.push_back(q + Vec3(0, 0, 1));
-  }
-  const Tris first = t;
-  for (const auto& f : first)
-  {
-    t.push_back({ 0, f[1] + n - 1, f[2] + n - 1 });
-  }
+  BowTie(p, t);
   EXPECT_FALSE(Stars(p, t).IsProven(0));
   // A cube's corners: no axis sees the three faces from one side.
   const tpc::MeshSolid cube = tpctest::CubeMesh({ 0, 0, 0 }, { 1, 1, 1 });
@@ -217,17 +224,7 @@ TEST(EmbeddedStars, TheirPinchedVertexCountIsTheLinksOwn)
   EXPECT_EQ(both(corners, tetrahedra), 1);
   std::vector<Vec3> p;
   Tris t;
-  Fan({ 0, 72, 144, 216, 288 }, p, t);
-  const auto n = static_cast<std::uint32_t>(p.size());
-  for (const Vec3& q : std::vector<Vec3>(p.begin() + 1, p.end()))
-  {
-    p.push_back(q + Vec3(0, 0, 1));
-  }
-  const Tris first = t;
-  for (const auto& f : first)
-  {
-    t.push_back({ 0, f[1] + n - 1, f[2] + n - 1 });
-  }
+  BowTie(p, t);
   EXPECT_GE(both(p, t), 1); // (vertex 0; the open fans' rims are no cycles either)
   std::mt19937 rng(11);
   for (int trial = 0; trial < 10; ++trial)
