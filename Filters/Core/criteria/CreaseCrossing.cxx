@@ -77,12 +77,16 @@ bool MayHoldCrease(const MeshSolid& mesh, const TriangleList& triangles, const B
 }
 
 /// The edges of `triangles` (those near the tile) crossing the open tile,
-/// each use once.
+/// each use once, sorted. Whether an edge's crossing lies in the open tile is
+/// a question of the edge alone (EdgeOnPlane orders its ends), asked once for
+/// both its uses: the uses crossing the plane are sorted first, so that the
+/// two of an edge are side by side. (Asked of each use, those exact tests
+/// were 1.6 % of armadillo's instructions at 1/64.)
 std::vector<EdgeUseOnTile> EdgesOnTile(
   const MeshArrangement& arrangement, const TriangleList& triangles, int axis, LatticeIndex plane, const FaceTile& tile)
 {
   const MeshSolid& mesh = arrangement.Mesh();
-  std::vector<EdgeUseOnTile> uses;
+  std::vector<EdgeUseOnTile> crossing;
   for (const std::uint32_t t : triangles)
   {
     const auto& ids = mesh.Triangles()[t];
@@ -94,14 +98,28 @@ std::vector<EdgeUseOnTile> EdgesOnTile(
     for (int k = 0; k < 3; ++k)
     {
       const std::uint32_t a = ids[k], b = ids[(k + 1) % 3];
-      if (side[k] != side[(k + 1) % 3] &&
-        InsideTile(arrangement, ArrangementPoint::EdgeOnPlane(a, b, axis, plane), axis, tile))
+      if (side[k] != side[(k + 1) % 3])
       {
-        uses.push_back({ std::min(a, b), std::max(a, b), t, ids[(k + 2) % 3] });
+        crossing.push_back({ std::min(a, b), std::max(a, b), t, ids[(k + 2) % 3] });
       }
     }
   }
-  std::sort(uses.begin(), uses.end());
+  std::sort(crossing.begin(), crossing.end());
+  std::vector<EdgeUseOnTile> uses;
+  for (std::size_t i = 0; i < crossing.size();)
+  {
+    std::size_t j = i + 1;
+    while (j < crossing.size() && crossing[j].A == crossing[i].A && crossing[j].B == crossing[i].B)
+    {
+      ++j;
+    }
+    if (InsideTile(arrangement, ArrangementPoint::EdgeOnPlane(crossing[i].A, crossing[i].B, axis, plane), axis, tile))
+    {
+      uses.insert(uses.end(), crossing.begin() + static_cast<std::ptrdiff_t>(i),
+        crossing.begin() + static_cast<std::ptrdiff_t>(j));
+    }
+    i = j;
+  }
   return uses;
 }
 
