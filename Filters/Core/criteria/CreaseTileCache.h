@@ -11,9 +11,9 @@
 // depend on the threads. A decision is taken out by the second cell asking
 // for it - the two sharing the tile are all that ask in one pass (a cell
 // asking again decides again, alike) - and the pass that asks holds the cache
-// and clears it after (a subdivision level: the next level's tiles are its
-// children's, none of these): it holds the tiles one cell has asked for and
-// the other not yet. (Kept until the end of the pass, the extraction's
+// and clears it after (a subdivision level, the extraction's loops): it holds
+// the tiles one cell has asked for and the other not yet, or never will (a
+// neighbour of another level, or outside the domain). (Kept until the end of the pass, the extraction's
 // decisions were 20 % more memory at the peak, armadillo and the turbine at
 // 1/256.)
 #pragma once
