@@ -115,18 +115,31 @@ tpc::CsgExpressionPtr Whole(const tpc::ImplicitScene& scene)
   return tpc::CsgExpression::Prune(scene.Expression, { { -1, -1, -1 }, { 1, 1, 1 } }, scene.Primitives).Expression;
 }
 
-/// CreaseOnTile for the tile x in [x0, x1], z in [z0, z1] of the face
-/// y = 0.5 (axis 1: u = z, v = x) of the tile tests' lattice.
-std::optional<tpc::CreaseTile> CreaseOnFaceTile(const tpc::CsgLeaf& leaf, const tpc::PrimitiveSet& primitives,
-  double x0, double x1, double z0 = 0.5, double z1 = 0.875)
+/// The tile tests' lattice (LatticeShift).
+const tpc::RootGrid& TileGrid()
 {
   static const tpc::RootGrid grid = tpctest::SingleRoot({ -1 - LatticeShift, -1, -1 }, 2.0, 8);
+  return grid;
+}
+
+/// The tile x in [x0, x1], z in [z0, z1] of a face y = constant (axis 1:
+/// u = z, v = x) of the tile tests' lattice.
+tpc::FaceTile TileOf(double x0, double x1, double z0, double z1)
+{
   tpc::FaceTile tile;
   tile.U0 = LatticeOf(z0);
   tile.U1 = LatticeOf(z1);
   tile.V0 = LatticeOf(x0, LatticeShift);
   tile.V1 = LatticeOf(x1, LatticeShift);
-  return tpc::CreaseOnTile(leaf, primitives, grid, 1, LatticeOf(0.5), tile);
+  return tile;
+}
+
+/// CreaseOnTile for the tile x in [x0, x1], z in [z0, z1] of the face
+/// y = 0.5.
+std::optional<tpc::CreaseTile> CreaseOnFaceTile(const tpc::CsgLeaf& leaf, const tpc::PrimitiveSet& primitives,
+  double x0, double x1, double z0 = 0.5, double z1 = 0.875)
+{
+  return tpc::CreaseOnTile(leaf, primitives, TileGrid(), 1, LatticeOf(0.5), TileOf(x0, x1, z0, z1));
 }
 } // namespace
 
@@ -180,7 +193,7 @@ TEST(CreaseCrossing, SharedDecisionsAreEachTilesOwn)
   const auto whole = Whole(b.Scene);
   const tpc::CsgLeaf* leaf = tpc::LoneMeshLeaf(*whole);
   ASSERT_NE(leaf, nullptr);
-  const tpc::RootGrid grid = tpctest::SingleRoot({ -1 - LatticeShift, -1, -1 }, 2.0, 8);
+  const tpc::RootGrid& grid = TileGrid();
   struct Asked
   {
     tpc::LatticeIndex Plane;
@@ -197,9 +210,7 @@ TEST(CreaseCrossing, SharedDecisionsAreEachTilesOwn)
     for (const auto& [x0, x1, z0] : std::vector<std::array<double, 3>>{
            { 0.4375, 0.5625, 0.5 }, { 0.125, 0.5625, 0.0 }, { 0.125, 0.375, 0.0 }, { 0.46875, 0.5, 0.5 } })
     {
-      asked.push_back({ LatticeOf(y),
-        { LatticeOf(z0), LatticeOf(x0, LatticeShift), LatticeOf(0.875), LatticeOf(x1, LatticeShift) },
-        { cell(y - 0.25, y), cell(y, y + 0.25) } });
+      asked.push_back({ LatticeOf(y), TileOf(x0, x1, z0, 0.875), { cell(y - 0.25, y), cell(y, y + 0.25) } });
     }
   }
   const auto same = [](const std::optional<tpc::CreaseTile>& a, const std::optional<tpc::CreaseTile>& b) {
