@@ -20,8 +20,8 @@
 // With --fingerprint 1 the filter's run also prints a hash of everything it
 // output (run_benchmark.py --compare: the same output from two builds); with
 // --fingerprint geometry, of everything but the certified errors (the grid's
-// CertifiedError, the HausdorffBound field): a change that moves only those
-// keeps it.
+// and the surface's CertifiedError, the HausdorffBound field): a change that
+// moves only those keeps it.
 // With --measure 1 on a scene of one mesh, the output's two-sided Hausdorff
 // distance to it, by CGAL (a test oracle; the sphere's is always measured).
 // With --decimate 1 the filter decimates its surface (Decimate).
@@ -238,8 +238,8 @@ struct Fnv1a
 /// Everything the filter output: the surface's points, triangles, point,
 /// cell and field data; the grid's trees (vertices and levels of each), cell
 /// and field data (the cells' depths, states and reasons among them).
-/// Without the certified errors (`errors` false): the same but the grid's
-/// CertifiedError and the HausdorffBound field.
+/// Without the certified errors (`errors` false): the same but the grid's and
+/// the surface's CertifiedError and the HausdorffBound field.
 std::string Fingerprint(vtkPolyData* surface, vtkHyperTreeGrid* grid, bool errors)
 {
   Fnv1a h;
@@ -248,7 +248,7 @@ std::string Fingerprint(vtkPolyData* surface, vtkHyperTreeGrid* grid, bool error
   h.AddArray(surface->GetPolys()->GetOffsetsArray());
   h.AddArray(surface->GetPolys()->GetConnectivityArray());
   h.AddArrays(surface->GetPointData());
-  h.AddArrays(surface->GetCellData());
+  h.AddArrays(surface->GetCellData(), errors ? nullptr : "CertifiedError");
   h.AddArrays(surface->GetFieldData(), bound);
   for (vtkIdType t = 0; t < grid->GetMaxNumberOfTrees(); ++t)
   {

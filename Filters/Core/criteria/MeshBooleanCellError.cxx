@@ -162,8 +162,11 @@ std::vector<Vec3> PredictMeshBooleanFan(const CsgExpressionPtr& expression, cons
     {
       continue;
     }
-    const HausdorffEstimate error = CertifiedSurfacePatchError(
-      surface.OnSurface, surface.Covering, fan, surface.Slack, tolerance - delta, tolerance - delta, PredictionBudget);
+    // (Its bound is only compared with the tolerance - the extraction
+    // certifies the final fans on their own - so any bound within it will do:
+    // PolygonHausdorff.h, Settled pieces.)
+    const HausdorffEstimate error = CertifiedSurfacePatchError(surface.OnSurface, surface.Covering, fan,
+      surface.Slack, tolerance - delta, tolerance - delta, PredictionBudget, nullptr, tolerance - delta);
     if (error.Upper + delta <= tolerance)
     {
       predicted = error.Upper + delta;

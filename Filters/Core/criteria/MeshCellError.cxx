@@ -273,22 +273,23 @@ double RoundingSlack(const CsgLeaf& leaf, const PrimitiveSet& primitives, const 
 
 HausdorffEstimate CertifiedMeshPatchError(const PolygonSet& surface,
   const std::vector<SourceTriangle>& patch, double slack, double enough, double giveUp, std::size_t budget,
-  const std::vector<double>* patchOffsets)
+  const std::vector<double>* patchOffsets, double anyBoundWithin)
 {
-  return CertifiedSurfacePatchError(surface, surface, patch, slack, enough, giveUp, budget, patchOffsets);
+  return CertifiedSurfacePatchError(surface, surface, patch, slack, enough, giveUp, budget, patchOffsets, anyBoundWithin);
 }
 
 HausdorffEstimate CertifiedSurfacePatchError(const PolygonSet& onSurface, const PolygonSet& covering,
   const std::vector<SourceTriangle>& patch, double slack, double enough, double giveUp, std::size_t budget,
-  const std::vector<double>* patchOffsets)
+  const std::vector<double>* patchOffsets, double anyBoundWithin)
 {
   HausdorffEstimate error{ HUGE_VAL, 0.0 };
   if (onSurface.empty() || patch.empty())
   {
     return error;
   }
-  const HausdorffEstimate toSurface =
-    OneSidedHausdorff(patch, onSurface, enough - slack, giveUp - slack, budget, { patchOffsets, nullptr });
+  const double anyWithin = anyBoundWithin - slack; // (of the distances, as enough and giveUp)
+  const HausdorffEstimate toSurface = OneSidedHausdorff(
+    patch, onSurface, enough - slack, giveUp - slack, budget, { patchOffsets, nullptr }, nullptr, anyWithin);
   error.Lower = toSurface.Lower;
   if (!(toSurface.Upper + slack <= giveUp))
   {
@@ -308,7 +309,8 @@ HausdorffEstimate CertifiedSurfacePatchError(const PolygonSet& onSurface, const 
   }
   const HausdorffEstimate toPatch =
     OneSidedHausdorff(pieces, targets, enough - slack, giveUp - slack, budget, { nullptr, patchOffsets }, nullptr,
-      toSurface.Lower); // (error.Lower takes the maximum with it, error.Upper with toSurface.Upper, at least it)
+      std::max(anyWithin, toSurface.Lower)); // (error.Lower takes the maximum with the latter, error.Upper with
+                                             // toSurface.Upper, at least it)
   error.Lower = std::max(error.Lower, toPatch.Lower);
   const double upper = std::max(toSurface.Upper, toPatch.Upper) + slack;
   error.Upper = upper <= giveUp ? upper : HUGE_VAL;
@@ -387,8 +389,8 @@ bool PredictCreaseApex(const PolygonSet& surface, const Box3& cell, const std::v
     {
       continue;
     }
-    const HausdorffEstimate error =
-      CertifiedMeshPatchError(surface, fan, slack, tolerance - delta, tolerance - delta, PredictionBudget);
+    const HausdorffEstimate error = CertifiedMeshPatchError(surface, fan, slack, tolerance - delta,
+      tolerance - delta, PredictionBudget, nullptr, PredictionPrecision * tolerance);
     if (error.Upper + delta <= tolerance)
     {
       prediction.Apexes = apexes;
@@ -697,8 +699,8 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
       return HUGE_VAL;
     }
   }
-  const HausdorffEstimate error =
-    CertifiedMeshPatchError(surface, fan, slack, tolerance - delta, tolerance - delta, PredictionBudget);
+  const HausdorffEstimate error = CertifiedMeshPatchError(surface, fan, slack, tolerance - delta, tolerance - delta,
+    PredictionBudget, nullptr, PredictionPrecision * tolerance);
   prediction.Loops = std::move(points);
   prediction.Apexes = std::move(apexes);
   prediction.Attained = error.Lower;
@@ -712,8 +714,9 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
   const double leastDelta = *std::min_element(chordDelta.begin(), chordDelta.end());
   if (prediction.Bound == HUGE_VAL && leastDelta < delta && error.Lower + leastDelta < tolerance)
   {
-    prediction.Bound =
-      CertifiedMeshPatchError(surface, fan, slack, tolerance, tolerance, PredictionBudget, &chordDelta).Upper;
+    prediction.Bound = CertifiedMeshPatchError(
+      surface, fan, slack, tolerance, tolerance, PredictionBudget, &chordDelta, PredictionPrecision * tolerance)
+                         .Upper;
   }
   return prediction.Bound;
 }

@@ -319,9 +319,11 @@ public:
   /// known) are tried first - the piece usually lies near them - then the
   /// nodes nearer the vertices before the farther; a node is passed over
   /// when one vertex's box distance plus its least offset rules it out, a
-  /// target when one vertex's distance does.
+  /// target when one vertex's distance does. The search stops at the first
+  /// bound within `enough` (header: Settled pieces), which is then returned
+  /// whether or not it is the least.
   std::pair<double, std::uint32_t> BestSingle(const SourceTriangle& v, double below,
-    const std::array<std::uint32_t, 3>& seeds, const PolygonSet& polygons) const
+    const std::array<std::uint32_t, 3>& seeds, const PolygonSet& polygons, double enough) const
   {
     double best = below;
     std::uint32_t bestTarget = SingleTargetWitness::None;
@@ -370,7 +372,7 @@ public:
     Entry stack[64];
     int top = 0;
     stack[top++] = { farthestBox2(this->Nodes[0].Box), 0 };
-    while (top > 0)
+    while (top > 0 && !(best <= enough))
     {
       const auto [lowerBound2, n] = stack[--top];
       const Node& node = this->Nodes[n];
@@ -487,6 +489,16 @@ struct Targets
   /// Searched instead of the candidates (EvaluateInHierarchy); null where
   /// the targets are few.
   const TargetHierarchy* Hierarchy;
+  /// The caller's anyBoundWithin (header: Settled pieces).
+  double AnyBoundWithin;
+  /// The bound of g within which a piece of offset `offset` settles with the
+  /// first single-target bound found (header: Settled pieces), `lower` the
+  /// lower bound found so far; below 0 where witnesses are asked for (the
+  /// least names the witness).
+  double FirstBoundWithin(double settle, double lower, double offset) const
+  {
+    return this->SettlesWithoutSearch ? std::min(settle, std::max(lower, this->AnyBoundWithin)) - offset : -1.0;
+  }
   /// Target t's offset; the branch and bound without target offsets (the
   /// fan-to-surface direction, most of its work) is compiled with zeros.
   template <bool WithOffsets>
@@ -537,7 +549,7 @@ bool SettledByCommonNearest(Piece& piece, double settle, const Targets& targets,
 /// them, max_i (d(v_i, Q_t) + p_t), plus the piece's offset is at most both
 /// `settle` and `lower`, it is the piece's bound; then true. `lower` is the
 /// largest offset distance found at a vertex so far - or, for a source, its
-/// maximum with the caller's attainedElsewhere. Within the former the
+/// maximum with the caller's anyBoundWithin. Within the former the
 /// result is the same in exact arithmetic: the piece is never split (at
 /// most `settle`); its corners' g are at most its bound, hence at most
 /// `lower`, so none raises the lower bound; and its bound, at most `lower`,
@@ -632,6 +644,9 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
   double single = HUGE_VAL;
   std::uint32_t singleTarget = SingleTargetWitness::None;
   const auto largest = [&] { return std::max({ single, nearest[0], nearest[1], nearest[2] }); };
+  // (Once the single-target bound settles the piece, no smaller one is
+  // sought: header, Settled pieces.)
+  const double firstWithin = targets.FirstBoundWithin(settle, lower, piece.Offset);
   // Whether target t may lower a vertex's nearest distance or the single-
   // target bound, and then its distances. (A vertex's distance to the
   // target's box is a lower bound of its distance to the target: one vertex
@@ -646,7 +661,7 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
       boxDistance2Of[i] = targets.Boxes[t].Distance2(piece.Vertices[i]);
       farthestBox2 = std::max(farthestBox2, boxDistance2Of[i]);
     }
-    bool improvesSingle = CloserThan(farthestBox2, offset, single);
+    bool improvesSingle = !(single <= firstWithin) && CloserThan(farthestBox2, offset, single);
     double farthest = 0.0;
     for (int i = 0; i < 3; ++i)
     {
@@ -753,6 +768,8 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
 ///   lower (OneSidedHausdorff: a child lies in its parent). Over every target
 ///   rather than the candidates - a target left out of them is farther than
 ///   the parent's bound from the piece, so its (1) is above that bound too.
+/// A piece that settles settles with the first bound found within
+/// FirstBoundWithin, (2) where that is within it (header: Settled pieces).
 /// The shortcut and `lower` are Evaluate's; no candidates are kept, settled
 /// or not (a split searches the hierarchy again). (`first` and `count`, the
 /// candidates, are unused.)
@@ -774,9 +791,11 @@ void EvaluateInHierarchy(Piece& piece, std::size_t, std::size_t, double parentUp
     vertexMax = std::max(vertexMax, piece.Nearest[i]);
   }
   const double viaCorners = vertexMax + CoveringRadius(piece.Vertices); // (2)
-  std::tie(piece.Single, piece.SingleTarget) =
-    targets.Hierarchy->BestSingle(
-      piece.Vertices, std::min(viaCorners, parentUpperOfG), piece.NearestTarget, targets.Polygons);
+  const double firstWithin = targets.FirstBoundWithin(settle, lower, piece.Offset);
+  std::tie(piece.Single, piece.SingleTarget) = viaCorners <= firstWithin
+    ? std::make_pair(HUGE_VAL, SingleTargetWitness::None)
+    : targets.Hierarchy->BestSingle(
+        piece.Vertices, std::min(viaCorners, parentUpperOfG), piece.NearestTarget, targets.Polygons, firstWithin);
   piece.UpperOfG = std::min(piece.Single, viaCorners);
   piece.Upper = piece.UpperOfG + piece.Offset;
   lower = std::max(lower, vertexMax == HUGE_VAL ? 0.0 : vertexMax + piece.Offset);
@@ -815,7 +834,7 @@ void HausdorffTargets::Prepare(const PolygonSet& polygons, const std::vector<dou
 
 HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
   const PolygonSet& targets, double enough, double giveUp, std::size_t budget,
-  const DistanceOffsets& offsets, std::vector<SingleTargetWitness>* witnesses, double attainedElsewhere)
+  const DistanceOffsets& offsets, std::vector<SingleTargetWitness>* witnesses, double anyBoundWithin)
 {
   // (Prepared for this call alone, in memory kept across calls; the
   // hierarchy only where it is searched - not where witnesses are asked for.)
@@ -829,12 +848,12 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
   }
   thread_local HausdorffTargets prepared;
   prepared.Prepare(targets, offsets.Targets, witnesses == nullptr);
-  return OneSidedHausdorff(sources, prepared, enough, giveUp, budget, offsets.Sources, witnesses, attainedElsewhere);
+  return OneSidedHausdorff(sources, prepared, enough, giveUp, budget, offsets.Sources, witnesses, anyBoundWithin);
 }
 
 HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
   const HausdorffTargets& prepared, double enough, double giveUp, std::size_t budget,
-  const std::vector<double>* sourceOffsets, std::vector<SingleTargetWitness>* witnesses, double attainedElsewhere)
+  const std::vector<double>* sourceOffsets, std::vector<SingleTargetWitness>* witnesses, double anyBoundWithin)
 {
   HausdorffEstimate estimate;
   if (witnesses)
@@ -860,7 +879,7 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
   arena.resize(searchHierarchy ? 0 : targets.size());
   std::iota(arena.begin(), arena.end(), 0u);
   Targets context{ targets, prepared.Boxes, inReach, arena, offsets.Targets, witnesses == nullptr,
-    searchHierarchy ? prepared.Hierarchy.get() : nullptr };
+    searchHierarchy ? prepared.Hierarchy.get() : nullptr, anyBoundWithin };
   thread_local CornerDistances corners;
   corners.Reset(3 * sources.size());
   const auto evaluate = searchHierarchy ? &EvaluateInHierarchy
@@ -885,10 +904,10 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
   };
   // Each source evaluated in order, or settled by a target its corners or
   // the last source gave (SettledByKnownTarget) within the lower bound found
-  // so far or `attainedElsewhere`; those settled above the former wait in
+  // so far or `anyBoundWithin`; those settled above the former wait in
   // `deferred`: where no piece is left to split, their bounds count as they
   // are, else they are evaluated again before the splits, so that the lower
-  // bound the splits stop at is the one found without `attainedElsewhere`.
+  // bound the splits stop at is the one found without `anyBoundWithin`.
   std::uint32_t guess = SingleTargetWitness::None;
   thread_local std::vector<std::pair<std::size_t, double>> deferred; // (source, bound)
   deferred.clear();
@@ -933,7 +952,7 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
   };
   for (std::size_t k = 0; k < sources.size(); ++k)
   {
-    evaluateSource(k, attainedElsewhere);
+    evaluateSource(k, anyBoundWithin);
   }
   const bool splits = !queue.empty();
   for (std::size_t d = 0, count = deferred.size(); d < count; ++d)

@@ -56,12 +56,24 @@
 // the same in exact arithmetic and, computed, bit for bit on the tests and
 // scenes compared (a corner's g may differ by an ulp with the order of the
 // searches, as the hierarchy's may).
-// A caller that takes the maximum with a value attained elsewhere may pass it
-// (attainedElsewhere): sources are then settled within it too, and where
-// pieces are left to split, those settled above the lower bound are searched
-// before the splits, which stop at the lower bound found without it. Most of
-// S_C's triangles settle so against a fan (armadillo at 1/64, one thread:
-// 5.01 -> 4.75 G instructions, the same surfaces, grids and bounds).
+//
+// Settled pieces. A piece is settled (never split) once a bound of it is
+// within `enough` (and `giveUp`); which bound does not matter to the search:
+// the pieces split, their bounds and the lower bound are the same whatever a
+// settled piece's bound is. So a piece stops searching for a smaller one -
+// the least single-target bound over the targets, (1) where (2) already
+// settles it - once it has one within the lower bound found so far: that
+// changes neither bound returned, as above. A caller that needs no tighter
+// result below a value - it takes the maximum with a value attained elsewhere
+// (the other direction's Lower: CertifiedSurfacePatchError), or compares the
+// result with nothing below it (MeshCellError.h: Prediction precision) - may
+// pass it (anyBoundWithin): pieces then settle with the first bound found
+// within it too, and sources by a known target within it, without the search
+// for their new corners; where pieces are left to split, those sources
+// settled above the lower bound are searched before the splits, which stop at
+// the lower bound found without it. Most of S_C's triangles settle so against
+// a fan (armadillo at 1/64, one thread: 5.01 -> 4.75 G instructions, the same
+// surfaces, grids and bounds).
 //
 // Distances are computed in floating point; the caller adds the rounding
 // slack (MeshCellError.h).
@@ -164,23 +176,21 @@ private:
 /// first evaluation by (1) alone, within min(enough, giveUp) - a certificate
 /// that stays true as long as that target does (CertifiedDecimation.h keeps
 /// them between collapses).
-/// `attainedElsewhere`: a value the caller's result attains anyway, which it
-/// takes the maximum with (the other direction's Lower, where both are
-/// bounded: CertifiedSurfacePatchError). Sources whose single-target bound is
-/// within it are then settled without a search (header: Known targets), so
-/// Upper and Lower may differ where they are below it: max(attainedElsewhere,
-/// Upper) and max(attainedElsewhere, Lower) are those without it (as the
-/// header says of the shortcut), and Upper is an upper bound all the same.
+/// `anyBoundWithin`: a value below which the caller needs no tighter result
+/// (header: Settled pieces): pieces with a bound within it settle with the
+/// first found, so Upper and Lower may differ where they are below it:
+/// max(anyBoundWithin, Upper) and max(anyBoundWithin, Lower) are those
+/// without it, and Upper is an upper bound all the same.
 HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
   const PolygonSet& targets, double enough, double giveUp, std::size_t budget = 4096,
   const DistanceOffsets& offsets = {}, std::vector<SingleTargetWitness>* witnesses = nullptr,
-  double attainedElsewhere = 0.0);
+  double anyBoundWithin = 0.0);
 
 /// The same against prepared targets (their offsets as prepared), with
 /// `sourceOffsets` (null for zeros): the same bound, bit for bit.
 HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
   const HausdorffTargets& targets, double enough, double giveUp, std::size_t budget = 4096,
   const std::vector<double>* sourceOffsets = nullptr, std::vector<SingleTargetWitness>* witnesses = nullptr,
-  double attainedElsewhere = 0.0);
+  double anyBoundWithin = 0.0);
 
 } // namespace tpc

@@ -228,7 +228,7 @@ double ErrorCertificates::ThroughBounds(const Collapse& c) const
   }
   // (The result is the larger of the two: the first's attained distance
   // lets the second settle its pieces below it without a search,
-  // PolygonHausdorff.h, Known targets - the same maximum.)
+  // PolygonHausdorff.h, Settled pieces - the same maximum.)
   const HausdorffEstimate near =
     OneSidedHausdorff(after, beforeSet, enough, giveUp, budget, { nullptr, &offsets }, nullptr, covered.Lower);
   if (!(near.Upper <= giveUp))

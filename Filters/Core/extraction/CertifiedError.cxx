@@ -59,7 +59,7 @@ HausdorffEstimate CertifiedCellError(const CellSurface& surface, const CellPatch
   double enough, double giveUp, std::size_t budget)
 {
   HausdorffEstimate e = CertifiedSurfacePatchError(surface.OnSurface(), surface.Covering(),
-    PatchTriangles(patches, mesh), surface.Slack, enough, giveUp, budget);
+    PatchTriangles(patches, mesh), surface.Slack, enough, giveUp, budget, nullptr, enough);
   e.Lower = surface.OneMesh ? e.Lower : 0.0;
   return e;
 }

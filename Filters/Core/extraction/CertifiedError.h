@@ -53,7 +53,10 @@ bool SurfaceOfCell(
 
 /// E(P) of the cell's `patches` against `surface` (MeshCellError.h,
 /// CertifiedSurfacePatchError); Lower kept only where it is a distance the
-/// patch attains (one mesh), else 0.
+/// patch attains (one mesh), else 0. Pieces settle with the first bound
+/// found within `enough` (PolygonHausdorff.h: Settled pieces): the first
+/// certificates aim there and RefineMeshCertificates' at 1.1 times the
+/// largest distance attained, and nothing reads them tighter.
 HausdorffEstimate CertifiedCellError(const CellSurface& surface, const CellPatches& patches, const TriangleMesh& mesh,
   double enough, double giveUp, std::size_t budget);
 

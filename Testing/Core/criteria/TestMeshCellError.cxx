@@ -756,12 +756,15 @@ TEST(PolygonHausdorff, ManyTargetsSearchedInAHierarchyBoundAsTheirScanWould)
   }
 }
 
-TEST(PolygonHausdorff, ABoundAttainedElsewhereChangesNeitherMaximum)
+TEST(PolygonHausdorff, ABoundWithinWhichAnyWillDoChangesNeitherMaximum)
 {
-  // A caller that takes the maximum with a value attained elsewhere (the
-  // other direction's Lower: CertifiedSurfacePatchError) passes it, and
-  // sources whose single-target bound is within it settle without a search
-  // (PolygonHausdorff.cxx, SettledByKnownTarget). The maxima with it of Upper
+  // A caller that needs no tighter bound below a value (it takes the maximum
+  // with the other direction's Lower, CertifiedSurfacePatchError; or it
+  // compares the result with nothing below it, MeshCellError.h: Prediction
+  // precision) passes it: sources whose single-target bound is within it
+  // settle without a search (PolygonHausdorff.cxx, SettledByKnownTarget), and
+  // every piece with the first bound found within it (BestSingle's search and
+  // Evaluate's scan stop there). The maxima with it of Upper
   // and of Lower must be those without it, bit for bit: small triangles over
   // a fan's few large ones (where most settle so) and crumpled sheets both
   // ways (scanned and searched in the hierarchy), with and without offsets,
