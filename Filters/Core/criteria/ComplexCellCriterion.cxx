@@ -63,7 +63,7 @@ RegionSign ProveConstantSign(const CsgExpressionPtr& expression,
 
 SplitReason FaceCompatibilityTest(const CsgExpressionPtr& expression,
   const PrimitiveSet& primitives, const Box3& face, int axis, const bool inside[4],
-  int* failingEdge, double* opposite)
+  int* failingEdge, double* opposite, bool prunedToFace)
 {
   const bool change = inside[0] != inside[1] || inside[1] != inside[2] || inside[2] != inside[3];
   if (!change)
@@ -88,7 +88,7 @@ SplitReason FaceCompatibilityTest(const CsgExpressionPtr& expression,
       return SplitReason::ComplexEdge;
     }
   }
-  if (!IsStarShapedWithRespectToFace(expression, primitives, face, axis))
+  if (!IsStarShapedWithRespectToFace(expression, primitives, face, axis, prunedToFace))
   {
     return SplitReason::NotStarShapedFace;
   }

@@ -47,10 +47,13 @@ Box3 FaceBox(const Box3& cell, int face);
 /// k to corner k + 1 in that order, and `opposite` (if given) the coordinate
 /// along it of a point strictly inside it whose sign differs from its ends',
 /// when the crossing count met one (else it is left unchanged): a point in
-/// the gap or wedge between two crossings.
+/// the gap or wedge between two crossings. `prunedToFace`: the expression is
+/// already pruned to the face, to a mixed sign (face refinement prunes each
+/// tile's: FaceRefinement.cxx), and the star-shaped test does not prune it
+/// again.
 SplitReason FaceCompatibilityTest(const CsgExpressionPtr& expression,
   const PrimitiveSet& primitives, const Box3& face, int axis, const bool inside[4],
-  int* failingEdge = nullptr, double* opposite = nullptr);
+  int* failingEdge = nullptr, double* opposite = nullptr, bool prunedToFace = false);
 
 /// Edge k of a face (corners as for FaceCompatibilityTest) is crossed at
 /// most once, proven. `opposite` as above, asked only when its ends agree;

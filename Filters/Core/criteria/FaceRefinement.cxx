@@ -12,7 +12,6 @@ namespace
 {
 struct FaceRefiner
 {
-  const CsgExpressionPtr& Expression;
   const PrimitiveSet& Primitives;
   const RootGrid& Grid;
   int Axis;
@@ -29,8 +28,8 @@ struct FaceRefiner
   /// at every level with the same odds (it slips between the corners again);
   /// splitting at a sample of the opposite sign puts a corner inside the
   /// wedge, which settles it at once.
-  void SplitPoint(const FaceTile& t, const Box3& face, SplitReason why, int edge, double opposite,
-    const bool inside[4], LatticeIndex& us, LatticeIndex& vs)
+  void SplitPoint(const FaceTile& t, const Box3& face, const CsgExpressionPtr& expression, SplitReason why,
+    int edge, double opposite, const bool inside[4], LatticeIndex& us, LatticeIndex& vs)
   {
     us = t.U0 + (t.U1 - t.U0) / 2;
     vs = t.V0 + (t.V1 - t.V0) / 2;
@@ -64,7 +63,7 @@ struct FaceRefiner
       for (int k = 0; k < 4; ++k)
       {
         double point = std::numeric_limits<double>::quiet_NaN();
-        EdgeCrossedOnce(this->Expression, this->Primitives, face, this->Axis, inside, k, &point, 128);
+        EdgeCrossedOnce(expression, this->Primitives, face, this->Axis, inside, k, &point, 128);
         if (this->LatticePointOfOppositeSign(t, k, point, inside[k], us, vs))
         {
           return;
@@ -129,15 +128,36 @@ struct FaceRefiner
     return false;
   }
 
-  bool Refine(const FaceTile& t, int levels)
+  /// Refines tile `t`, whose parent's (or face's) expression is `outer`.
+  bool Refine(const FaceTile& t, int levels, const CsgExpressionPtr& outer)
   {
     const bool inside[4] = { this->Inside(t.U0, t.V0), this->Inside(t.U1, t.V0),
       this->Inside(t.U1, t.V1), this->Inside(t.U0, t.V1) };
     const Box3 face = TileBox(this->Grid, this->Axis, this->Plane, t);
+    // The tile's tests, and its children's, see the expression pruned to the
+    // closed tile: its mesh leaves list only the triangles that may meet it
+    // (in the same order), so the edges' crossing counts, the star-shaped
+    // test and the constant-sign proofs find what they found with the cell's
+    // lists, scanning far shorter ones (with the cell's whole lists, the face
+    // tests were 9 % of the turbine's instructions at 1/64, 3.8 % after).
+    // Pruned to one sign, the surface misses the tile: the test's own proof
+    // for tiles whose corners agree (ProveConstantSign prunes to the tile
+    // first).
+    const CsgExpression::Pruned pruned = CsgExpression::Prune(outer, face, this->Primitives);
+    const bool constant = pruned.Sign != RegionSign::Mixed;
+    const bool sameCorners = inside[0] == inside[1] && inside[1] == inside[2] && inside[2] == inside[3];
+    if (constant && sameCorners && inside[0] == (pruned.Sign == RegionSign::Inside))
+    {
+      this->Result.Tiles.push_back(t);
+      return true;
+    }
+    // (Corners that disagree with a sign proven over the tile cannot happen
+    // with exact signs; the outer expression is then kept, as before.)
+    const CsgExpressionPtr& expression = constant ? outer : pruned.Expression;
     int edge = -1;
     double opposite = std::numeric_limits<double>::quiet_NaN();
-    const SplitReason r =
-      FaceCompatibilityTest(this->Expression, this->Primitives, face, this->Axis, inside, &edge, &opposite);
+    const SplitReason r = FaceCompatibilityTest(
+      expression, this->Primitives, face, this->Axis, inside, &edge, &opposite, !constant);
     if (r == SplitReason::None)
     {
       this->Result.Tiles.push_back(t);
@@ -149,11 +169,11 @@ struct FaceRefiner
       return false;
     }
     LatticeIndex us, vs;
-    this->SplitPoint(t, face, r, edge, opposite, inside, us, vs);
-    return this->Refine({ t.U0, t.V0, us, vs }, levels - 1) &&
-      this->Refine({ us, t.V0, t.U1, vs }, levels - 1) &&
-      this->Refine({ t.U0, vs, us, t.V1 }, levels - 1) &&
-      this->Refine({ us, vs, t.U1, t.V1 }, levels - 1);
+    this->SplitPoint(t, face, expression, r, edge, opposite, inside, us, vs);
+    return this->Refine({ t.U0, t.V0, us, vs }, levels - 1, expression) &&
+      this->Refine({ us, t.V0, t.U1, vs }, levels - 1, expression) &&
+      this->Refine({ t.U0, vs, us, t.V1 }, levels - 1, expression) &&
+      this->Refine({ us, vs, t.U1, t.V1 }, levels - 1, expression);
   }
 };
 } // namespace
@@ -162,8 +182,8 @@ FaceRefinementResult RefineFace(const CsgExpressionPtr& expression,
   const PrimitiveSet& primitives, const RootGrid& grid, int axis, LatticeIndex plane,
   const FaceTile& face, int maxLevels, CellSignCache& signs)
 {
-  FaceRefiner r{ expression, primitives, grid, axis, plane, signs, {} };
-  if (!r.Refine(face, maxLevels))
+  FaceRefiner r{ primitives, grid, axis, plane, signs, {} };
+  if (!r.Refine(face, maxLevels, expression))
   {
     r.Result.Tiles.clear();
   }

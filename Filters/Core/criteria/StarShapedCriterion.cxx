@@ -464,8 +464,12 @@ bool IsStarShapedWithRespectToVoxel(
 }
 
 bool IsStarShapedWithRespectToFace(const CsgExpressionPtr& expression,
-  const PrimitiveSet& primitives, const Box3& face, int axis)
+  const PrimitiveSet& primitives, const Box3& face, int axis, bool prunedToFace)
 {
+  if (prunedToFace)
+  {
+    return IsStarShaped(expression, primitives, face, axis);
+  }
   const auto pruned = CsgExpression::Prune(expression, face, primitives);
   if (pruned.Sign != RegionSign::Mixed)
   {

@@ -46,9 +46,11 @@ namespace tpc
 bool IsStarShapedWithRespectToVoxel(
   const CsgExpressionPtr& expression, const PrimitiveSet& primitives, const Box3& cell);
 
-/// Same for a face (a box degenerate along `axis`).
+/// Same for a face (a box degenerate along `axis`); `prunedToFace`: the
+/// expression is already pruned to the face (CsgExpression::Prune with it,
+/// to a mixed sign), which is then not done again.
 bool IsStarShapedWithRespectToFace(const CsgExpressionPtr& expression,
-  const PrimitiveSet& primitives, const Box3& face, int axis);
+  const PrimitiveSet& primitives, const Box3& face, int axis, bool prunedToFace = false);
 
 /// Verifies (*) for one witness; exposed for tests.
 bool VerifyStarWitness(const CsgExpression& expression, const PrimitiveSet& primitives,

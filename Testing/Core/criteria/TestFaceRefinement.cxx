@@ -223,3 +223,60 @@ TEST(EdgeCrossings, WhereMeshesMeetTheCrossingBracketsAChangeOfTheExactSign)
   EXPECT_GT(checked, 200);
   EXPECT_GT(bothMeshesCrossed, 10);
 }
+
+TEST(FaceRefinement, TilesOfMeshesPassWithTheWholeMeshListed)
+{
+  // Each tile is tested with the expression pruned to it (its mesh leaves
+  // listing only the triangles that may meet it: FaceRefinement.cxx), its
+  // children with theirs. A tile so passed must pass with every triangle of
+  // the scene listed too: a tilted cube's edges and corners, a torus, and a
+  // sphere's mesh minus the cube's, cut by faces of the unit lattice at many
+  // heights.
+  const tpc::RootGrid grid = tpctest::SingleRoot({ -1, -1, -1 }, 2.0, 10);
+  const tpc::MeshSolid cube = tpctest::TiltedMesh(tpctest::CubeMesh({ -0.5, -0.5, -0.5 }, { 0.5, 0.5, 0.5 }));
+  std::vector<SceneBuilder> scenes(3);
+  std::vector<tpc::CsgExpressionPtr> expressions;
+  expressions.push_back(scenes[0].Finish(scenes[0].Mesh(cube)));
+  expressions.push_back(scenes[1].Finish(scenes[1].Mesh(tpctest::TorusMesh({ 0.05, 0.02, 0.01 }, 0.55, 0.2, 40, 16))));
+  expressions.push_back(scenes[2].Finish(SceneBuilder::Difference(
+    { scenes[2].Mesh(tpctest::SphereMesh({ 0.1, 0.05, 0 }, 0.7, 3)), scenes[2].Mesh(cube) })));
+  int refined = 0, tiles = 0;
+  for (std::size_t s = 0; s < scenes.size(); ++s)
+  {
+    const tpc::PrimitiveSet& prims = scenes[s].Scene.Primitives;
+    const tpc::CsgExpressionPtr& e = expressions[s];
+    tpc::LatticeSignTable global;
+    tpc::CellSignCache signs(global, grid, *e, prims);
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      for (tpc::LatticeIndex plane = 64; plane < Side; plane += 96)
+      {
+        const tpc::FaceRefinementResult r = tpc::RefineFace(e, prims, grid, axis, plane, { 0, 0, Side, Side }, 8, signs);
+        if (r.Failure != tpc::SplitReason::None)
+        {
+          continue;
+        }
+        ExpectTiling(r.Tiles);
+        refined += r.Tiles.size() > 1 ? 1 : 0;
+        for (const FaceTile& t : r.Tiles)
+        {
+          // (Corners in the test's cyclic order; TileCorner's bit 0 is U1,
+          // bit 1 V1.)
+          const tpc::Box3 face{ grid.Point(tpc::TileCorner(axis, plane, t, 0)),
+            grid.Point(tpc::TileCorner(axis, plane, t, 3)) };
+          bool inside[4];
+          for (int c = 0; c < 4; ++c)
+          {
+            inside[c] = e->IsInside(grid.Point(tpc::TileCorner(axis, plane, t, c == 2 ? 3 : c == 3 ? 2 : c)), prims);
+          }
+          EXPECT_EQ(tpc::FaceCompatibilityTest(e, prims, face, axis, inside), tpc::SplitReason::None)
+            << "scene " << s << ", axis " << axis << ", plane " << plane << ", tile " << t.U0 << " " << t.V0 << " "
+            << t.U1 << " " << t.V1;
+          ++tiles;
+        }
+      }
+    }
+  }
+  EXPECT_GT(refined, 10);
+  EXPECT_GT(tiles, 500);
+}
