@@ -137,22 +137,26 @@ struct FaceRefiner
     // The tile's tests, and its children's, see the expression pruned to the
     // closed tile: its mesh leaves list only the triangles that may meet it
     // (in the same order), so the edges' crossing counts, the star-shaped
-    // test and the constant-sign proofs find what they found with the cell's
+    // test and the constant-sign proofs decide as they did with the cell's
     // lists, scanning far shorter ones (with the cell's whole lists, the face
     // tests were 9 % of the turbine's instructions at 1/64, 3.8 % after).
-    // Pruned to one sign, the surface misses the tile: the test's own proof
-    // for tiles whose corners agree (ProveConstantSign prunes to the tile
-    // first).
+    // (Where meshes meet, a crossing count bisects an edge where its pieces
+    // are not proven of one sign; the triangle filter is conservative, and a
+    // shorter list keeps fewer triangles that miss the piece, so it may prove
+    // other pieces, meet another point of the other sign first, and the tile
+    // split there: as valid, not the same.) Pruned to one sign, the surface
+    // misses the tile: the test's own proof for tiles whose corners agree
+    // (ProveConstantSign prunes to the tile first).
     const CsgExpression::Pruned pruned = CsgExpression::Prune(outer, face, this->Primitives);
     const bool constant = pruned.Sign != RegionSign::Mixed;
     const bool sameCorners = inside[0] == inside[1] && inside[1] == inside[2] && inside[2] == inside[3];
-    if (constant && sameCorners && inside[0] == (pruned.Sign == RegionSign::Inside))
+    if (constant && sameCorners)
     {
       this->Result.Tiles.push_back(t);
       return true;
     }
-    // (Corners that disagree with a sign proven over the tile cannot happen
-    // with exact signs; the outer expression is then kept, as before.)
+    // (Corners that differ over a tile of one proven sign cannot happen with
+    // exact signs; the outer expression is then kept, as before.)
     const CsgExpressionPtr& expression = constant ? outer : pruned.Expression;
     int edge = -1;
     double opposite = std::numeric_limits<double>::quiet_NaN();

@@ -88,7 +88,7 @@ bool PredictOverFinerChords(const AdaptiveOctree& tree, std::uint32_t n, const P
   }
   AdaptiveOctree::MeshCellPrediction prediction;
   const double bound = PredictedMeshCellError(*expression, prims, grid, grid.CellBox(node.Level, node.Ijk), finer,
-    TraceBoundaryLoops(finer), tolerance, prediction, &surface, probesFirst);
+    TraceBoundaryLoops(finer), tolerance, prediction, &surface, probesFirst, nullptr, creaseTiles);
   if (!(bound <= tolerance))
   {
     return false;
@@ -329,7 +329,7 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
         boundary, *LoneMeshLeaf(*expression), prims, grid, [](int, std::size_t) { return true; }, creaseTiles);
     v.PredictedError = PredictedMeshCellError(*expression, prims, grid, box, boundary,
       creases ? TraceBoundaryLoops(boundary) : loops, tolerance, v.MeshPrediction, &meshSurface,
-      provenFailuresFirst, oneMesh ? &meshCreases() : nullptr);
+      provenFailuresFirst, oneMesh ? &meshCreases() : nullptr, oneMesh);
     v.ErrorBounded = v.MeshSurface = v.PredictedError <= tolerance;
     // Failed with chords far from the trace: again over a loop whose wide
     // chords' tiles are split (MeshCellError.h: Chords refined) - not in a

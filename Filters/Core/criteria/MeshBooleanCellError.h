@@ -124,8 +124,9 @@ std::vector<Vec3> ApexesOnCreases(const Box3& cell, const std::vector<CreaseSegm
 /// tolerance, is accepted with (header), one per loop of its tiles
 /// `boundary` (as the topology tests left them); a bound of its E(P) + delta
 /// within the tolerance in `predicted` (not the least the branch and bound
-/// could prove: only its being within the tolerance is read). None where the loops drawn so are not consistent, or
-/// E(P) + delta exceeds `tolerance`.
+/// could prove: only its being within the tolerance is read). None where
+/// the loops drawn so are not consistent, or E(P) + delta exceeds
+/// `tolerance`.
 std::vector<Vec3> PredictMeshBooleanFan(const CsgExpressionPtr& expression, const PrimitiveSet& primitives,
   const RootGrid& grid, const Box3& cell, const CellBoundary& boundary, double tolerance, double& predicted);
 

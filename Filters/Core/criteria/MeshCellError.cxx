@@ -275,7 +275,8 @@ HausdorffEstimate CertifiedMeshPatchError(const PolygonSet& surface,
   const std::vector<SourceTriangle>& patch, double slack, double enough, double giveUp, std::size_t budget,
   const std::vector<double>* patchOffsets, double anyBoundWithin)
 {
-  return CertifiedSurfacePatchError(surface, surface, patch, slack, enough, giveUp, budget, patchOffsets, anyBoundWithin);
+  return CertifiedSurfacePatchError(
+    surface, surface, patch, slack, enough, giveUp, budget, patchOffsets, anyBoundWithin);
 }
 
 HausdorffEstimate CertifiedSurfacePatchError(const PolygonSet& onSurface, const PolygonSet& covering,
@@ -309,7 +310,7 @@ HausdorffEstimate CertifiedSurfacePatchError(const PolygonSet& onSurface, const 
   }
   const HausdorffEstimate toPatch =
     OneSidedHausdorff(pieces, targets, enough - slack, giveUp - slack, budget, { nullptr, patchOffsets }, nullptr,
-      std::max(anyWithin, toSurface.Lower)); // (error.Lower takes the maximum with the latter, error.Upper with
+      std::max(toSurface.Lower, anyWithin)); // (error.Lower takes the maximum with the former, error.Upper with
                                              // toSurface.Upper, at least it)
   error.Lower = std::max(error.Lower, toPatch.Lower);
   const double upper = std::max(toSurface.Upper, toPatch.Upper) + slack;
@@ -618,7 +619,7 @@ bool CreaseApexFanFollows(const Box3& cell, const std::vector<CreaseSegment>& cr
 double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSet& primitives,
   const RootGrid& grid, const Box3& cell, const CellBoundary& boundary, const BoundaryLoopSet& loops,
   double tolerance, AdaptiveOctree::MeshCellPrediction& prediction, const PolygonSet* given,
-  bool probesFirst, const std::vector<CreaseSegment>* creases)
+  bool probesFirst, const std::vector<CreaseSegment>* creases, bool sceneOfOneMesh)
 {
   prediction = AdaptiveOctree::MeshCellPrediction();
   const CsgLeaf* leaf = LoneMeshLeaf(expression);
@@ -699,8 +700,9 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
       return HUGE_VAL;
     }
   }
-  const HausdorffEstimate error = CertifiedMeshPatchError(surface, fan, slack, tolerance - delta, tolerance - delta,
-    PredictionBudget, nullptr, PredictionPrecision * tolerance);
+  const double anyWithin = sceneOfOneMesh ? PredictionPrecision * tolerance : 0.0;
+  const HausdorffEstimate error = CertifiedMeshPatchError(
+    surface, fan, slack, tolerance - delta, tolerance - delta, PredictionBudget, nullptr, anyWithin);
   prediction.Loops = std::move(points);
   prediction.Apexes = std::move(apexes);
   prediction.Attained = error.Lower;
@@ -714,9 +716,9 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
   const double leastDelta = *std::min_element(chordDelta.begin(), chordDelta.end());
   if (prediction.Bound == HUGE_VAL && leastDelta < delta && error.Lower + leastDelta < tolerance)
   {
-    prediction.Bound = CertifiedMeshPatchError(
-      surface, fan, slack, tolerance, tolerance, PredictionBudget, &chordDelta, PredictionPrecision * tolerance)
-                         .Upper;
+    prediction.Bound =
+      CertifiedMeshPatchError(surface, fan, slack, tolerance, tolerance, PredictionBudget, &chordDelta, anyWithin)
+        .Upper;
   }
   return prediction.Bound;
 }

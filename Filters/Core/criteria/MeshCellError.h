@@ -269,17 +269,24 @@
 //
 // Prediction precision. The prediction's branch and bounds (E(P), the
 // per-chord bound, the crease apexes' fans) must prove a bound within the
-// tolerance; beyond that, their values are read only against a quarter of
-// the tolerance or more: OwnFanError against the first certificates' aim (a
-// quarter at least, FirstCertificateAim in SurfaceExtraction.cxx) and
+// tolerance, and whether they do does not depend on how tight the bounds of
+// the pieces they settle are (PolygonHausdorff.h: Settled pieces). Beyond
+// that, in a scene of one mesh their values are read only against a quarter
+// of the tolerance or more: OwnFanError against the first certificates' aim
+// (a quarter at least, FirstCertificateAim in SurfaceExtraction.cxx) and
 // through the loop-point fans' MeshEdgeFanKeptWithin (a quarter), Attained
-// times 1.1 against that quarter in the aim, Bound only as a proven bound. So
-// their pieces settle with the first bound found within PredictionPrecision (a
-// fifth) of the tolerance (PolygonHausdorff.h: Settled pieces): max(a fifth,
-// value) is what it would be without it, so every comparison above (1.1 times
-// a fifth is below a quarter) and the cells accepted, their patches and their
+// times 1.1 against that quarter in the aim, Bound only as a proven bound.
+// (And Lower before the per-chord bound, `Lower + least delta < tolerance`:
+// a lower Lower may only try it where it was not, in vain - the per-chord
+// bound is at least E(P) plus the least delta.) So there their pieces settle
+// with the first bound found within PredictionPrecision (a fifth) of the
+// tolerance: max(a fifth, value) is what it would be without it, so every
+// comparison above (1.1 times a fifth is below a quarter: a static_assert in
+// SurfaceExtraction.cxx) and the cells accepted, their patches and their
 // fans' apexes are the same; a bound below a fifth of the tolerance may read
-// higher, proven all the same. (With the extraction's certificates settling
+// higher, proven all the same. In other scenes the decimation reads the
+// cells' errors, which may be these, as their triangles' spent room
+// (CertifiedError.h): the bounds are as tight as found. (With the extraction's certificates settling
 // within their aim likewise, armadillo at 1/64 and 1/128 took 3.7 % and 4.4 %
 // fewer instructions, the turbine 2.4 % and 3.7 %: the benchmark page,
 // "settled pieces".)
@@ -471,12 +478,14 @@ bool PredictCreaseApex(const PolygonSet& surface, const Box3& cell, const std::v
 /// its fan must follow them), so may fans that follow them around no apex
 /// (header: Creases first; then prediction.Creases is NoneFollows, and it
 /// says what was found where the prediction goes on): off only to check that
-/// they change nothing.
+/// they change nothing. `sceneOfOneMesh`: the scene is one mesh, where its
+/// branch and bounds settle within PredictionPrecision (header: Prediction
+/// precision); elsewhere they are as tight as they find.
 double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSet& primitives,
   const RootGrid& grid, const Box3& cell, const CellBoundary& boundary, const BoundaryLoopSet& loops,
   double tolerance, AdaptiveOctree::MeshCellPrediction& prediction,
   const PolygonSet* surface = nullptr, bool probesFirst = true,
-  const std::vector<CreaseSegment>* creases = nullptr);
+  const std::vector<CreaseSegment>* creases = nullptr, bool sceneOfOneMesh = false);
 
 /// Whether a spoke of the fan over every loop the tests could trace in
 /// `cell` strays farther than `tolerance` from S_C `surface` (header:

@@ -320,13 +320,15 @@ public:
   /// nodes nearer the vertices before the farther; a node is passed over
   /// when one vertex's box distance plus its least offset rules it out, a
   /// target when one vertex's distance does. The search stops at the first
-  /// bound within `enough` (header: Settled pieces), which is then returned
-  /// whether or not it is the least.
+  /// bound found that, plus the piece's offset `offset`, is within `within`
+  /// (header: Settled pieces): it is then returned whether or not it is the
+  /// least.
   std::pair<double, std::uint32_t> BestSingle(const SourceTriangle& v, double below,
-    const std::array<std::uint32_t, 3>& seeds, const PolygonSet& polygons, double enough) const
+    const std::array<std::uint32_t, 3>& seeds, const PolygonSet& polygons, double within, double offset) const
   {
     double best = below;
     std::uint32_t bestTarget = SingleTargetWitness::None;
+    const auto settled = [&] { return bestTarget != SingleTargetWitness::None && best + offset <= within; };
     const auto farthestBox2 = [&](const Box3& box) {
       return std::max({ box.Distance2(v[0]), box.Distance2(v[1]), box.Distance2(v[2]) });
     };
@@ -353,7 +355,7 @@ public:
         bestTarget = t;
       }
     };
-    for (int i = 0; i < 3; ++i)
+    for (int i = 0; i < 3 && !settled(); ++i)
     {
       if (seeds[i] != SingleTargetWitness::None && (i == 0 || seeds[i] != seeds[0]) &&
         (i < 2 || seeds[2] != seeds[1]))
@@ -372,7 +374,7 @@ public:
     Entry stack[64];
     int top = 0;
     stack[top++] = { farthestBox2(this->Nodes[0].Box), 0 };
-    while (top > 0 && !(best <= enough))
+    while (top > 0 && !settled())
     {
       const auto [lowerBound2, n] = stack[--top];
       const Node& node = this->Nodes[n];
@@ -491,13 +493,13 @@ struct Targets
   const TargetHierarchy* Hierarchy;
   /// The caller's anyBoundWithin (header: Settled pieces).
   double AnyBoundWithin;
-  /// The bound of g within which a piece of offset `offset` settles with the
-  /// first single-target bound found (header: Settled pieces), `lower` the
-  /// lower bound found so far; below 0 where witnesses are asked for (the
-  /// least names the witness).
-  double FirstBoundWithin(double settle, double lower, double offset) const
+  /// The bound (of the offset distance: g plus the piece's offset) within
+  /// which a piece settles with the first single-target bound found (header:
+  /// Settled pieces), `lower` the lower bound found so far; below 0 where
+  /// witnesses are asked for (the least names the witness).
+  double FirstBoundWithin(double settle, double lower) const
   {
-    return this->SettlesWithoutSearch ? std::min(settle, std::max(lower, this->AnyBoundWithin)) - offset : -1.0;
+    return this->SettlesWithoutSearch ? std::min(settle, std::max(lower, this->AnyBoundWithin)) : -1.0;
   }
   /// Target t's offset; the branch and bound without target offsets (the
   /// fan-to-surface direction, most of its work) is compiled with zeros.
@@ -646,7 +648,7 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
   const auto largest = [&] { return std::max({ single, nearest[0], nearest[1], nearest[2] }); };
   // (Once the single-target bound settles the piece, no smaller one is
   // sought: header, Settled pieces.)
-  const double firstWithin = targets.FirstBoundWithin(settle, lower, piece.Offset);
+  const double firstWithin = targets.FirstBoundWithin(settle, lower);
   // Whether target t may lower a vertex's nearest distance or the single-
   // target bound, and then its distances. (A vertex's distance to the
   // target's box is a lower bound of its distance to the target: one vertex
@@ -661,7 +663,7 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
       boxDistance2Of[i] = targets.Boxes[t].Distance2(piece.Vertices[i]);
       farthestBox2 = std::max(farthestBox2, boxDistance2Of[i]);
     }
-    bool improvesSingle = !(single <= firstWithin) && CloserThan(farthestBox2, offset, single);
+    bool improvesSingle = !(single + piece.Offset <= firstWithin) && CloserThan(farthestBox2, offset, single);
     double farthest = 0.0;
     for (int i = 0; i < 3; ++i)
     {
@@ -791,11 +793,11 @@ void EvaluateInHierarchy(Piece& piece, std::size_t, std::size_t, double parentUp
     vertexMax = std::max(vertexMax, piece.Nearest[i]);
   }
   const double viaCorners = vertexMax + CoveringRadius(piece.Vertices); // (2)
-  const double firstWithin = targets.FirstBoundWithin(settle, lower, piece.Offset);
-  std::tie(piece.Single, piece.SingleTarget) = viaCorners <= firstWithin
+  const double firstWithin = targets.FirstBoundWithin(settle, lower);
+  std::tie(piece.Single, piece.SingleTarget) = viaCorners + piece.Offset <= firstWithin
     ? std::make_pair(HUGE_VAL, SingleTargetWitness::None)
-    : targets.Hierarchy->BestSingle(
-        piece.Vertices, std::min(viaCorners, parentUpperOfG), piece.NearestTarget, targets.Polygons, firstWithin);
+    : targets.Hierarchy->BestSingle(piece.Vertices, std::min(viaCorners, parentUpperOfG), piece.NearestTarget,
+        targets.Polygons, firstWithin, piece.Offset);
   piece.UpperOfG = std::min(piece.Single, viaCorners);
   piece.Upper = piece.UpperOfG + piece.Offset;
   lower = std::max(lower, vertexMax == HUGE_VAL ? 0.0 : vertexMax + piece.Offset);
@@ -908,6 +910,9 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
   // `deferred`: where no piece is left to split, their bounds count as they
   // are, else they are evaluated again before the splits, so that the lower
   // bound the splits stop at is the one found without `anyBoundWithin`.
+  // (Pieces evaluated, those sources' again included, still stop searching
+  // for a smaller single-target bound within it: their corners are searched
+  // all the same, so the lower bound is the same.)
   std::uint32_t guess = SingleTargetWitness::None;
   thread_local std::vector<std::pair<std::size_t, double>> deferred; // (source, bound)
   deferred.clear();

@@ -40,6 +40,7 @@ bool SurfaceOfCell(
   const CsgExpression& expression = *tree.Expressions[n];
   const Box3 box = tree.Grid.CellBox(node.Level, node.Ijk);
   surface.Creases.clear();
+  surface.SceneOfOneMesh = IsOneMesh(*tree.SceneExpression);
   if (const CsgLeaf* leaf = LoneMeshLeaf(expression))
   {
     surface.OneMesh = true;
@@ -59,7 +60,8 @@ HausdorffEstimate CertifiedCellError(const CellSurface& surface, const CellPatch
   double enough, double giveUp, std::size_t budget)
 {
   HausdorffEstimate e = CertifiedSurfacePatchError(surface.OnSurface(), surface.Covering(),
-    PatchTriangles(patches, mesh), surface.Slack, enough, giveUp, budget, nullptr, enough);
+    PatchTriangles(patches, mesh), surface.Slack, enough, giveUp, budget, nullptr,
+    surface.SceneOfOneMesh ? enough : 0.0);
   e.Lower = surface.OneMesh ? e.Lower : 0.0;
   return e;
 }

@@ -38,6 +38,9 @@ struct CellSurface
   MeshBooleanSurface Boolean;
   std::vector<CreaseSegment> Creases;
   bool OneMesh = true;
+  /// The scene is one mesh (IsOneMesh): nothing reads the cells' errors
+  /// tighter than they are asked for (CertifiedCellError).
+  bool SceneOfOneMesh = true;
   double Slack = 0.0;
 
   const PolygonSet& OnSurface() const { return this->OneMesh ? this->Mesh : this->Boolean.OnSurface; }
@@ -53,10 +56,16 @@ bool SurfaceOfCell(
 
 /// E(P) of the cell's `patches` against `surface` (MeshCellError.h,
 /// CertifiedSurfacePatchError); Lower kept only where it is a distance the
-/// patch attains (one mesh), else 0. Pieces settle with the first bound
-/// found within `enough` (PolygonHausdorff.h: Settled pieces): the first
-/// certificates aim there and RefineMeshCertificates' at 1.1 times the
-/// largest distance attained, and nothing reads them tighter.
+/// patch attains (one mesh), else 0. In a scene of one mesh, pieces settle
+/// with the first bound found within `enough` (PolygonHausdorff.h: Settled
+/// pieces): the first certificates aim there, RefineMeshCertificates refines
+/// those above 1.1 times the largest Lower (max(enough, Lower) is what it
+/// would be without it, so that threshold is at most lower, the bound
+/// reported within it all the same), and the errors are read only as proven
+/// bounds (the decimation measures against the mesh itself there). In other
+/// scenes the decimation takes each cell's error as its triangles' spent
+/// room (TriangleErrorBounds.h, ErrorCertificates' ThroughBounds): they are
+/// bounded as tightly as their branch and bounds find.
 HausdorffEstimate CertifiedCellError(const CellSurface& surface, const CellPatches& patches, const TriangleMesh& mesh,
   double enough, double giveUp, std::size_t budget);
 

@@ -142,6 +142,10 @@ void GatherCertifiedBound(const AdaptiveOctree& tree, const std::vector<std::uin
 /// tilted bar of the tests, and couplingdown at 1/64 7 192 triangles where
 /// a quarter gave 7 190).
 constexpr double MeshEdgeFanKeptWithin = 0.25;
+// (The predictions' values are tight only above PredictionPrecision of the
+// tolerance, MeshCellError.h: read against this quarter and 1.1 times against
+// it in FirstCertificateAim, they must be so above it.)
+static_assert(1.1 * PredictionPrecision < MeshEdgeFanKeptWithin, "predictions read below their precision");
 
 /// Pieces a cell's first certificate may examine (it needs a proof under the
 /// tolerance, not a tight one: RefineMeshCertificates tightens those that
@@ -167,8 +171,9 @@ double FirstCertificateAim(const AdaptiveOctree& tree)
     attained = std::max(attained, entry.second.Attained);
   }
   const double tolerance = tree.HausdorffTolerance;
-  return tree.MeshCellPredictions.empty() ? 0.6 * tolerance
-                                          : std::min(std::max(1.1 * attained, 0.25 * tolerance), tolerance);
+  return tree.MeshCellPredictions.empty()
+    ? 0.6 * tolerance
+    : std::min(std::max(1.1 * attained, MeshEdgeFanKeptWithin * tolerance), tolerance);
 }
 
 /// A mesh cell larger than the tolerance (its prediction `prediction`)

@@ -251,7 +251,8 @@ TEST(FaceRefinement, TilesOfMeshesPassWithTheWholeMeshListed)
     {
       for (tpc::LatticeIndex plane = 64; plane < Side; plane += 96)
       {
-        const tpc::FaceRefinementResult r = tpc::RefineFace(e, prims, grid, axis, plane, { 0, 0, Side, Side }, 8, signs);
+        const tpc::FaceRefinementResult r =
+          tpc::RefineFace(e, prims, grid, axis, plane, { 0, 0, Side, Side }, 8, signs);
         if (r.Failure != tpc::SplitReason::None)
         {
           continue;

@@ -855,6 +855,51 @@ TEST(PolygonHausdorff, ABoundWithinWhichAnyWillDoChangesNeitherMaximum)
   EXPECT_GT(stoppedAbove, 0u);
 }
 
+TEST(MeshCellError, APatchBoundWithinWhichAnyWillDoChangesNeitherMaximum)
+{
+  // CertifiedMeshPatchError's anyBoundWithin is of the error, slack
+  // included: both directions' branch and bounds must settle within it less
+  // the slack, or a settled piece could read above it once the slack is
+  // added. The maxima with it of Upper and Lower must be those without it,
+  // bit for bit: a fan over bumps both ways and crumpled sheets, slack a
+  // thousandth, values from 0 to above Upper.
+  std::mt19937 random(43);
+  std::vector<SourceTriangle> bumps, fan;
+  BumpsUnderAFan(12, bumps, fan);
+  const std::vector<SourceTriangle> fine = CrumpledSheet(6, 0.0, random);
+  const std::vector<SourceTriangle> coarse = CrumpledSheet(5, 0.03, random);
+  const std::vector<std::pair<std::vector<SourceTriangle>, std::vector<SourceTriangle>>> pairs{ { bumps, fan },
+    { fan, bumps }, { fine, coarse } };
+  const double slack = 1e-3;
+  std::size_t changed = 0;
+  for (std::size_t c = 0; c < pairs.size(); ++c)
+  {
+    const tpc::PolygonSet surface = AsPolygons(pairs[c].first);
+    const std::vector<SourceTriangle>& patch = pairs[c].second;
+    // (Tight first; then settling within it and within four times it, so
+    // that pieces settle with bounds above their least.)
+    const tpc::HausdorffEstimate first = tpc::CertifiedMeshPatchError(surface, patch, slack, 0.0, HUGE_VAL, 200000);
+    ASSERT_LT(first.Upper, HUGE_VAL) << c;
+    for (const double enough : { 0.0, first.Upper, 4.0 * first.Upper })
+    {
+      const tpc::HausdorffEstimate plain =
+        tpc::CertifiedMeshPatchError(surface, patch, slack, enough, 8.0 * first.Upper, 200000);
+      for (const double any : { 0.0, 0.5 * plain.Lower, plain.Lower, 0.5 * (plain.Lower + plain.Upper), plain.Upper,
+             2.0 * plain.Upper })
+      {
+        const tpc::HausdorffEstimate e =
+          tpc::CertifiedMeshPatchError(surface, patch, slack, enough, 8.0 * first.Upper, 200000, nullptr, any);
+        const std::string what = "pair " + std::to_string(c) + ", enough " + std::to_string(enough) + ", any " +
+          std::to_string(any);
+        EXPECT_EQ(std::max(any, e.Upper), std::max(any, plain.Upper)) << what;
+        EXPECT_EQ(std::max(any, e.Lower), std::max(any, plain.Lower)) << what;
+        changed += e.Upper != plain.Upper || e.Lower != plain.Lower ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_GT(changed, 0u);
+}
+
 TEST(PolygonHausdorff, PreparedTargetsBoundAsEachCallWould)
 {
   // Targets prepared once (HausdorffTargets: their boxes and hierarchy) and
