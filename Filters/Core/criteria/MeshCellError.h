@@ -286,10 +286,10 @@
 // fans' apexes are the same; a bound below a fifth of the tolerance may read
 // higher, proven all the same. In other scenes the decimation reads the
 // cells' errors, which may be these, as their triangles' spent room
-// (CertifiedError.h): the bounds are as tight as found. (With the extraction's certificates settling
-// within their aim likewise, armadillo at 1/64 and 1/128 took 3.7 % and 4.4 %
-// fewer instructions, the turbine 2.4 % and 3.7 %: the benchmark page,
-// "settled pieces".)
+// (CertifiedError.h): the bounds are as tight as found. (With the
+// extraction's certificates settling within their aim likewise, armadillo at
+// 1/64 and 1/128 took 3.7 % and 4.4 % fewer instructions, the turbine 2.4 %
+// and 3.7 %: the benchmark page, "settled pieces".)
 //
 // Cells no larger than the tolerance keep their usual patch
 // (LoopTriangulation.h), bounded by their diagonal; E of that patch is
