@@ -32,19 +32,23 @@ Box3 FaceBox(const Box3& cell, int face)
 namespace
 {
 RegionSign ProveConstant(const CsgExpressionPtr& expression, const PrimitiveSet& primitives,
+  const Box3& box, int depth, int& budget);
+
+/// ProveConstant of `pruned`, an expression already pruned to `box` with a
+/// mixed sign there: by its pieces.
+RegionSign ProvePiecesConstant(const CsgExpressionPtr& pruned, const PrimitiveSet& primitives,
   const Box3& box, int depth, int& budget)
 {
-  const auto pruned = CsgExpression::Prune(expression, box, primitives);
-  if (pruned.Sign != RegionSign::Mixed || depth == 0 || --budget < 0)
+  if (depth == 0 || --budget < 0)
   {
-    return pruned.Sign;
+    return RegionSign::Mixed;
   }
   Box3 pieces[8];
   const int count = SplitBox(box, pieces);
   RegionSign common = RegionSign::Mixed;
   for (int piece = 0; piece < count; ++piece)
   {
-    const RegionSign s = ProveConstant(pruned.Expression, primitives, pieces[piece], depth - 1, budget);
+    const RegionSign s = ProveConstant(pruned, primitives, pieces[piece], depth - 1, budget);
     if (s == RegionSign::Mixed || (piece > 0 && s != common))
     {
       return RegionSign::Mixed;
@@ -52,6 +56,14 @@ RegionSign ProveConstant(const CsgExpressionPtr& expression, const PrimitiveSet&
     common = s;
   }
   return common;
+}
+
+RegionSign ProveConstant(const CsgExpressionPtr& expression, const PrimitiveSet& primitives,
+  const Box3& box, int depth, int& budget)
+{
+  const auto pruned = CsgExpression::Prune(expression, box, primitives);
+  return pruned.Sign != RegionSign::Mixed ? pruned.Sign
+                                          : ProvePiecesConstant(pruned.Expression, primitives, box, depth, budget);
 }
 } // namespace
 
@@ -68,10 +80,12 @@ SplitReason FaceCompatibilityTest(const CsgExpressionPtr& expression,
   const bool change = inside[0] != inside[1] || inside[1] != inside[2] || inside[2] != inside[3];
   if (!change)
   {
-    return ProveConstantSign(expression, primitives, face, ConstantProofDepth, ConstantProofBudget) ==
-        RegionSign::Mixed
-      ? SplitReason::ComplexFace
-      : SplitReason::None;
+    // (Pruned to the face already: proven by its pieces at once.)
+    int budget = ConstantProofBudget;
+    const RegionSign sign = prunedToFace
+      ? ProvePiecesConstant(expression, primitives, face, ConstantProofDepth, budget)
+      : ProveConstant(expression, primitives, face, ConstantProofDepth, budget);
+    return sign == RegionSign::Mixed ? SplitReason::ComplexFace : SplitReason::None;
   }
   if (inside[0] == inside[2] && inside[1] == inside[3])
   {

@@ -49,8 +49,8 @@ Box3 FaceBox(const Box3& cell, int face);
 /// when the crossing count met one (else it is left unchanged): a point in
 /// the gap or wedge between two crossings. `prunedToFace`: the expression is
 /// already pruned to the face, to a mixed sign (face refinement prunes each
-/// tile's: FaceRefinement.cxx), and the star-shaped test does not prune it
-/// again.
+/// tile's: FaceRefinement.cxx), and neither the constant-sign proof nor the
+/// star-shaped test prunes it again.
 SplitReason FaceCompatibilityTest(const CsgExpressionPtr& expression,
   const PrimitiveSet& primitives, const Box3& face, int axis, const bool inside[4],
   int* failingEdge = nullptr, double* opposite = nullptr, bool prunedToFace = false);

@@ -13,9 +13,9 @@
 // asking again decides again, alike) - and the pass that asks holds the cache
 // and clears it after (a subdivision level, the extraction's loops): it holds
 // the tiles one cell has asked for and the other not yet, or never will (a
-// neighbour of another level, or outside the domain). (Kept until the end of the pass, the extraction's
-// decisions were 20 % more memory at the peak, armadillo and the turbine at
-// 1/256.)
+// neighbour of another level, or outside the domain). (Kept until the end of
+// the pass, the extraction's decisions were 20 % more memory at the peak,
+// armadillo and the turbine at 1/256.)
 #pragma once
 
 #include "CreaseCrossing.h"
