@@ -1,6 +1,6 @@
 #include "CreaseCrossing.h"
 
-#include "CreaseTileCache.h"
+#include "FaceDecisionCache.h"
 #include "MeshArrangement.h"
 
 #include <algorithm>
@@ -245,10 +245,10 @@ std::optional<CreaseTile> CreaseOnTile(const CsgLeaf& leaf, const PrimitiveSet& 
   return crease;
 }
 
-std::optional<CreaseTile> DecideCreaseTile(CreaseTileCache* cache, const CsgLeaf& leaf,
+std::optional<CreaseTile> DecideCreaseTile(FaceDecisionCache* cache, const CsgLeaf& leaf,
   const PrimitiveSet& primitives, const RootGrid& grid, int axis, LatticeIndex plane, const FaceTile& tile)
 {
-  return cache ? cache->Decide(leaf, primitives, grid, axis, plane, tile)
+  return cache ? cache->DecideCrease(leaf, primitives, grid, axis, plane, tile)
                : CreaseOnTile(leaf, primitives, grid, axis, plane, tile);
 }
 

@@ -98,11 +98,11 @@ constexpr double CreaseTileAngleDegrees = 25.0;
 std::optional<CreaseTile> CreaseOnTile(const CsgLeaf& leaf, const PrimitiveSet& primitives, const RootGrid& grid,
   int axis, LatticeIndex plane, const FaceTile& tile);
 
-class CreaseTileCache; // (CreaseTileCache.h)
+class FaceDecisionCache; // (FaceDecisionCache.h)
 
-/// CreaseOnTile, or the decision `cache` keeps (CreaseTileCache.h) where one
+/// CreaseOnTile, or the decision `cache` keeps (FaceDecisionCache.h) where one
 /// is given.
-std::optional<CreaseTile> DecideCreaseTile(CreaseTileCache* cache, const CsgLeaf& leaf,
+std::optional<CreaseTile> DecideCreaseTile(FaceDecisionCache* cache, const CsgLeaf& leaf,
   const PrimitiveSet& primitives, const RootGrid& grid, int axis, LatticeIndex plane, const FaceTile& tile);
 
 /// Marks the crease tiles of every face of `boundary` (a cell of the mesh of
@@ -113,7 +113,7 @@ std::optional<CreaseTile> DecideCreaseTile(CreaseTileCache* cache, const CsgLeaf
 /// decisions shared with the cells of the same pass.
 template <typename Draws>
 bool MarkCreaseTiles(CellBoundary& boundary, const CsgLeaf& leaf, const PrimitiveSet& primitives,
-  const RootGrid& grid, const Draws& draws, CreaseTileCache* cache = nullptr)
+  const RootGrid& grid, const Draws& draws, FaceDecisionCache* cache = nullptr)
 {
   bool marked = false;
   for (int f = 0; f < 6; ++f)

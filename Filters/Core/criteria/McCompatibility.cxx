@@ -7,6 +7,7 @@
 #include "CsgCreaseCrossing.h"
 #include "EdgeCrossings.h"
 #include "ExactCellCriterion.h"
+#include "FaceDecisionCache.h"
 #include "FaceRefinement.h"
 #include "MeshBooleanCellError.h"
 #include "MeshCellError.h"
@@ -26,9 +27,10 @@ namespace
 /// Refines each face of cell `n` until its tiles pass the face tests
 /// (FaceRefinement.h) and gathers the tiles and their corner samples into
 /// `boundary`; false, with the failing test in `v.Reason`, when a face
-/// cannot be tiled within `levels`.
+/// cannot be tiled within `levels`. With `faceDecisions`, a face the cell
+/// beside it has tiled is not tiled again (FaceDecisionCache.h).
 bool TileFaces(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& prims, int levels,
-  CellSignCache& signs, CellBoundary& boundary, McCompatibility& v)
+  CellSignCache& signs, FaceDecisionCache* faceDecisions, CellBoundary& boundary, McCompatibility& v)
 {
   const RootGrid& grid = tree.Grid;
   const OctreeNode& node = tree.Nodes[n];
@@ -44,8 +46,10 @@ bool TileFaces(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& 
     const int axis = f / 2, side = f % 2;
     const LatticeIndex plane = boundary.Base[axis] + (side ? size : 0);
     const LatticeIndex u0 = boundary.Base[(axis + 1) % 3], v0 = boundary.Base[(axis + 2) % 3];
-    const FaceRefinementResult r = RefineFace(tree.Expressions[n], prims, grid, axis, plane,
-      { u0, v0, u0 + size, v0 + size }, std::min(levels, shift), signs);
+    const FaceTile face{ u0, v0, u0 + size, v0 + size };
+    const FaceRefinementResult r = faceDecisions
+      ? faceDecisions->TileFace(tree.Expressions[n], prims, grid, axis, plane, face, std::min(levels, shift), signs)
+      : RefineFace(tree.Expressions[n], prims, grid, axis, plane, face, std::min(levels, shift), signs);
     if (r.Tiles.empty())
     {
       v.Reason = r.Failure;
@@ -190,7 +194,7 @@ std::optional<Vec3> PredictQuadricFan(const QuadricCellError& bound, const Bound
 
 McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& prims,
   double tolerance, int faceRefinementLevels, bool provenFailuresFirst, PolygonSet* surfaceScratch,
-  bool refineChords, CreaseTileCache* creaseTiles)
+  bool refineChords, FaceDecisionCache* faceDecisions)
 {
   McCompatibility v;
   v.Kind = McVerdict::Split;
@@ -289,7 +293,7 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   }
   CellSignCache signs(tree.Signs, grid, *expression, prims);
   CellBoundary boundary;
-  if (!TileFaces(tree, n, prims, faceRefinementLevels, signs, boundary, v))
+  if (!TileFaces(tree, n, prims, faceRefinementLevels, signs, faceDecisions, boundary, v))
   {
     return v;
   }
@@ -326,7 +330,7 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     // (Without a crease tile the loops are those traced above.)
     const bool creases = oneMesh &&
       MarkCreaseTiles(
-        boundary, *LoneMeshLeaf(*expression), prims, grid, [](int, std::size_t) { return true; }, creaseTiles);
+        boundary, *LoneMeshLeaf(*expression), prims, grid, [](int, std::size_t) { return true; }, faceDecisions);
     v.PredictedError = PredictedMeshCellError(*expression, prims, grid, box, boundary,
       creases ? TraceBoundaryLoops(boundary) : loops, tolerance, v.MeshPrediction, &meshSurface,
       provenFailuresFirst, oneMesh ? &meshCreases() : nullptr, oneMesh);

@@ -15,7 +15,7 @@
 namespace tpc
 {
 
-class CreaseTileCache; // (CreaseTileCache.h)
+class FaceDecisionCache; // (FaceDecisionCache.h)
 
 /// Outcome of the tests for one cell.
 enum class McVerdict : std::uint8_t
@@ -119,11 +119,12 @@ constexpr int FaceRefinementLevels = 10;
 /// `surfaceScratch`: where S_C is built (a buffer reused across cells,
 /// ScratchPool.h); null for one of its own. With `refineChords`, a mesh
 /// cell's failed prediction is made again over finer chords where they
-/// strayed (MeshCellError.h: Chords refined). `creaseTiles` (if given): the
-/// crease tiles decided for the cells tested with it (CreaseTileCache.h).
+/// strayed (MeshCellError.h: Chords refined). `faceDecisions` (if given): the
+/// crease tiles and face tilings decided for the cells tested with it
+/// (FaceDecisionCache.h).
 McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   const PrimitiveSet& primitives, double tolerance, int faceRefinementLevels = FaceRefinementLevels,
   bool provenFailuresFirst = true, PolygonSet* surfaceScratch = nullptr, bool refineChords = true,
-  CreaseTileCache* creaseTiles = nullptr);
+  FaceDecisionCache* faceDecisions = nullptr);
 
 } // namespace tpc

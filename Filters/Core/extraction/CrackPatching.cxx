@@ -223,7 +223,7 @@ CellBoundary GatherCellBoundary(const AdaptiveOctree& tree, std::size_t cell)
 }
 
 BoundaryLoopSet CellLoops(
-  const AdaptiveOctree& tree, std::uint32_t cell, const PrimitiveSet& prims, CreaseTileCache* creaseTiles)
+  const AdaptiveOctree& tree, std::uint32_t cell, const PrimitiveSet& prims, FaceDecisionCache* faceDecisions)
 {
   CellBoundary boundary = GatherCellBoundary(tree, cell);
   const CsgLeaf* own = tree.Nodes[cell].State == CellState::Exact ? LoneMeshLeaf(*tree.Expressions[cell]) : nullptr;
@@ -267,7 +267,7 @@ BoundaryLoopSet CellLoops(
         ? LoneMeshLeaf(*tree.Expressions[other])
         : nullptr;
       return theirs && theirs->Primitive == mine->Primitive;
-    }, creaseTiles);
+    }, faceDecisions);
   }
   else
   {

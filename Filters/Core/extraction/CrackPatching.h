@@ -25,7 +25,7 @@
 namespace tpc
 {
 
-class CreaseTileCache; // (CreaseTileCache.h)
+class FaceDecisionCache; // (FaceDecisionCache.h)
 
 /// The samples on the boundary of leaf `cell`: its faces' tiles from
 /// whichever side is finer, and every sample point on them.
@@ -34,6 +34,6 @@ CellBoundary GatherCellBoundary(const AdaptiveOctree& tree, std::size_t cell);
 /// The loops of leaf `cell` traced from its boundary's samples; for an exact
 /// cell, its polygons (ExactCell.h).
 BoundaryLoopSet CellLoops(const AdaptiveOctree& tree, std::uint32_t cell, const PrimitiveSet& primitives,
-  CreaseTileCache* creaseTiles = nullptr);
+  FaceDecisionCache* faceDecisions = nullptr);
 
 } // namespace tpc

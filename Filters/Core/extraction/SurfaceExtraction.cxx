@@ -4,7 +4,7 @@
 #include "CertifiedError.h"
 #include "CrackPatching.h"
 #include "CreaseFollowing.h"
-#include "CreaseTileCache.h"
+#include "FaceDecisionCache.h"
 #include "CrossingVertices.h"
 #include "ExactCellCriterion.h"
 #include "MeshBooleanCellError.h"
@@ -531,11 +531,11 @@ ExtractionResult ExtractSurface(const AdaptiveOctree& tree, const ImplicitScene&
   // Pass 1: each cell's loops, sampled as its neighbours sample (crack
   // patching); the crease tiles two cells share decided once.
   std::vector<BoundaryLoopSet> loops(cells.size());
-  CreaseTileCache creaseTiles;
+  FaceDecisionCache faceDecisions;
   if (!ChunkedFor(cells.size(), Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i)
         {
-          loops[i] = CellLoops(tree, cells[i], prims, &creaseTiles);
+          loops[i] = CellLoops(tree, cells[i], prims, &faceDecisions);
         }
       }, ProgressRange(progress, 0.0, 0.4)))
   {

@@ -5,10 +5,30 @@ namespace tpc
 
 bool CellSignCache::Inside(PointKey key)
 {
-  const int known = this->Global.Find(key);
+  const int known = this->Known(key);
   if (known >= 0)
   {
     return known == 1;
+  }
+  const bool in = this->Expression.IsInside(this->Grid.Point(key), this->Primitives);
+  this->Remember(key, in);
+  return in;
+}
+
+void CellSignCache::Learn(PointKey key, bool inside)
+{
+  if (this->Known(key) < 0)
+  {
+    this->Remember(key, inside);
+  }
+}
+
+int CellSignCache::Known(PointKey key)
+{
+  const int known = this->Global.Find(key);
+  if (known >= 0)
+  {
+    return known;
   }
   // A few fresh points are found fastest by a scan; a cell that evaluates
   // many (a face refined along a long sliver) switches to a hash table, or
@@ -20,7 +40,7 @@ bool CellSignCache::Inside(PointKey key)
     {
       if (f.first == key)
       {
-        return f.second;
+        return f.second ? 1 : 0;
       }
     }
   }
@@ -36,16 +56,19 @@ bool CellSignCache::Inside(PointKey key)
     const int local = this->Local.Find(key);
     if (local >= 0)
     {
-      return local == 1;
+      return local;
     }
   }
-  const bool in = this->Expression.IsInside(this->Grid.Point(key), this->Primitives);
-  this->Fresh.emplace_back(key, in);
+  return -1;
+}
+
+void CellSignCache::Remember(PointKey key, bool inside)
+{
+  this->Fresh.emplace_back(key, inside);
   if (this->Local.Size() > 0)
   {
-    this->Local.Insert(key, in);
+    this->Local.Insert(key, inside);
   }
-  return in;
 }
 
 } // namespace tpc

@@ -28,10 +28,18 @@ public:
   }
 
   bool Inside(PointKey key);
+  /// Takes `inside` as the sign at `key` where it is not known yet - an
+  /// exact sign another cell evaluated (FaceDecisionCache.h) - kept for the
+  /// table like the ones evaluated here.
+  void Learn(PointKey key, bool inside);
   /// Points evaluated here and not yet in the global table.
   const std::vector<std::pair<PointKey, bool>>& NewSigns() const { return this->Fresh; }
 
 private:
+  /// 1 inside, 0 outside, -1 not known yet.
+  int Known(PointKey key);
+  void Remember(PointKey key, bool inside);
+
   const LatticeSignTable& Global;
   const RootGrid& Grid;
   const CsgExpression& Expression;

@@ -17,7 +17,7 @@ CellState StateOf(RegionSign s)
 
 CellTests TestCell(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& primitives,
   const SubdivisionParameters& parameters, const LevelLimits& limits, PolygonSet* surfaceScratch,
-  CreaseTileCache* creaseTiles)
+  FaceDecisionCache* faceDecisions)
 {
   CellTests tests;
   const OctreeNode& node = tree.Nodes[n];
@@ -39,7 +39,7 @@ CellTests TestCell(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveS
     keepsOnFailure ? std::min(levels, ExactCellFaceRefinementLevels) : levels,
     // (A cell stopped by a limit reports the test it fails: all of them run.)
     parameters.ProvenFailuresFirst && !limits.AtDepthLimit && !limits.AtCellLimit, surfaceScratch,
-    parameters.RefineChords, creaseTiles);
+    parameters.RefineChords, faceDecisions);
   if (limits.ToleranceSize && tests.Verdict.Kind == McVerdict::Split)
   {
     tests.Facing = HasFacingSurfaces(expression, primitives, tree.Grid.CellBox(limits.Level, tree.Nodes[n].Ijk),

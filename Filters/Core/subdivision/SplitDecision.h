@@ -28,7 +28,7 @@
 namespace tpc
 {
 
-class CreaseTileCache; // (CreaseTileCache.h)
+class FaceDecisionCache; // (FaceDecisionCache.h)
 
 /// What a level knows before deciding its cells.
 struct LevelLimits
@@ -62,10 +62,10 @@ struct CellTests
 };
 
 /// Runs the tests of cell `n` (thread-safe: reads the tree only);
-/// `surfaceScratch` and `creaseTiles` as TestMcCompatibility's.
+/// `surfaceScratch` and `faceDecisions` as TestMcCompatibility's.
 CellTests TestCell(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& primitives,
   const SubdivisionParameters& parameters, const LevelLimits& limits, PolygonSet* surfaceScratch = nullptr,
-  CreaseTileCache* creaseTiles = nullptr);
+  FaceDecisionCache* faceDecisions = nullptr);
 
 /// Sets the state of cell `n` from its tests and counts it in `result` (its
 /// own trees' cells only, in a piece of a split run); true when the cell is

@@ -1,6 +1,6 @@
 #include "TopologyPreservingSubdivision.h"
 
-#include "CreaseTileCache.h"
+#include "FaceDecisionCache.h"
 #include "DistinctRecords.h"
 #include "ExactCellCriterion.h"
 #include "QuadricCellError.h"
@@ -130,9 +130,9 @@ private:
   std::vector<std::uint32_t> Active;
   /// Where the tests build S_C, reused from cell to cell and level to level.
   ScratchPool<PolygonSet> SurfaceScratch;
-  /// The crease tiles decided by this level's cells (CreaseTileCache.h),
-  /// cleared after it.
-  CreaseTileCache CreaseTiles;
+  /// The crease tiles and face tilings decided by this level's cells
+  /// (FaceDecisionCache.h), cleared after it.
+  FaceDecisionCache FaceDecisions;
 };
 
 /// The roots: one per tree, each with the scene's expression pruned to it;
@@ -316,7 +316,7 @@ bool LevelByLevel::TestCells(std::vector<CellTests>& tests)
     for (std::size_t i = begin; i < end; ++i)
     {
       tests[i] = TestCell(
-        tree, this->Active[i], this->Scene.Primitives, this->Parameters, this->Limits, &*surface, &this->CreaseTiles);
+        tree, this->Active[i], this->Scene.Primitives, this->Parameters, this->Limits, &*surface, &this->FaceDecisions);
     }
   }, [&](std::size_t first, std::size_t last) {
     for (std::size_t i = first; i < last; ++i)
@@ -346,7 +346,7 @@ bool LevelByLevel::TestCells(std::vector<CellTests>& tests)
     }
     return progress && progress(static_cast<double>(last) / static_cast<double>(this->Active.size()));
   });
-  this->CreaseTiles.Clear(); // (what is left: tiles one cell asked for and the other did not)
+  this->FaceDecisions.Clear(); // (what is left: faces one cell asked about and the other did not)
   return done;
 }
 

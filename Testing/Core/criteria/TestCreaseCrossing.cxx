@@ -1,11 +1,11 @@
 // Creases of a mesh as polylines of the output (CreaseCrossing.h): which
 // face tiles are crease tiles, where their crossing lies, the trace's two
-// halves; the decisions shared between the cells asking (CreaseTileCache.h);
+// halves; the decisions shared between the cells asking (FaceDecisionCache.h);
 // and on whole runs, the creases of a tilted cube and of a tilted
 // bar followed by output edges lying on them.
 #include "CoreContour.h"
 #include "CreaseCrossing.h"
-#include "CreaseTileCache.h"
+#include "FaceDecisionCache.h"
 #include "ExactCellCriterion.h"
 #include "MeshBuilders.h"
 #include "SceneBuilder.h"
@@ -182,7 +182,7 @@ TEST(CreaseCrossing, SharedDecisionsAreEachTilesOwn)
 {
   // Tiles of the tent's faces y = 0.5 and y = 0.25 - the same lattice
   // bounds on two planes (the ridge crosses them at different points), crease
-  // tiles and others - asked of a CreaseTileCache as the two cells sharing a
+  // tiles and others - asked of a FaceDecisionCache as the two cells sharing a
   // tile ask, each with its own triangle list: first every tile by the cell
   // below it, then by the cell above (the second takes the decision out);
   // then by two threads at once. Every answer is CreaseOnTile's for that
@@ -243,9 +243,9 @@ TEST(CreaseCrossing, SharedDecisionsAreEachTilesOwn)
   }
   EXPECT_GE(creases, 4); // (the ridge crosses both planes: crease tiles on each)
   EXPECT_LT(creases, static_cast<int>(asked.size()));
-  tpc::CreaseTileCache cache;
+  tpc::FaceDecisionCache cache;
   const auto ask = [&](std::size_t i, int side) {
-    return cache.Decide(
+    return cache.DecideCrease(
       *tpc::LoneMeshLeaf(*asked[i].Cells[side]), b.Scene.Primitives, grid, 1, asked[i].Plane, asked[i].Tile);
   };
   for (const int side : { 0, 1 })

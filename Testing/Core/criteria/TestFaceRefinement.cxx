@@ -3,6 +3,8 @@
 #include "CellSignCache.h"
 #include "ComplexCellCriterion.h"
 #include "EdgeCrossings.h"
+#include "ExactCellCriterion.h"
+#include "FaceDecisionCache.h"
 #include "FaceRefinement.h"
 #include "MeshBooleanSurface.h"
 #include "MeshBuilders.h"
@@ -11,7 +13,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <thread>
 
 using tpc::FaceTile;
 using tpc::Vec3;
@@ -280,4 +284,131 @@ TEST(FaceRefinement, TilesOfMeshesPassWithTheWholeMeshListed)
   }
   EXPECT_GT(refined, 10);
   EXPECT_GT(tiles, 500);
+}
+
+TEST(FaceRefinement, TilingsOfOneMeshAreSharedByTheCellsOnBothSides)
+{
+  // The two cells of one level sharing a face tile it alike where each one's
+  // surface is one mesh (FaceDecisionCache.h): a tilted cube, a torus, and a
+  // sphere's mesh minus the cube's (where one mesh only meets a cell), faces
+  // of 128 lattice spacings, each refined with the scene pruned to the cell
+  // below it and to the cell above. Then asked of a FaceDecisionCache, the
+  // cell below first (the second takes the tiling out, learning the signs at
+  // its tiles' corners), and again from two threads at once: every answer is
+  // the asker's own tiling. (A tiling that depended on the cell's list, a key
+  // without the plane, or a second asker not given the corners' signs fails
+  // it.)
+  const tpc::RootGrid grid = tpctest::SingleRoot({ -1, -1, -1 }, 2.0, 10);
+  const tpc::MeshSolid cube = tpctest::TiltedMesh(tpctest::CubeMesh({ -0.5, -0.5, -0.5 }, { 0.5, 0.5, 0.5 }));
+  std::vector<SceneBuilder> scenes(3);
+  std::vector<tpc::CsgExpressionPtr> expressions;
+  expressions.push_back(scenes[0].Finish(scenes[0].Mesh(cube)));
+  expressions.push_back(scenes[1].Finish(scenes[1].Mesh(tpctest::TorusMesh({ 0.05, 0.02, 0.01 }, 0.55, 0.2, 40, 16))));
+  expressions.push_back(scenes[2].Finish(SceneBuilder::Difference(
+    { scenes[2].Mesh(tpctest::SphereMesh({ 0.1, 0.05, 0 }, 0.7, 3)), scenes[2].Mesh(cube) })));
+  constexpr tpc::LatticeIndex Cell = 128;
+  constexpr int Levels = 7;
+  const auto same = [](const tpc::FaceRefinementResult& a, const tpc::FaceRefinementResult& b) {
+    return a.Failure == b.Failure && a.Tiles == b.Tiles;
+  };
+  int shared = 0, refined = 0;
+  for (std::size_t s = 0; s < scenes.size(); ++s)
+  {
+    const tpc::PrimitiveSet& prims = scenes[s].Scene.Primitives;
+    struct Asked
+    {
+      int Axis;
+      tpc::LatticeIndex Plane;
+      FaceTile Face;
+      std::array<tpc::CsgExpressionPtr, 2> Cells; ///< pruned to the cells below and above the face
+      std::array<tpc::FaceRefinementResult, 2> Own;
+    };
+    std::vector<Asked> asked;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      for (tpc::LatticeIndex plane = Cell; plane < Side; plane += Cell)
+      {
+        for (tpc::LatticeIndex u = 0; u < Side; u += Cell)
+        {
+          for (tpc::LatticeIndex v = 0; v < Side; v += Cell)
+          {
+            Asked a{ axis, plane, { u, v, u + Cell, v + Cell }, {}, {} };
+            bool oneMesh = true;
+            for (int side = 0; side < 2; ++side)
+            {
+              tpc::LatticeIndex lo[3], hi[3];
+              lo[axis] = plane - (side ? 0 : Cell);
+              hi[axis] = lo[axis] + Cell;
+              lo[(axis + 1) % 3] = u;
+              hi[(axis + 1) % 3] = u + Cell;
+              lo[(axis + 2) % 3] = v;
+              hi[(axis + 2) % 3] = v + Cell;
+              const tpc::Box3 box{ grid.Point(tpc::MakePointKey(lo[0], lo[1], lo[2])),
+                grid.Point(tpc::MakePointKey(hi[0], hi[1], hi[2])) };
+              a.Cells[side] = tpc::CsgExpression::Prune(expressions[s], box, prims).Expression;
+              oneMesh = oneMesh && a.Cells[side] && tpc::LoneMeshLeaf(*a.Cells[side]);
+            }
+            if (!oneMesh)
+            {
+              continue;
+            }
+            for (int side = 0; side < 2; ++side)
+            {
+              tpc::LatticeSignTable global;
+              tpc::CellSignCache signs(global, grid, *a.Cells[side], prims);
+              a.Own[side] = tpc::RefineFace(a.Cells[side], prims, grid, axis, plane, a.Face, Levels, signs);
+            }
+            ASSERT_TRUE(same(a.Own[0], a.Own[1])) << "scene " << s << ", axis " << axis << ", plane " << plane
+                                                  << ", face " << u << " " << v;
+            refined += a.Own[0].Tiles.size() > 1 ? 1 : 0;
+            asked.push_back(std::move(a));
+          }
+        }
+      }
+    }
+    shared += static_cast<int>(asked.size());
+    tpc::FaceDecisionCache cache;
+    const auto ask = [&](std::size_t i, int side) {
+      const Asked& a = asked[i];
+      tpc::LatticeSignTable global;
+      tpc::CellSignCache signs(global, grid, *a.Cells[side], prims);
+      const tpc::FaceRefinementResult r =
+        cache.TileFace(a.Cells[side], prims, grid, a.Axis, a.Plane, a.Face, Levels, signs);
+      // (Every corner's sign among those the asker now holds, exact.)
+      int unknown = 0;
+      for (const FaceTile& t : r.Tiles)
+      {
+        for (int c = 0; c < 4; ++c)
+        {
+          const tpc::PointKey key = tpc::TileCorner(a.Axis, a.Plane, t, c);
+          const auto& held = signs.NewSigns();
+          const auto found = std::find_if(held.begin(), held.end(), [&](const auto& p) { return p.first == key; });
+          unknown += found == held.end() || found->second != expressions[s]->IsInside(grid.Point(key), prims) ? 1 : 0;
+        }
+      }
+      return unknown == 0 && same(r, a.Own[side]);
+    };
+    for (const int side : { 0, 1 })
+    {
+      for (std::size_t i = 0; i < asked.size(); ++i)
+      {
+        EXPECT_TRUE(ask(i, side)) << "scene " << s << ", face " << i << ", cell " << side;
+      }
+    }
+    std::vector<char> first(asked.size()), second(asked.size());
+    const auto askAll = [&](int side, std::vector<char>& answers) {
+      for (std::size_t i = 0; i < asked.size(); ++i)
+      {
+        answers[i] = ask(i, side);
+      }
+    };
+    std::thread other(askAll, 1, std::ref(second));
+    askAll(0, first);
+    other.join();
+    EXPECT_EQ(std::count(first.begin(), first.end(), 1) + std::count(second.begin(), second.end(), 1),
+      static_cast<std::ptrdiff_t>(2 * asked.size()))
+      << "scene " << s;
+  }
+  EXPECT_GT(shared, 400);
+  EXPECT_GE(refined, 8);
 }
