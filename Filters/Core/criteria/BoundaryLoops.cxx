@@ -122,6 +122,10 @@ void FaceSegments(const CellBoundary& b, int f, TraceScratch& scratch, std::vect
   const int axis = f / 2, side = f % 2;
   const LatticeIndex plane = b.Base[axis] + (side ? b.Size : 0);
   std::vector<FacePoint>& byV = scratch.OnFace[f];
+  if (std::all_of(byV.begin(), byV.end(), [&](const FacePoint& p) { return p.Inside == byV[0].Inside; }))
+  {
+    return; // (no tile's polygon changes sign: no segment; exact tiles' are in ExactSegments)
+  }
   std::vector<FacePoint>& byU = scratch.ByU;
   byU.assign(byV.begin(), byV.end());
   std::sort(byV.begin(), byV.end(), ByVU);

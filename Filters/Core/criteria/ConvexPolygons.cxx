@@ -119,9 +119,13 @@ void PolygonSet::Add(const Vec3* corners, std::size_t m)
   // (The box's magnitude is the corners' largest coordinate.)
   h.HasInward = MeasuredByItsPlane(length, reach2, std::max(h.Bounds.Magnitude(), this->SlackMagnitude), m);
   this->Corners.insert(this->Corners.end(), corners, corners + m);
-  for (std::size_t i = 0; i < m; ++i)
+  // (Sized once and written in place, the next corner without a division:
+  // S_C is built for every cell tested, a few hundred thousand polygons.)
+  this->Inward.resize(this->Inward.size() + m);
+  Vec3* inward = this->Inward.data() + h.First;
+  for (std::size_t i = 0; i < m && h.HasInward; ++i)
   {
-    this->Inward.push_back(h.HasInward ? Cross(h.Normal, corners[(i + 1) % m] - corners[i]) : Vec3());
+    inward[i] = Cross(h.Normal, corners[i + 1 < m ? i + 1 : 0] - corners[i]);
   }
   this->Headers.push_back(h);
 }
