@@ -48,6 +48,20 @@ void ExpectTiling(const std::vector<FaceTile>& tiles)
   }
   EXPECT_EQ(area, std::uint64_t(Side) * Side);
 }
+
+/// Three scenes of meshes in [-1, 1]^3, built in `scenes`: a tilted cube's
+/// edges and corners, a torus, and a sphere's mesh minus the cube's; their
+/// expressions.
+std::vector<tpc::CsgExpressionPtr> MeshScenes(std::vector<SceneBuilder>& scenes)
+{
+  const tpc::MeshSolid cube = tpctest::TiltedMesh(tpctest::CubeMesh({ -0.5, -0.5, -0.5 }, { 0.5, 0.5, 0.5 }));
+  std::vector<tpc::CsgExpressionPtr> expressions;
+  expressions.push_back(scenes[0].Finish(scenes[0].Mesh(cube)));
+  expressions.push_back(scenes[1].Finish(scenes[1].Mesh(tpctest::TorusMesh({ 0.05, 0.02, 0.01 }, 0.55, 0.2, 40, 16))));
+  expressions.push_back(scenes[2].Finish(SceneBuilder::Difference(
+    { scenes[2].Mesh(tpctest::SphereMesh({ 0.1, 0.05, 0 }, 0.7, 3)), scenes[2].Mesh(cube) })));
+  return expressions;
+}
 } // namespace
 
 TEST(FaceRefinement, TilesCoverTheFaceAndEachPassesTheFaceTests)
@@ -237,13 +251,8 @@ TEST(FaceRefinement, TilesOfMeshesPassWithTheWholeMeshListed)
   // sphere's mesh minus the cube's, cut by faces of the unit lattice at many
   // heights.
   const tpc::RootGrid grid = tpctest::SingleRoot({ -1, -1, -1 }, 2.0, 10);
-  const tpc::MeshSolid cube = tpctest::TiltedMesh(tpctest::CubeMesh({ -0.5, -0.5, -0.5 }, { 0.5, 0.5, 0.5 }));
   std::vector<SceneBuilder> scenes(3);
-  std::vector<tpc::CsgExpressionPtr> expressions;
-  expressions.push_back(scenes[0].Finish(scenes[0].Mesh(cube)));
-  expressions.push_back(scenes[1].Finish(scenes[1].Mesh(tpctest::TorusMesh({ 0.05, 0.02, 0.01 }, 0.55, 0.2, 40, 16))));
-  expressions.push_back(scenes[2].Finish(SceneBuilder::Difference(
-    { scenes[2].Mesh(tpctest::SphereMesh({ 0.1, 0.05, 0 }, 0.7, 3)), scenes[2].Mesh(cube) })));
+  const std::vector<tpc::CsgExpressionPtr> expressions = MeshScenes(scenes);
   int refined = 0, tiles = 0;
   for (std::size_t s = 0; s < scenes.size(); ++s)
   {
@@ -299,13 +308,8 @@ TEST(FaceRefinement, TilingsOfOneMeshAreSharedByTheCellsOnBothSides)
   // without the plane, or a second asker not given the corners' signs fails
   // it.)
   const tpc::RootGrid grid = tpctest::SingleRoot({ -1, -1, -1 }, 2.0, 10);
-  const tpc::MeshSolid cube = tpctest::TiltedMesh(tpctest::CubeMesh({ -0.5, -0.5, -0.5 }, { 0.5, 0.5, 0.5 }));
   std::vector<SceneBuilder> scenes(3);
-  std::vector<tpc::CsgExpressionPtr> expressions;
-  expressions.push_back(scenes[0].Finish(scenes[0].Mesh(cube)));
-  expressions.push_back(scenes[1].Finish(scenes[1].Mesh(tpctest::TorusMesh({ 0.05, 0.02, 0.01 }, 0.55, 0.2, 40, 16))));
-  expressions.push_back(scenes[2].Finish(SceneBuilder::Difference(
-    { scenes[2].Mesh(tpctest::SphereMesh({ 0.1, 0.05, 0 }, 0.7, 3)), scenes[2].Mesh(cube) })));
+  const std::vector<tpc::CsgExpressionPtr> expressions = MeshScenes(scenes);
   constexpr tpc::LatticeIndex Cell = 128;
   constexpr int Levels = 7;
   const auto same = [](const tpc::FaceRefinementResult& a, const tpc::FaceRefinementResult& b) {
