@@ -1,6 +1,7 @@
 #include "ConvexPolygons.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cfloat>
 #include <cmath>
 #include <utility>
@@ -118,14 +119,19 @@ void PolygonSet::Add(const Vec3* corners, std::size_t m)
   h.Bounds = m ? BoundsOf(corners, m) : Box3{};
   // (The box's magnitude is the corners' largest coordinate.)
   h.HasInward = MeasuredByItsPlane(length, reach2, std::max(h.Bounds.Magnitude(), this->SlackMagnitude), m);
+  assert(this->Inward.size() == this->Corners.size() && "Inward is parallel to Corners");
   this->Corners.insert(this->Corners.end(), corners, corners + m);
   // (Sized once and written in place, the next corner without a division:
-  // S_C is built for every cell tested, a few hundred thousand polygons.)
-  this->Inward.resize(this->Inward.size() + m);
-  Vec3* inward = this->Inward.data() + h.First;
-  for (std::size_t i = 0; i < m && h.HasInward; ++i)
+  // S_C is built for every cell tested, a few hundred thousand polygons.
+  // Zeros for a polygon measured by its edges.)
+  this->Inward.resize(this->Corners.size());
+  if (h.HasInward)
   {
-    inward[i] = Cross(h.Normal, corners[i + 1 < m ? i + 1 : 0] - corners[i]);
+    Vec3* inward = this->Inward.data() + h.First;
+    for (std::size_t i = 0; i < m; ++i)
+    {
+      inward[i] = Cross(h.Normal, corners[i + 1 < m ? i + 1 : 0] - corners[i]);
+    }
   }
   this->Headers.push_back(h);
 }

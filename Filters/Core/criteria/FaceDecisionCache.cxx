@@ -25,28 +25,28 @@ std::optional<CreaseTile> FaceDecisionCache::DecideCrease(const CsgLeaf& leaf, c
     [&] { return CreaseOnTile(leaf, primitives, grid, axis, plane, tile); });
 }
 
-FaceRefinementResult FaceDecisionCache::TileFace(const CsgExpressionPtr& expression,
+FaceRefinementResult TileFace(FaceDecisionCache* cache, const CsgExpressionPtr& expression,
   const PrimitiveSet& primitives, const RootGrid& grid, int axis, LatticeIndex plane, const FaceTile& face,
   int maxLevels, CellSignCache& signs)
 {
-  const auto tile = [&] {
-    Tiling t;
-    t.Refinement = RefineFace(expression, primitives, grid, axis, plane, face, maxLevels, signs);
-    for (const FaceTile& r : t.Refinement.Tiles)
-    {
-      for (int c = 0; c < 4; ++c)
-      {
-        t.CornersInside.push_back(signs.Inside(TileCorner(axis, plane, r, c)));
-      }
-    }
-    return t;
-  };
-  const CsgLeaf* leaf = LoneMeshLeaf(*expression);
+  const CsgLeaf* leaf = cache ? LoneMeshLeaf(*expression) : nullptr;
   if (!leaf)
   {
     return RefineFace(expression, primitives, grid, axis, plane, face, maxLevels, signs);
   }
-  Tiling t = this->Tilings.Take(Key{ leaf->Primitive, leaf->Sigma, axis, plane, face, maxLevels }, tile);
+  FaceDecisionCache::Tiling t = cache->Tilings.Take(
+    FaceDecisionCache::Key{ leaf->Primitive, leaf->Sigma, axis, plane, face, maxLevels }, [&] {
+      FaceDecisionCache::Tiling first;
+      first.Refinement = RefineFace(expression, primitives, grid, axis, plane, face, maxLevels, signs);
+      for (const FaceTile& r : first.Refinement.Tiles)
+      {
+        for (int c = 0; c < 4; ++c)
+        {
+          first.CornersInside.push_back(signs.Inside(TileCorner(axis, plane, r, c)));
+        }
+      }
+      return first;
+    });
   for (std::size_t r = 0; r < t.Refinement.Tiles.size(); ++r)
   {
     for (int c = 0; c < 4; ++c)

@@ -14,15 +14,20 @@
 // Where a cell's surface is one mesh (its expression a lone mesh leaf,
 // LoneMeshLeaf) the tiling is the face's and the mesh's alone: each tile's
 // tests see the leaf pruned to the tile - the triangles of the cell's list
-// that may meet it, in the list's order, and both cells' lists hold every
-// triangle meeting the face - and decide exactly on the triangles that meet
-// it (FaceRefinement.cxx); the signs at the lattice points are exact. So
-// both cells tile the face alike (TestFaceDecisionCache.cxx checks it cell by
-// cell on a real mesh), and the second takes the first's tiling and the
-// signs at its tiles' corners (a tiling was 8 % of armadillo's instructions
-// at 1/128). Where meshes meet, a tile's crossing counts may split it at
-// other points with another cell's list (FaceRefinement.cxx): each such cell
-// tiles its faces itself.
+// that may meet it, in the list's order; both cells' lists hold every
+// triangle meeting the face (they may differ by one that only grazes it
+// within the triangle filter's slack, which the exact tests do not see) -
+// and decide exactly on the triangles that meet it (FaceRefinement.cxx); the
+// signs at the lattice points are exact. So both cells tile the face alike
+// (TestFaceRefinement.cxx, TilingsOfOneMeshAreSharedByTheCellsOnBothSides,
+// checks it face by face), and the second takes the first's tiling and
+// learns the signs at its tiles' corners (a tiling was 8 % of armadillo's
+// instructions at 1/128; shared, about 1 % fewer in all, for 1-4 % more
+// memory at the peak at 1/256). The other points the first sampled while
+// tiling go to its own sign table only (the second needs none of them).
+// Where meshes meet, a tile's crossing counts may split it at other points
+// with another cell's list (FaceRefinement.cxx): each such cell tiles its
+// faces itself.
 //
 // So the first decision is every later asker's: whichever cell's thread makes
 // it, the answer is the same, and the output does not depend on the threads.
@@ -61,17 +66,14 @@ public:
   std::optional<CreaseTile> DecideCrease(const CsgLeaf& leaf, const PrimitiveSet& primitives, const RootGrid& grid,
     int axis, LatticeIndex plane, const FaceTile& tile);
 
-  /// RefineFace(expression, primitives, grid, axis, plane, face, maxLevels,
-  /// signs), decided once for the two cells sharing the face where
-  /// `expression` is a lone mesh leaf - the second learns the signs at the
-  /// tiles' corners into its `signs` - else by the cell itself.
-  FaceRefinementResult TileFace(const CsgExpressionPtr& expression, const PrimitiveSet& primitives,
-    const RootGrid& grid, int axis, LatticeIndex plane, const FaceTile& face, int maxLevels, CellSignCache& signs);
-
   /// Forgets every decision.
   void Clear();
 
 private:
+  friend FaceRefinementResult TileFace(FaceDecisionCache* cache, const CsgExpressionPtr& expression,
+    const PrimitiveSet& primitives, const RootGrid& grid, int axis, LatticeIndex plane, const FaceTile& face,
+    int maxLevels, CellSignCache& signs);
+
   /// A face or tile of one mesh: the leaf's primitive and sign (the tiling's
   /// tests read the leaf's side), the plane, the tile, and the levels a
   /// tiling may refine (0 for crease tiles).
@@ -102,7 +104,8 @@ private:
   public:
     /// The kept decision for `key`, taken out; else decide(), kept.
     /// (Decided without the lock; a thread deciding the same key meanwhile
-    /// finds the same answer, and the first one kept stands.)
+    /// finds the same answer, and the first one kept stands - until the
+    /// pass clears it, as one the other cell never asks for.)
     template <typename Decide>
     Value Take(const Key& key, const Decide& decide)
     {
@@ -119,7 +122,7 @@ private:
       }
       Value decided = decide();
       const std::lock_guard<std::mutex> lock(shard.Mutex);
-      shard.Values.emplace(key, decided);
+      shard.Values.try_emplace(key, decided);
       return decided;
     }
 
@@ -153,5 +156,13 @@ private:
   TakenOnce<std::optional<CreaseTile>> Creases;
   TakenOnce<Tiling> Tilings;
 };
+
+/// RefineFace(expression, primitives, grid, axis, plane, face, maxLevels,
+/// signs), decided once for the two cells sharing the face where `cache` is
+/// given and `expression` is a lone mesh leaf - the second learns the signs
+/// at the tiles' corners into its `signs` - else by the cell itself.
+FaceRefinementResult TileFace(FaceDecisionCache* cache, const CsgExpressionPtr& expression,
+  const PrimitiveSet& primitives, const RootGrid& grid, int axis, LatticeIndex plane, const FaceTile& face,
+  int maxLevels, CellSignCache& signs);
 
 } // namespace tpc

@@ -27,8 +27,9 @@ namespace
 /// Refines each face of cell `n` until its tiles pass the face tests
 /// (FaceRefinement.h) and gathers the tiles and their corner samples into
 /// `boundary`; false, with the failing test in `v.Reason`, when a face
-/// cannot be tiled within `levels`. With `faceDecisions`, a face the cell
-/// beside it has tiled is not tiled again (FaceDecisionCache.h).
+/// cannot be tiled within `levels`. With `faceDecisions`, a face of one
+/// mesh that the cell beside it, of the same level, has tiled is not tiled
+/// again (FaceDecisionCache.h).
 bool TileFaces(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& prims, int levels,
   CellSignCache& signs, FaceDecisionCache* faceDecisions, CellBoundary& boundary, McCompatibility& v)
 {
@@ -46,10 +47,8 @@ bool TileFaces(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& 
     const int axis = f / 2, side = f % 2;
     const LatticeIndex plane = boundary.Base[axis] + (side ? size : 0);
     const LatticeIndex u0 = boundary.Base[(axis + 1) % 3], v0 = boundary.Base[(axis + 2) % 3];
-    const FaceTile face{ u0, v0, u0 + size, v0 + size };
-    const FaceRefinementResult r = faceDecisions
-      ? faceDecisions->TileFace(tree.Expressions[n], prims, grid, axis, plane, face, std::min(levels, shift), signs)
-      : RefineFace(tree.Expressions[n], prims, grid, axis, plane, face, std::min(levels, shift), signs);
+    const FaceRefinementResult r = TileFace(faceDecisions, tree.Expressions[n], prims, grid, axis, plane,
+      { u0, v0, u0 + size, v0 + size }, std::min(levels, shift), signs);
     if (r.Tiles.empty())
     {
       v.Reason = r.Failure;

@@ -1,5 +1,7 @@
 #include "CellSignCache.h"
 
+#include <cassert>
+
 namespace tpc
 {
 
@@ -17,7 +19,9 @@ bool CellSignCache::Inside(PointKey key)
 
 void CellSignCache::Learn(PointKey key, bool inside)
 {
-  if (this->Known(key) < 0)
+  const int known = this->Known(key);
+  assert((known < 0 || (known == 1) == inside) && "an exact sign is the same wherever it was evaluated");
+  if (known < 0)
   {
     this->Remember(key, inside);
   }

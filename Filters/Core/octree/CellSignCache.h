@@ -32,7 +32,8 @@ public:
   /// exact sign another cell evaluated (FaceDecisionCache.h) - kept for the
   /// table like the ones evaluated here.
   void Learn(PointKey key, bool inside);
-  /// Points evaluated here and not yet in the global table.
+  /// Points evaluated here, or learned (Learn), and not yet in the global
+  /// table.
   const std::vector<std::pair<PointKey, bool>>& NewSigns() const { return this->Fresh; }
 
 private:

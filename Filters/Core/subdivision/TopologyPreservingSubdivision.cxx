@@ -305,7 +305,9 @@ bool LevelByLevel::EvaluateUnseenCorners()
 /// the cells that passed go into the tables (in cell order: the first tiling
 /// of a face stays) and every verdict drops them, so a level's cells never
 /// hold them all at once (face refinement may sample thousands of points per
-/// cell).
+/// cell). The face decisions the level shares (FaceDecisionCache.h) - a
+/// tiling and its corners' signs per face one cell has tiled and the other
+/// not yet - are held until the level ends.
 bool LevelByLevel::TestCells(std::vector<CellTests>& tests)
 {
   AdaptiveOctree& tree = this->Result.Octree;

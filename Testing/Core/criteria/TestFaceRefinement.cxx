@@ -301,21 +301,23 @@ TEST(FaceRefinement, TilingsOfOneMeshAreSharedByTheCellsOnBothSides)
   // surface is one mesh (FaceDecisionCache.h): a tilted cube, a torus, and a
   // sphere's mesh minus the cube's (where one mesh only meets a cell), faces
   // of 128 lattice spacings, each refined with the scene pruned to the cell
-  // below it and to the cell above. Then asked of a FaceDecisionCache, the
-  // cell below first (the second takes the tiling out, learning the signs at
-  // its tiles' corners), and again from two threads at once: every answer is
-  // the asker's own tiling. (A tiling that depended on the cell's list, a key
-  // without the plane, or a second asker not given the corners' signs fails
-  // it.)
+  // below it and to the cell above. Then asked of a FaceDecisionCache (the
+  // second asker takes the tiling out, learning the signs at its tiles'
+  // corners): the cell below first, then the cell above, which samples no
+  // point itself; the cell below with 7 levels, the cell above with 1 (another
+  // tiling: not shared); and from two threads at once. Every answer is the
+  // asker's own tiling, with every corner's exact sign. (Fails where a tiling
+  // depends on the cell's list, with a key without the plane or the levels,
+  // where the second asker tiles again, or is not given the corners' signs.)
   const tpc::RootGrid grid = tpctest::SingleRoot({ -1, -1, -1 }, 2.0, 10);
   std::vector<SceneBuilder> scenes(3);
   const std::vector<tpc::CsgExpressionPtr> expressions = MeshScenes(scenes);
   constexpr tpc::LatticeIndex Cell = 128;
-  constexpr int Levels = 7;
+  constexpr int Levels = 7, FewerLevels = 1;
   const auto same = [](const tpc::FaceRefinementResult& a, const tpc::FaceRefinementResult& b) {
     return a.Failure == b.Failure && a.Tiles == b.Tiles;
   };
-  int shared = 0, refined = 0;
+  int shared = 0, refined = 0, sampledBeyondCorners = 0, otherWithFewerLevels = 0;
   for (std::size_t s = 0; s < scenes.size(); ++s)
   {
     const tpc::PrimitiveSet& prims = scenes[s].Scene.Primitives;
@@ -326,6 +328,12 @@ TEST(FaceRefinement, TilingsOfOneMeshAreSharedByTheCellsOnBothSides)
       FaceTile Face;
       std::array<tpc::CsgExpressionPtr, 2> Cells; ///< pruned to the cells below and above the face
       std::array<tpc::FaceRefinementResult, 2> Own;
+      tpc::FaceRefinementResult AboveWithFewerLevels;
+    };
+    const auto own = [&](const Asked& a, int side, int levels) {
+      tpc::LatticeSignTable global;
+      tpc::CellSignCache signs(global, grid, *a.Cells[side], prims);
+      return tpc::RefineFace(a.Cells[side], prims, grid, a.Axis, a.Plane, a.Face, levels, signs);
     };
     std::vector<Asked> asked;
     for (int axis = 0; axis < 3; ++axis)
@@ -336,7 +344,7 @@ TEST(FaceRefinement, TilingsOfOneMeshAreSharedByTheCellsOnBothSides)
         {
           for (tpc::LatticeIndex v = 0; v < Side; v += Cell)
           {
-            Asked a{ axis, plane, { u, v, u + Cell, v + Cell }, {}, {} };
+            Asked a{ axis, plane, { u, v, u + Cell, v + Cell }, {}, {}, {} };
             bool oneMesh = true;
             for (int side = 0; side < 2; ++side)
             {
@@ -356,15 +364,12 @@ TEST(FaceRefinement, TilingsOfOneMeshAreSharedByTheCellsOnBothSides)
             {
               continue;
             }
-            for (int side = 0; side < 2; ++side)
-            {
-              tpc::LatticeSignTable global;
-              tpc::CellSignCache signs(global, grid, *a.Cells[side], prims);
-              a.Own[side] = tpc::RefineFace(a.Cells[side], prims, grid, axis, plane, a.Face, Levels, signs);
-            }
+            a.Own = { own(a, 0, Levels), own(a, 1, Levels) };
             ASSERT_TRUE(same(a.Own[0], a.Own[1])) << "scene " << s << ", axis " << axis << ", plane " << plane
                                                   << ", face " << u << " " << v;
+            a.AboveWithFewerLevels = own(a, 1, FewerLevels);
             refined += a.Own[0].Tiles.size() > 1 ? 1 : 0;
+            otherWithFewerLevels += same(a.AboveWithFewerLevels, a.Own[1]) ? 0 : 1;
             asked.push_back(std::move(a));
           }
         }
@@ -372,38 +377,53 @@ TEST(FaceRefinement, TilingsOfOneMeshAreSharedByTheCellsOnBothSides)
     }
     shared += static_cast<int>(asked.size());
     tpc::FaceDecisionCache cache;
-    const auto ask = [&](std::size_t i, int side) {
+    // Whether the answer is the asker's own tiling (`levels`), with every
+    // corner's exact sign among the signs the asker holds; in `beyond`,
+    // whether it holds others too (points it sampled while tiling).
+    const auto ask = [&](std::size_t i, int side, int levels, bool& beyond) {
       const Asked& a = asked[i];
       tpc::LatticeSignTable global;
       tpc::CellSignCache signs(global, grid, *a.Cells[side], prims);
       const tpc::FaceRefinementResult r =
-        cache.TileFace(a.Cells[side], prims, grid, a.Axis, a.Plane, a.Face, Levels, signs);
-      // (Every corner's sign among those the asker now holds, exact.)
-      int unknown = 0;
+        tpc::TileFace(&cache, a.Cells[side], prims, grid, a.Axis, a.Plane, a.Face, levels, signs);
+      const auto& held = signs.NewSigns();
+      std::size_t corners = 0;
+      bool exact = true;
       for (const FaceTile& t : r.Tiles)
       {
         for (int c = 0; c < 4; ++c)
         {
           const tpc::PointKey key = tpc::TileCorner(a.Axis, a.Plane, t, c);
-          const auto& held = signs.NewSigns();
           const auto found = std::find_if(held.begin(), held.end(), [&](const auto& p) { return p.first == key; });
-          unknown += found == held.end() || found->second != expressions[s]->IsInside(grid.Point(key), prims) ? 1 : 0;
+          exact = exact && found != held.end() && found->second == expressions[s]->IsInside(grid.Point(key), prims);
+          corners += std::count_if(held.begin(), found, [&](const auto& p) { return p.first == key; }) == 0 ? 1 : 0;
         }
       }
-      return unknown == 0 && same(r, a.Own[side]);
+      beyond = held.size() > corners; // (corners: the distinct ones)
+      return exact && same(r, levels == Levels ? a.Own[side] : a.AboveWithFewerLevels);
     };
-    for (const int side : { 0, 1 })
+    bool beyond = false;
+    for (std::size_t i = 0; i < asked.size(); ++i)
     {
-      for (std::size_t i = 0; i < asked.size(); ++i)
-      {
-        EXPECT_TRUE(ask(i, side)) << "scene " << s << ", face " << i << ", cell " << side;
-      }
+      EXPECT_TRUE(ask(i, 0, Levels, beyond)) << "scene " << s << ", face " << i << ", cell below";
+      sampledBeyondCorners += beyond ? 1 : 0;
     }
+    for (std::size_t i = 0; i < asked.size(); ++i)
+    {
+      EXPECT_TRUE(ask(i, 1, Levels, beyond) && !beyond) << "scene " << s << ", face " << i << ", cell above";
+    }
+    for (std::size_t i = 0; i < asked.size(); ++i)
+    {
+      EXPECT_TRUE(ask(i, 0, Levels, beyond) && ask(i, 1, FewerLevels, beyond))
+        << "scene " << s << ", face " << i << ", fewer levels";
+    }
+    cache.Clear();
     std::vector<char> first(asked.size()), second(asked.size());
     const auto askAll = [&](int side, std::vector<char>& answers) {
+      bool sampled = false;
       for (std::size_t i = 0; i < asked.size(); ++i)
       {
-        answers[i] = ask(i, side);
+        answers[i] = ask(i, side, Levels, sampled);
       }
     };
     std::thread other(askAll, 1, std::ref(second));
@@ -415,4 +435,6 @@ TEST(FaceRefinement, TilingsOfOneMeshAreSharedByTheCellsOnBothSides)
   }
   EXPECT_GT(shared, 400);
   EXPECT_GE(refined, 8);
+  EXPECT_GE(sampledBeyondCorners, 8); // (a second asker tiling again would hold such points)
+  EXPECT_GE(otherWithFewerLevels, 1); // (a key without the levels would give those the deeper tiling)
 }
