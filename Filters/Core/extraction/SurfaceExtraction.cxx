@@ -4,9 +4,9 @@
 #include "CertifiedError.h"
 #include "CrackPatching.h"
 #include "CreaseFollowing.h"
-#include "FaceDecisionCache.h"
 #include "CrossingVertices.h"
 #include "ExactCellCriterion.h"
+#include "FaceDecisionCache.h"
 #include "MeshBooleanCellError.h"
 #include "ScratchPool.h"
 

@@ -1,8 +1,8 @@
 #include "TopologyPreservingSubdivision.h"
 
-#include "FaceDecisionCache.h"
 #include "DistinctRecords.h"
 #include "ExactCellCriterion.h"
+#include "FaceDecisionCache.h"
 #include "QuadricCellError.h"
 #include "ScratchPool.h"
 #include "SplitDecision.h"

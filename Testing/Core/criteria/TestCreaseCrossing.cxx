@@ -5,8 +5,8 @@
 // bar followed by output edges lying on them.
 #include "CoreContour.h"
 #include "CreaseCrossing.h"
-#include "FaceDecisionCache.h"
 #include "ExactCellCriterion.h"
+#include "FaceDecisionCache.h"
 #include "MeshBuilders.h"
 #include "SceneBuilder.h"
 
