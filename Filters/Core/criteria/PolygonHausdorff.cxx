@@ -107,6 +107,75 @@ double CoveringRadius(const SourceTriangle& t)
   return radius * (1.0 + 1e-12);
 }
 
+double LeastMixedMaximum(const std::array<std::array<double, 3>, 3>& distances, int targets)
+{
+  // The least over the weights' simplex of a maximum of three affine
+  // functions (one per corner) is at a vertex of their arrangement: a pure
+  // weight (bound (1) with that row), a point of an edge of the simplex
+  // where two corners' sums are equal, or one inside where all three are;
+  // each is tried. Weights that rounding leaves a little off still prove a
+  // bound (the header's chain holds for any): only their sum must be 1, which
+  // the factor at the end covers, with the sums' own roundings.
+  const auto atWeights = [&](const std::array<double, 3>& mu) {
+    double worst = 0.0;
+    for (int i = 0; i < 3; ++i)
+    {
+      double sum = 0.0;
+      for (int a = 0; a < targets; ++a)
+      {
+        sum += mu[a] > 0.0 ? mu[a] * distances[a][i] : 0.0; // (0 x inf left out)
+      }
+      worst = std::max(worst, sum);
+    }
+    return worst;
+  };
+  double best = HUGE_VAL;
+  for (int a = 0; a < targets; ++a)
+  {
+    best = std::min(best, std::max({ distances[a][0], distances[a][1], distances[a][2] }));
+    for (int b = a + 1; b < targets; ++b)
+    {
+      for (int i = 0; i < 3; ++i)
+      {
+        for (int j = i + 1; j < 3; ++j)
+        {
+          // alpha D_ai + (1 - alpha) D_bi = alpha D_aj + (1 - alpha) D_bj
+          // (NaN where both sides are infinite: not tried).
+          const double slope = (distances[a][i] - distances[b][i]) - (distances[a][j] - distances[b][j]);
+          const double alpha = (distances[b][j] - distances[b][i]) / slope;
+          if (alpha > 0.0 && alpha < 1.0)
+          {
+            std::array<double, 3> mu{ 0.0, 0.0, 0.0 };
+            mu[a] = alpha;
+            mu[b] = 1.0 - alpha;
+            best = std::min(best, atWeights(mu));
+          }
+        }
+      }
+    }
+  }
+  if (targets == 3)
+  {
+    // All three corners' sums equal: mu . (D_0 - D_1) = mu . (D_1 - D_2) = 0
+    // over the columns D_i, and sum mu = 1, so mu is u x w scaled to sum 1
+    // (u, w those differences); tried where no weight is negative (where
+    // the sum is 0 a weight is -inf or NaN, and infinite entries give NaN:
+    // not tried).
+    const auto difference = [&](int i, int j) {
+      return Vec3(distances[0][i] - distances[0][j], distances[1][i] - distances[1][j],
+        distances[2][i] - distances[2][j]);
+    };
+    const Vec3 n = Cross(difference(0, 1), difference(1, 2));
+    const double sum = n[0] + n[1] + n[2];
+    const std::array<double, 3> mu{ n[0] / sum, n[1] / sum, n[2] / sum };
+    if (mu[0] >= 0.0 && mu[1] >= 0.0 && mu[2] >= 0.0)
+    {
+      best = std::min(best, atWeights(mu));
+    }
+  }
+  return best * (1.0 + 1e-12);
+}
+
 namespace
 {
 /// g at the corners of the sources evaluated so far in one branch and bound,
@@ -219,6 +288,18 @@ bool WithinOf(double distance2, double offset, double limit)
   return room >= 0.0 && distance2 <= room * room;
 }
 
+/// Whether target t at offset distance d is nearer than `best`, attained at
+/// `bestTarget`: among equally near targets the lowest-numbered wins, so
+/// that the target a search names as a point's nearest does not depend on
+/// the order it visits them in (every search visits the targets whose box
+/// is within - not only below - the best distance): bound (3) is built on
+/// the corners' nearest targets, and a corner above an edge or a vertex of
+/// S_C is equally near to the polygons sharing it.
+bool NearerThan(double d, std::uint32_t t, double best, std::uint32_t bestTarget)
+{
+  return d < best || (d == best && d < HUGE_VAL && t < bestTarget);
+}
+
 /// d(p, Q_t) + offset, or +inf where that is not a number (a NaN
 /// coordinate): the maxima and minima below would pass over a NaN, and a
 /// piece with a vertex so measured would be bounded by its other vertices.
@@ -281,7 +362,7 @@ public:
     while (top > 0)
     {
       const Node& node = this->Nodes[stack[--top]];
-      if (!CloserThan(node.Box.Distance2(p), node.MinOffset, best))
+      if (!WithinOf(node.Box.Distance2(p), node.MinOffset, best))
       {
         continue;
       }
@@ -291,10 +372,10 @@ public:
         {
           const std::uint32_t t = this->Order[k];
           const double offset = this->OffsetOf(t);
-          if (CloserThan((*this->Boxes)[t].Distance2(p), offset, best))
+          if (WithinOf((*this->Boxes)[t].Distance2(p), offset, best))
           {
             const double d = OffsetDistance(polygons, p, t, offset);
-            if (d < best)
+            if (NearerThan(d, t, best, bestTarget))
             {
               best = d;
               bestTarget = t;
@@ -545,6 +626,73 @@ bool SettledByCommonNearest(Piece& piece, double settle, const Targets& targets,
   return true;
 }
 
+/// Bound (3) of the header for `piece` from the targets its corners are
+/// nearest to (their distances known; the others measured), or +inf where
+/// those are fewer than two (then (3) is (1) with that target, which the
+/// search finds anyway) or a corner's nearest is not known.
+double MixedTargetsBound(const Piece& piece, double below, const Targets& targets)
+{
+  std::array<std::uint32_t, 3> rows;
+  int count = 0;
+  for (const std::uint32_t t : piece.NearestTarget)
+  {
+    if (t == SingleTargetWitness::None)
+    {
+      return HUGE_VAL;
+    }
+    if (std::find(rows.begin(), rows.begin() + count, t) == rows.begin() + count)
+    {
+      rows[count++] = t;
+    }
+  }
+  if (count < 2)
+  {
+    return HUGE_VAL;
+  }
+  std::array<std::array<double, 3>, 3> distances;
+  for (int a = 0; a < count; ++a)
+  {
+    const double offset = targets.Offsets ? (*targets.Offsets)[rows[a]] : 0.0;
+    for (int i = 0; i < 3; ++i)
+    {
+      distances[a][i] = piece.NearestTarget[i] == rows[a]
+        ? piece.Nearest[i]
+        : OffsetDistance(targets.Polygons, piece.Vertices[i], rows[a], offset);
+    }
+  }
+  // (No weights give less than the corners' least distances over the rows,
+  // max_i min_a D_ai: where that is not below the bound the piece has, the
+  // weights are not sought - most pieces of a smooth S_C, where (3) is
+  // rarely lower than (1).)
+  double floor = 0.0;
+  for (int i = 0; i < 3; ++i)
+  {
+    double least = distances[0][i];
+    for (int a = 1; a < count; ++a)
+    {
+      least = std::min(least, distances[a][i]);
+    }
+    floor = std::max(floor, least);
+  }
+  return floor < below ? LeastMixedMaximum(distances, count) : HUGE_VAL;
+}
+
+/// A piece's bound of g from (1), (2) and its parent's (a child lies in its
+/// parent), `upper`, lowered by (3) where it does not settle the piece: most
+/// pieces settle by (1) or (2) at once, and (3)'s distances would be work
+/// for nothing there. Over a valley or a ridge of S_C, where the nearest
+/// target changes across a piece, (3) is about the distance's maximum while
+/// (1) is a far corner's distance to the other side, and the piece settles
+/// instead of splitting. Evaluate and EvaluateInHierarchy both end with it
+/// on the same `upper` (EvaluateInHierarchy: with its parent's bound, (1)
+/// where the hierarchy's search leaves out is the same), so their bounds
+/// stay the same. (Computing (3) before the hierarchy's search for (1), to
+/// skip or narrow it, cost more than it saved: armadillo at 1/128, 1 %.)
+double WithMixedTargets(double upper, const Piece& piece, double settle, const Targets& targets)
+{
+  return upper + piece.Offset <= settle ? upper : std::min(upper, MixedTargetsBound(piece, upper, targets));
+}
+
 /// A piece settled without a search (header: Known targets) by a target one
 /// of its known corners is nearest to, or `guess` (the last source's single
 /// target, or its parent's): where the single-target bound (1) of one of
@@ -667,13 +815,13 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
     double farthest = 0.0;
     for (int i = 0; i < 3; ++i)
     {
-      const bool improvesNearest = !known[i] && CloserThan(boxDistance2Of[i], offset, nearest[i]);
+      const bool improvesNearest = !known[i] && WithinOf(boxDistance2Of[i], offset, nearest[i]);
       if (!improvesNearest && !improvesSingle)
       {
         continue;
       }
       const double d = OffsetDistance(targets.Polygons, piece.Vertices[i], t, offset);
-      if (d < nearest[i])
+      if (NearerThan(d, t, nearest[i], nearestTarget[i]))
       {
         nearest[i] = d;
         nearestTarget[i] = t;
@@ -721,7 +869,7 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
     visit(inReach.front().second);
     for (auto e = inReach.begin() + 1; e != inReach.end(); ++e)
     {
-      if (CloserThan(e->first, targets.template OffsetOf<WithOffsets>(e->second), largest()))
+      if (WithinOf(e->first, targets.template OffsetOf<WithOffsets>(e->second), largest()))
       {
         visit(e->second);
       }
@@ -734,7 +882,8 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
     piece.Nearest[i] = nearest[i];
   }
   piece.NearestTarget = nearestTarget;
-  const double upper = std::min(single, vertexMax + CoveringRadius(piece.Vertices)); // (of g)
+  const double upper = WithMixedTargets(
+    std::min({ single, vertexMax + CoveringRadius(piece.Vertices), parentUpperOfG }), piece, settle, targets); // (of g)
   piece.UpperOfG = upper;
   piece.Upper = upper + piece.Offset;
   piece.SingleTarget = singleTarget;
@@ -798,7 +947,7 @@ void EvaluateInHierarchy(Piece& piece, std::size_t, std::size_t, double parentUp
     ? std::make_pair(HUGE_VAL, SingleTargetWitness::None)
     : targets.Hierarchy->BestSingle(piece.Vertices, std::min(viaCorners, parentUpperOfG), piece.NearestTarget,
         targets.Polygons, firstWithin, piece.Offset);
-  piece.UpperOfG = std::min(piece.Single, viaCorners);
+  piece.UpperOfG = WithMixedTargets(std::min({ piece.Single, viaCorners, parentUpperOfG }), piece, settle, targets);
   piece.Upper = piece.UpperOfG + piece.Offset;
   lower = std::max(lower, vertexMax == HUGE_VAL ? 0.0 : vertexMax + piece.Offset);
   piece.First = targets.Arena.size();

@@ -15,7 +15,21 @@
 //   shape, so a thin piece is bounded by about half its length, not by the
 //   two thirds the centroid's farthest vertex would give):
 //   max over T of d(., B) <= max_i d(v_i, B) + R. (2)
-// A piece's upper bound is the smaller of (1) and (2); the exact distances at
+// - Where the nearest Q_j changes across T (T over a valley or a ridge of B),
+//   (1) with any one Q_j is far above the distance, and (2) is the piece's
+//   size: a mixture of targets does better. For targets Q_a (those nearest
+//   to T's vertices) and weights mu_a >= 0 summing to 1, at x of T with
+//   barycentric coordinates lambda_i(x),
+//     d(x, B) <= min_a d(x, Q_a) <= sum_a mu_a d(x, Q_a)
+//             <= sum_a mu_a sum_i lambda_i(x) d(v_i, Q_a)   (each convex)
+//             <= max_i sum_a mu_a d(v_i, Q_a),                          (3)
+//   a bound for any weights (pure weights give (1) with one Q_a); the least
+//   over them is the value of the matrix game D_ai = d(v_i, Q_a)
+//   (LeastMixedMaximum), which is the exact maximum of the distance where it
+//   is affine on T in each Q_a (T over the planes of two or three polygons):
+//   a piece straddling a valley of B settles without being split.
+// A piece's upper bound is the smallest of (1), (2) and (3); (3) is sought
+// only where (2) does not settle the piece (below). The exact distances at
 // its vertices, max_i d(v_i, B), are lower bounds of h. The largest upper
 // bound is split into four (edge midpoints) until it is within `enough` (and
 // `giveUp`), or within 10 % of the best lower bound and `giveUp`, or the lower
@@ -27,9 +41,10 @@
 // Offsets (the per-chord composition of MeshCellError.h). With an offset o_s
 // per source triangle and p_t per target, what is bounded is
 //   max over sources s, x in s of  o_s + g(x),  g(x) = min_t ( d(x, Q_t) + p_t ).
-// Both facts survive: each d(., Q_t) + p_t is convex, so over a piece g <=
-// min_t max_i ( d(v_i, Q_t) + p_t ) (1); g is a minimum of 1-Lipschitz
-// functions, hence 1-Lipschitz, so g <= max_i g(v_i) + R (2). A target whose
+// The facts survive: each d(., Q_t) + p_t is convex, so over a piece g <=
+// min_t max_i ( d(v_i, Q_t) + p_t ) (1), and (3) holds with d(., Q_a) + p_a
+// for d(., Q_a); g is a minimum of 1-Lipschitz functions, hence 1-Lipschitz,
+// so g <= max_i g(v_i) + R (2). A target whose
 // box distance plus p_t exceeds a piece's bound of g cannot be the minimum at
 // any of its points and is dropped as before. Lower is then attained by
 // o_s + g, not by the distance itself. With no offsets (zeros) every
@@ -95,6 +110,16 @@ namespace tpc
 
 /// max over the triangle of the distance to its nearest vertex (rounded up).
 double CoveringRadius(const std::array<Vec3, 3>& triangle);
+
+/// Bound (3) of the header for `targets` (1 to 3) rows of `distances`, row
+/// a holding d(v_i, Q_a) (offsets included; >= 0 or +inf, never NaN:
+/// OffsetDistance) at the piece's vertices i: the
+/// least over weights mu (>= 0, summing to 1) of max_i sum_a mu_a
+/// distances[a][i] - the value of that matrix game, attained at a vertex of
+/// the weights' arrangement, which are all tried - rounded up. An upper bound
+/// of min_a sum_i lambda_i distances[a][i] for every lambda of the simplex,
+/// and at most min_a max_i distances[a][i] (bound (1) over those rows).
+double LeastMixedMaximum(const std::array<std::array<double, 3>, 3>& distances, int targets);
 
 using SourceTriangle = std::array<Vec3, 3>;
 
