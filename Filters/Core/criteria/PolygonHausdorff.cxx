@@ -742,7 +742,8 @@ bool SettledByKnownTarget(Piece& piece, std::uint32_t guess, double settle, cons
   return false;
 }
 
-/// The piece's bound ((1) and (2) of the header; its source's offset added)
+/// The piece's bound ((1), (2) and (3) of the header, the parent's where
+/// lower; its source's offset added)
 /// from the targets among the candidates (`count` entries of the arena from
 /// `first`) that may be nearest to one of its points (box distance plus
 /// offset within the parent's bound of g, `parentUpperOfG`); raises `lower`
@@ -915,10 +916,13 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
 ///   nearest to a point of the piece);
 /// - the single-target bound (1) is searched below (2) and below the
 ///   parent's bound of g `parentUpperOfG` only: the piece's bound is the
-///   smaller of (1) and (2), and the caller keeps the parent's where that is
-///   lower (OneSidedHausdorff: a child lies in its parent). Over every target
-///   rather than the candidates - a target left out of them is farther than
-///   the parent's bound from the piece, so its (1) is above that bound too.
+///   smallest of (1), (2) and the parent's (a child lies in its parent),
+///   then (3) where that does not settle it (WithMixedTargets). Over every
+///   target rather than the candidates - a target left out of them is
+///   farther than the parent's bound from the piece, so its (1) is above
+///   that bound too;
+/// - the vertices' nearest targets, on which (3) is built, are named alike
+///   (NearerThan).
 /// A piece that settles settles with the first bound found within
 /// FirstBoundWithin, (2) where that is within it (header: Settled pieces).
 /// The shortcut and `lower` are Evaluate's; no candidates are kept, settled

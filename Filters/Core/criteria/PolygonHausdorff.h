@@ -3,7 +3,7 @@
 // where a mesh is the surface, MeshCellError.h).
 //
 // h(A, B) = max over a in A of d(a, B), B = union of convex polygons Q_j.
-// Branch and bound over A's triangles (sources), which rests on two facts:
+// Branch and bound over A's triangles (sources), which rests on three facts:
 // - d(., Q) is convex for one convex Q, so over a triangle T its maximum is at
 //   T's vertices: max over T of d(., B) <= min_j max_i d(v_i, Q_j). (1)
 //   (d(., B) itself is a minimum of convex functions and is not convex: the
@@ -28,8 +28,9 @@
 //   (LeastMixedMaximum), which is the exact maximum of the distance where it
 //   is affine on T in each Q_a (T over the planes of two or three polygons):
 //   a piece straddling a valley of B settles without being split.
-// A piece's upper bound is the smallest of (1), (2) and (3); (3) is sought
-// only where (2) does not settle the piece (below). The exact distances at
+// A piece's upper bound is the smallest of (1), (2), its parent's and, where
+// those do not settle it, (3) (PolygonHausdorff.cxx, WithMixedTargets; the
+// corners' nearest targets are named alike by every search: NearerThan). The exact distances at
 // its vertices, max_i d(v_i, B), are lower bounds of h. The largest upper
 // bound is split into four (edge midpoints) until it is within `enough` (and
 // `giveUp`), or within 10 % of the best lower bound and `giveUp`, or the lower
