@@ -241,6 +241,29 @@ Vec3 Edge(const PointSpan& p, std::size_t i)
   return p[(i + 1) % p.size()] - p[i];
 }
 
+/// The least and largest Dot(axis, x) over the corners `p`.
+void ExtentAlong(const Vec3& axis, const PointSpan& p, double& lo, double& hi)
+{
+  lo = HUGE_VAL;
+  hi = -HUGE_VAL;
+  for (const Vec3& x : p)
+  {
+    const double d = Dot(axis, x);
+    lo = std::min(lo, d);
+    hi = std::max(hi, d);
+  }
+}
+
+/// Whether the projections of `q` on `axis`, of length `length`, and [pLo,
+/// pHi], p's, are more than `margin` times `length` apart.
+bool ApartAlong(const Vec3& axis, double length, double pLo, double pHi, const PointSpan& q, double margin)
+{
+  double qLo, qHi;
+  ExtentAlong(axis, q, qLo, qHi);
+  const double gap = margin * length;
+  return qLo - pHi > gap || pLo - qHi > gap;
+}
+
 /// Whether the projections of `p` and `q` on `axis` are more than `margin`
 /// times |axis| apart.
 bool ApartAlong(const Vec3& axis, const PointSpan& p, const PointSpan& q, double margin)
@@ -250,27 +273,17 @@ bool ApartAlong(const Vec3& axis, const PointSpan& p, const PointSpan& q, double
   {
     return false;
   }
-  double pLo = HUGE_VAL, pHi = -HUGE_VAL, qLo = HUGE_VAL, qHi = -HUGE_VAL;
-  for (const Vec3& x : p)
-  {
-    const double d = Dot(axis, x);
-    pLo = std::min(pLo, d);
-    pHi = std::max(pHi, d);
-  }
-  for (const Vec3& x : q)
-  {
-    const double d = Dot(axis, x);
-    qLo = std::min(qLo, d);
-    qHi = std::max(qHi, d);
-  }
-  const double gap = margin * length;
-  return qLo - pHi > gap || pLo - qHi > gap;
+  double pLo, pHi;
+  ExtentAlong(axis, p, pLo, pHi);
+  return ApartAlong(axis, length, pLo, pHi, q, margin);
 }
 
-/// Whether the normals of `p` and `q` separate them by more than `margin`.
-bool NormalsApart(const PointSpan& p, const PointSpan& q, double margin)
+/// Whether the normals of `p` (prepared) and `q` separate them by more than
+/// `margin`.
+bool NormalsApart(const PolygonOnItsNormal& p, const PointSpan& q, double margin)
 {
-  return ApartAlong(NewellVector(p), p, q, margin) || ApartAlong(NewellVector(q), p, q, margin);
+  return (p.Length > 0.0 && ApartAlong(p.Normal, p.Length, p.Lo, p.Hi, q, margin)) ||
+    ApartAlong(NewellVector(q), p.Points, q, margin);
 }
 
 /// Whether the cross product of an edge of `p` and one of `q` separates them
@@ -306,16 +319,32 @@ bool PolygonsApart(const PointSpan& p, const PointSpan& q, double margin)
       return true;
     }
   }
-  return NormalsApart(p, q, margin) || EdgeCrossProductsApart(p, q, margin);
+  return NormalsApart(OnItsNormal(p), q, margin) || EdgeCrossProductsApart(p, q, margin);
+}
+
+PolygonOnItsNormal OnItsNormal(const PointSpan& p)
+{
+  PolygonOnItsNormal prepared;
+  prepared.Points = p;
+  prepared.Normal = NewellVector(p);
+  prepared.Length = Norm(prepared.Normal);
+  ExtentAlong(prepared.Normal, p, prepared.Lo, prepared.Hi);
+  return prepared;
 }
 
 bool PolygonsApartBesideTheirBoxes(const PointSpan& p, const ConvexPolygon& q, double margin)
 {
+  return PolygonsApartBesideTheirBoxes(OnItsNormal(p), q, margin);
+}
+
+bool PolygonsApartBesideTheirBoxes(const PolygonOnItsNormal& prepared, const ConvexPolygon& q, double margin)
+{
+  const PointSpan& p = prepared.Points;
   if (p.empty() || q.Points.empty())
   {
     return true;
   }
-  if (NormalsApart(p, q.Points, margin))
+  if (NormalsApart(prepared, q.Points, margin))
   {
     return true;
   }

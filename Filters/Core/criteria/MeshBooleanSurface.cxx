@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 namespace tpc
@@ -66,12 +67,21 @@ int NearPolygons(const PointSpan& corners, std::size_t leaf, const std::vector<P
     reach.hi[a] += margin;
   }
   int near = 0;
+  std::optional<PolygonOnItsNormal> piece; // (once a polygon is in reach)
   for (std::size_t j = 0; j < meshSurfaces.size() && near < 2; ++j)
   {
     const PolygonSet& other = meshSurfaces[j];
     for (std::size_t r = 0; j != leaf && r < other.size() && near < 2; ++r)
     {
-      if (other.Bounds(r).Overlaps(reach) && !PolygonsApartBesideTheirBoxes(corners, other[r], margin))
+      if (!other.Bounds(r).Overlaps(reach))
+      {
+        continue;
+      }
+      if (!piece)
+      {
+        piece = OnItsNormal(corners);
+      }
+      if (!PolygonsApartBesideTheirBoxes(*piece, other[r], margin))
       {
         nearest = near == 0 ? std::make_pair(j, r) : nearest;
         ++near;
