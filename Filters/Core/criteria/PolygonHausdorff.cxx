@@ -39,7 +39,8 @@ struct Piece
   double UpperOfG = HUGE_VAL; ///< of g on the piece (header: Offsets)
   double Offset = 0.0;        ///< its source triangle's offset
   /// The target of the single-target bound (1), and that bound of g (in
-  /// EvaluateInHierarchy: only where below bound (2), else +inf and None).
+  /// EvaluateInHierarchy: only where below bound (2) and the parent's,
+  /// else +inf and None).
   std::uint32_t SingleTarget = SingleTargetWitness::None;
   double Single = HUGE_VAL;
   /// g at its vertices where known (+inf where not yet): each is the
@@ -107,6 +108,73 @@ double CoveringRadius(const SourceTriangle& t)
   return radius * (1.0 + 1e-12);
 }
 
+namespace
+{
+/// max_i sum_a mu_a distances[a][i] over `targets` rows, or +inf where the
+/// weights `mu` are not >= 0 and summing to 1 within 1e-13 (a weight of zero
+/// is left out: 0 x inf would be NaN). The check is what makes any weights
+/// computed below safe to try: rounding leaves a sum a few ulps from 1, which
+/// LeastMixedMaximum's factor covers, but an overflow could leave weights of
+/// zero - a bound of 0.
+double AtWeights(const std::array<std::array<double, 3>, 3>& distances, int targets, const std::array<double, 3>& mu)
+{
+  double total = 0.0;
+  for (int a = 0; a < targets; ++a)
+  {
+    if (!(mu[a] >= 0.0))
+    {
+      return HUGE_VAL;
+    }
+    total += mu[a];
+  }
+  if (!(std::fabs(total - 1.0) <= 1e-13))
+  {
+    return HUGE_VAL;
+  }
+  double worst = 0.0;
+  for (int i = 0; i < 3; ++i)
+  {
+    double sum = 0.0;
+    for (int a = 0; a < targets; ++a)
+    {
+      sum += mu[a] > 0.0 ? mu[a] * distances[a][i] : 0.0;
+    }
+    worst = std::max(worst, sum);
+  }
+  return worst;
+}
+
+/// The weights on rows a and b alone where corners i and j's sums are equal:
+/// alpha D_ai + (1 - alpha) D_bi = alpha D_aj + (1 - alpha) D_bj (NaN weights
+/// where both sides are infinite, which AtWeights refuses).
+std::array<double, 3> TwoRowsEqualizing(
+  const std::array<std::array<double, 3>, 3>& distances, int a, int b, int i, int j)
+{
+  const double slope = (distances[a][i] - distances[b][i]) - (distances[a][j] - distances[b][j]);
+  const double alpha = (distances[b][j] - distances[b][i]) / slope;
+  std::array<double, 3> mu{ 0.0, 0.0, 0.0 };
+  mu[a] = alpha;
+  mu[b] = 1.0 - alpha;
+  return mu;
+}
+
+/// The weights on three rows where all three corners' sums are equal:
+/// mu . (D_0 - D_1) = mu . (D_1 - D_2) = 0 over the columns D_i, and sum mu
+/// = 1, so mu is the cross product of those differences scaled to sum 1.
+/// (Infinite entries, a zero or an overflowing sum give weights AtWeights
+/// refuses.)
+std::array<double, 3> ThreeRowsEqualizing(const std::array<std::array<double, 3>, 3>& distances)
+{
+  const auto difference = [&](int i, int j) {
+    return Vec3(distances[0][i] - distances[0][j], distances[1][i] - distances[1][j],
+      distances[2][i] - distances[2][j]);
+  };
+  const Vec3 n = Cross(difference(0, 1), difference(1, 2));
+  const double sum = n[0] + n[1] + n[2];
+  return { n[0] / sum, n[1] / sum, n[2] / sum };
+}
+} // namespace
+
 double LeastMixedMaximum(const std::array<std::array<double, 3>, 3>& distances, int targets)
 {
   // The least over the weights' simplex of a maximum of three affine
@@ -114,21 +182,9 @@ double LeastMixedMaximum(const std::array<std::array<double, 3>, 3>& distances, 
   // weight (bound (1) with that row), a point of an edge of the simplex
   // where two corners' sums are equal, or one inside where all three are;
   // each is tried. Weights that rounding leaves a little off still prove a
-  // bound (the header's chain holds for any): only their sum must be 1, which
-  // the factor at the end covers, with the sums' own roundings.
-  const auto atWeights = [&](const std::array<double, 3>& mu) {
-    double worst = 0.0;
-    for (int i = 0; i < 3; ++i)
-    {
-      double sum = 0.0;
-      for (int a = 0; a < targets; ++a)
-      {
-        sum += mu[a] > 0.0 ? mu[a] * distances[a][i] : 0.0; // (0 x inf left out)
-      }
-      worst = std::max(worst, sum);
-    }
-    return worst;
-  };
+  // bound (the header's chain holds for any that are >= 0 and sum to 1:
+  // AtWeights checks), and the factor at the end covers their sum's few
+  // ulps and the sums' own roundings.
   double best = HUGE_VAL;
   for (int a = 0; a < targets; ++a)
   {
@@ -139,39 +195,14 @@ double LeastMixedMaximum(const std::array<std::array<double, 3>, 3>& distances, 
       {
         for (int j = i + 1; j < 3; ++j)
         {
-          // alpha D_ai + (1 - alpha) D_bi = alpha D_aj + (1 - alpha) D_bj
-          // (NaN where both sides are infinite: not tried).
-          const double slope = (distances[a][i] - distances[b][i]) - (distances[a][j] - distances[b][j]);
-          const double alpha = (distances[b][j] - distances[b][i]) / slope;
-          if (alpha > 0.0 && alpha < 1.0)
-          {
-            std::array<double, 3> mu{ 0.0, 0.0, 0.0 };
-            mu[a] = alpha;
-            mu[b] = 1.0 - alpha;
-            best = std::min(best, atWeights(mu));
-          }
+          best = std::min(best, AtWeights(distances, targets, TwoRowsEqualizing(distances, a, b, i, j)));
         }
       }
     }
   }
   if (targets == 3)
   {
-    // All three corners' sums equal: mu . (D_0 - D_1) = mu . (D_1 - D_2) = 0
-    // over the columns D_i, and sum mu = 1, so mu is u x w scaled to sum 1
-    // (u, w those differences); tried where no weight is negative (where
-    // the sum is 0 a weight is -inf or NaN, and infinite entries give NaN:
-    // not tried).
-    const auto difference = [&](int i, int j) {
-      return Vec3(distances[0][i] - distances[0][j], distances[1][i] - distances[1][j],
-        distances[2][i] - distances[2][j]);
-    };
-    const Vec3 n = Cross(difference(0, 1), difference(1, 2));
-    const double sum = n[0] + n[1] + n[2];
-    const std::array<double, 3> mu{ n[0] / sum, n[1] / sum, n[2] / sum };
-    if (mu[0] >= 0.0 && mu[1] >= 0.0 && mu[2] >= 0.0)
-    {
-      best = std::min(best, atWeights(mu));
-    }
+    best = std::min(best, AtWeights(distances, targets, ThreeRowsEqualizing(distances)));
   }
   return best * (1.0 + 1e-12);
 }
@@ -281,23 +312,29 @@ bool CloserThan(double distance2, double offset, double limit)
   return room > 0.0 && distance2 < room * room;
 }
 
-/// Whether sqrt(distance2) + offset <= limit.
-bool WithinOf(double distance2, double offset, double limit)
-{
-  const double room = limit - offset;
-  return room >= 0.0 && distance2 <= room * room;
-}
-
 /// Whether target t at offset distance d is nearer than `best`, attained at
 /// `bestTarget`: among equally near targets the lowest-numbered wins, so
 /// that the target a search names as a point's nearest does not depend on
-/// the order it visits them in (every search visits the targets whose box
-/// is within - not only below - the best distance): bound (3) is built on
-/// the corners' nearest targets, and a corner above an edge or a vertex of
-/// S_C is equally near to the polygons sharing it.
+/// the order it visits them in: bound (3) is built on the corners' nearest
+/// targets, and a corner above an edge or a vertex of S_C is equally near to
+/// the polygons sharing it. For that every search for a nearest target
+/// measures each target that may be as near as the best (MayBeAsNear).
 bool NearerThan(double d, std::uint32_t t, double best, std::uint32_t bestTarget)
 {
   return d < best || (d == best && d < HUGE_VAL && t < bestTarget);
+}
+
+/// Whether sqrt(distance2) + offset <= limit, with room for rounding: the
+/// searches of a nearest target must measure every target as near as the
+/// best (NearerThan), and one whose box distance is its distance (a point
+/// beyond an axis-aligned edge) ties it exactly, while the square of a
+/// rounded square root falls below the square it was taken of about one
+/// time in four. (Also where candidates are kept for a piece's children:
+/// a superset by at most that rounding.)
+bool MayBeAsNear(double distance2, double offset, double limit)
+{
+  const double room = (limit - offset) * (1.0 + 1e-12);
+  return room >= 0.0 && distance2 <= room * room;
 }
 
 /// d(p, Q_t) + offset, or +inf where that is not a number (a NaN
@@ -362,7 +399,7 @@ public:
     while (top > 0)
     {
       const Node& node = this->Nodes[stack[--top]];
-      if (!WithinOf(node.Box.Distance2(p), node.MinOffset, best))
+      if (!MayBeAsNear(node.Box.Distance2(p), node.MinOffset, best))
       {
         continue;
       }
@@ -372,7 +409,7 @@ public:
         {
           const std::uint32_t t = this->Order[k];
           const double offset = this->OffsetOf(t);
-          if (WithinOf((*this->Boxes)[t].Distance2(p), offset, best))
+          if (MayBeAsNear((*this->Boxes)[t].Distance2(p), offset, best))
           {
             const double d = OffsetDistance(polygons, p, t, offset);
             if (NearerThan(d, t, best, bestTarget))
@@ -589,6 +626,8 @@ struct Targets
   {
     return WithOffsets ? (*this->Offsets)[t] : 0.0;
   }
+  /// Target t's offset, where the targets may or may not have offsets.
+  double OffsetOf(std::uint32_t t) const { return this->Offsets ? (*this->Offsets)[t] : 0.0; }
 };
 
 /// Settles `piece` with the single-target bound (1) `single` of g, attained
@@ -630,7 +669,7 @@ bool SettledByCommonNearest(Piece& piece, double settle, const Targets& targets,
 /// nearest to (their distances known; the others measured), or +inf where
 /// those are fewer than two (then (3) is (1) with that target, which the
 /// search finds anyway) or a corner's nearest is not known.
-double MixedTargetsBound(const Piece& piece, double below, const Targets& targets)
+double MixedTargetsBound(const Piece& piece, const Targets& targets)
 {
   std::array<std::uint32_t, 3> rows;
   int count = 0;
@@ -652,29 +691,14 @@ double MixedTargetsBound(const Piece& piece, double below, const Targets& target
   std::array<std::array<double, 3>, 3> distances;
   for (int a = 0; a < count; ++a)
   {
-    const double offset = targets.Offsets ? (*targets.Offsets)[rows[a]] : 0.0;
     for (int i = 0; i < 3; ++i)
     {
       distances[a][i] = piece.NearestTarget[i] == rows[a]
         ? piece.Nearest[i]
-        : OffsetDistance(targets.Polygons, piece.Vertices[i], rows[a], offset);
+        : OffsetDistance(targets.Polygons, piece.Vertices[i], rows[a], targets.OffsetOf(rows[a]));
     }
   }
-  // (No weights give less than the corners' least distances over the rows,
-  // max_i min_a D_ai: where that is not below the bound the piece has, the
-  // weights are not sought - most pieces of a smooth S_C, where (3) is
-  // rarely lower than (1).)
-  double floor = 0.0;
-  for (int i = 0; i < 3; ++i)
-  {
-    double least = distances[0][i];
-    for (int a = 1; a < count; ++a)
-    {
-      least = std::min(least, distances[a][i]);
-    }
-    floor = std::max(floor, least);
-  }
-  return floor < below ? LeastMixedMaximum(distances, count) : HUGE_VAL;
+  return LeastMixedMaximum(distances, count);
 }
 
 /// A piece's bound of g from (1), (2) and its parent's (a child lies in its
@@ -683,14 +707,14 @@ double MixedTargetsBound(const Piece& piece, double below, const Targets& target
 /// for nothing there. Over a valley or a ridge of S_C, where the nearest
 /// target changes across a piece, (3) is about the distance's maximum while
 /// (1) is a far corner's distance to the other side, and the piece settles
-/// instead of splitting. Evaluate and EvaluateInHierarchy both end with it
-/// on the same `upper` (EvaluateInHierarchy: with its parent's bound, (1)
-/// where the hierarchy's search leaves out is the same), so their bounds
-/// stay the same. (Computing (3) before the hierarchy's search for (1), to
+/// instead of splitting. Evaluate and EvaluateInHierarchy both end with it,
+/// on the same `upper` in exact arithmetic (the hierarchy's search leaves
+/// out only a (1) at least (2) or the parent's bound, which the minimum
+/// takes instead), so their bounds stay the same. (Computing (3) before the hierarchy's search for (1), to
 /// skip or narrow it, cost more than it saved: armadillo at 1/128, 1 %.)
 double WithMixedTargets(double upper, const Piece& piece, double settle, const Targets& targets)
 {
-  return upper + piece.Offset <= settle ? upper : std::min(upper, MixedTargetsBound(piece, upper, targets));
+  return upper + piece.Offset <= settle ? upper : std::min(upper, MixedTargetsBound(piece, targets));
 }
 
 /// A piece settled without a search (header: Known targets) by a target one
@@ -725,7 +749,7 @@ bool SettledByKnownTarget(Piece& piece, std::uint32_t guess, double settle, cons
     {
       continue;
     }
-    const double offset = targets.Offsets ? (*targets.Offsets)[t] : 0.0;
+    const double offset = targets.OffsetOf(t);
     double worst = 0.0;
     for (int i = 0; i < 3 && worst + piece.Offset <= limit; ++i)
     {
@@ -784,7 +808,7 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
   {
     const std::uint32_t t = arena[k];
     const double d2 = BoxDistance2(box, targets.Boxes[t]);
-    if (WithinOf(d2, targets.template OffsetOf<WithOffsets>(t), reach))
+    if (MayBeAsNear(d2, targets.template OffsetOf<WithOffsets>(t), reach))
     {
       inReach.emplace_back(d2, t);
     }
@@ -816,13 +840,13 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
     double farthest = 0.0;
     for (int i = 0; i < 3; ++i)
     {
-      const bool improvesNearest = !known[i] && WithinOf(boxDistance2Of[i], offset, nearest[i]);
+      const bool improvesNearest = !known[i] && MayBeAsNear(boxDistance2Of[i], offset, nearest[i]);
       if (!improvesNearest && !improvesSingle)
       {
         continue;
       }
       const double d = OffsetDistance(targets.Polygons, piece.Vertices[i], t, offset);
-      if (NearerThan(d, t, nearest[i], nearestTarget[i]))
+      if (!known[i] && NearerThan(d, t, nearest[i], nearestTarget[i]))
       {
         nearest[i] = d;
         nearestTarget[i] = t;
@@ -870,7 +894,7 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
     visit(inReach.front().second);
     for (auto e = inReach.begin() + 1; e != inReach.end(); ++e)
     {
-      if (WithinOf(e->first, targets.template OffsetOf<WithOffsets>(e->second), largest()))
+      if (MayBeAsNear(e->first, targets.template OffsetOf<WithOffsets>(e->second), largest()))
       {
         visit(e->second);
       }
@@ -899,7 +923,7 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
   }
   for (const auto& [boxDistance2, t] : inReach)
   {
-    if (WithinOf(boxDistance2, targets.template OffsetOf<WithOffsets>(t), upper))
+    if (MayBeAsNear(boxDistance2, targets.template OffsetOf<WithOffsets>(t), upper))
     {
       arena.push_back(t);
     }
@@ -1165,7 +1189,8 @@ HausdorffEstimate OneSidedHausdorff(const std::vector<SourceTriangle>& sources,
         g[child[i]] = piece.Nearest[i];
         nearestTarget[child[i]] = piece.NearestTarget[i];
       }
-      // (The child lies in its parent.)
+      // (The child lies in its parent: Evaluate's bound takes the parent's
+      // where lower, but not its shortcut, SettledByCommonNearest.)
       piece.UpperOfG = std::min(piece.UpperOfG, parent.UpperOfG);
       piece.Upper = std::min(piece.Upper, parent.Upper);
       keep(piece);

@@ -26,12 +26,13 @@
 //   a bound for any weights (pure weights give (1) with one Q_a); the least
 //   over them is the value of the matrix game D_ai = d(v_i, Q_a)
 //   (LeastMixedMaximum), which is the exact maximum of the distance where it
-//   is affine on T in each Q_a (T over the planes of two or three polygons):
-//   a piece straddling a valley of B settles without being split.
+//   is affine on T in each Q_a and no other target is nearer (T over the
+//   planes of two or three polygons): a piece straddling a valley of B
+//   settles without being split.
 // A piece's upper bound is the smallest of (1), (2), its parent's and, where
 // those do not settle it, (3) (PolygonHausdorff.cxx, WithMixedTargets; the
-// corners' nearest targets are named alike by every search: NearerThan). The exact distances at
-// its vertices, max_i d(v_i, B), are lower bounds of h. The largest upper
+// corners' nearest targets are named alike by every search: NearerThan).
+// The exact distances at its vertices, max_i d(v_i, B), are lower bounds of h. The largest upper
 // bound is split into four (edge midpoints) until it is within `enough` (and
 // `giveUp`), or within 10 % of the best lower bound and `giveUp`, or the lower
 // bound exceeds `giveUp`, or the budget of pieces is spent; the largest remaining upper bound is returned
@@ -57,7 +58,7 @@
 // g at a vertex as the least distance over every target, the single-target
 // bound (1) only below (2) and the parent's bound. The same bound in exact arithmetic - a target
 // outside a piece's candidates is farther from it than its parent's bound,
-// which a child keeps when lower - and, computed, bit for bit on the tests
+// which both take where lower - and, computed, bit for bit on the tests
 // and scenes compared (PolygonHausdorff.cxx, EvaluateInHierarchy). Where
 // witnesses are asked for, the candidates are scanned as before.
 //
@@ -119,7 +120,8 @@ double CoveringRadius(const std::array<Vec3, 3>& triangle);
 /// distances[a][i] - the value of that matrix game, attained at a vertex of
 /// the weights' arrangement, which are all tried - rounded up. An upper bound
 /// of min_a sum_i lambda_i distances[a][i] for every lambda of the simplex,
-/// and at most min_a max_i distances[a][i] (bound (1) over those rows).
+/// and at most min_a max_i distances[a][i] (bound (1) over those rows)
+/// times 1 + 1e-12.
 double LeastMixedMaximum(const std::array<std::array<double, 3>, 3>& distances, int targets);
 
 using SourceTriangle = std::array<Vec3, 3>;
@@ -149,7 +151,7 @@ struct DistanceOffsets
 struct SingleTargetWitness
 {
   static constexpr std::uint32_t None = ~std::uint32_t{ 0 };
-  std::uint32_t Target = None; ///< None: not settled so (split, or by (2))
+  std::uint32_t Target = None; ///< None: not settled so (split, or by (2), (3) or the parent's)
   double Bound = 0.0;
 };
 
