@@ -710,8 +710,9 @@ double MixedTargetsBound(const Piece& piece, const Targets& targets)
 /// instead of splitting. Evaluate and EvaluateInHierarchy both end with it,
 /// on the same `upper` in exact arithmetic (the hierarchy's search leaves
 /// out only a (1) at least (2) or the parent's bound, which the minimum
-/// takes instead), so their bounds stay the same. (Computing (3) before the hierarchy's search for (1), to
-/// skip or narrow it, cost more than it saved: armadillo at 1/128, 1 %.)
+/// takes instead), so their bounds stay the same. (Computing (3) before the
+/// hierarchy's search for (1), to skip or narrow it, cost more than it
+/// saved: armadillo at 1/128, 1 %.)
 double WithMixedTargets(double upper, const Piece& piece, double settle, const Targets& targets)
 {
   return upper + piece.Offset <= settle ? upper : std::min(upper, MixedTargetsBound(piece, targets));
@@ -907,8 +908,8 @@ void Evaluate(Piece& piece, std::size_t first, std::size_t count, double parentU
     piece.Nearest[i] = nearest[i];
   }
   piece.NearestTarget = nearestTarget;
-  const double upper = WithMixedTargets(
-    std::min({ single, vertexMax + CoveringRadius(piece.Vertices), parentUpperOfG }), piece, settle, targets); // (of g)
+  const double upper = WithMixedTargets( // (of g)
+    std::min({ single, vertexMax + CoveringRadius(piece.Vertices), parentUpperOfG }), piece, settle, targets);
   piece.UpperOfG = upper;
   piece.Upper = upper + piece.Offset;
   piece.SingleTarget = singleTarget;

@@ -32,11 +32,12 @@
 // A piece's upper bound is the smallest of (1), (2), its parent's and, where
 // those do not settle it, (3) (PolygonHausdorff.cxx, WithMixedTargets; the
 // corners' nearest targets are named alike by every search: NearerThan).
-// The exact distances at its vertices, max_i d(v_i, B), are lower bounds of h. The largest upper
-// bound is split into four (edge midpoints) until it is within `enough` (and
-// `giveUp`), or within 10 % of the best lower bound and `giveUp`, or the lower
-// bound exceeds `giveUp`, or the budget of pieces is spent; the largest remaining upper bound is returned
-// (always an upper bound of h, however the loop ended). A polygon Q_j whose
+// The exact distances at its vertices, max_i d(v_i, B), are lower bounds of
+// h. The largest upper bound is split into four (edge midpoints) until it is
+// within `enough` (and `giveUp`), or within 10 % of the best lower bound and
+// `giveUp`, or the lower bound exceeds `giveUp`, or the budget of pieces is
+// spent; the largest remaining upper bound is returned (always an upper
+// bound of h, however the loop ended). A polygon Q_j whose
 // box is farther from a piece's box than the piece's upper bound cannot be the
 // nearest to any of its points and is dropped for the piece's sub-pieces.
 //

@@ -534,7 +534,8 @@ TEST(PolygonHausdorff, CornersEquallyNearToSeveralTargetsNameTheSameOneInEverySe
   std::vector<SourceTriangle> pieces;
   for (int k = 0; k < 60; ++k)
   {
-    pieces.push_back(k % 2 ? SourceTriangle{ beyond(), beyond(), over() } : SourceTriangle{ beyond(), over(), over() });
+    pieces.push_back(
+      k % 2 ? SourceTriangle{ beyond(), beyond(), over() } : SourceTriangle{ beyond(), over(), over() });
   }
   std::vector<double> o, p;
   RandomOffsets(rng, pieces.size(), faces.size(), o, p);
@@ -547,7 +548,8 @@ TEST(PolygonHausdorff, CornersEquallyNearToSeveralTargetsNameTheSameOneInEverySe
       for (const std::size_t budget : { std::size_t{ 1 }, std::size_t{ 16 }, std::size_t{ 4096 } })
       {
         std::vector<tpc::SingleTargetWitness> witnesses;
-        const tpc::HausdorffEstimate searched = tpc::OneSidedHausdorff({ piece }, faces, 0.0, HUGE_VAL, budget, offsets);
+        const tpc::HausdorffEstimate searched =
+          tpc::OneSidedHausdorff({ piece }, faces, 0.0, HUGE_VAL, budget, offsets);
         const tpc::HausdorffEstimate scanned =
           tpc::OneSidedHausdorff({ piece }, faces, 0.0, HUGE_VAL, budget, offsets, &witnesses);
         EXPECT_EQ(searched.Upper, scanned.Upper) << compared;
@@ -576,7 +578,9 @@ TEST(PolygonHausdorff, APieceOverAValleyIsBoundedWithoutBeingSplit)
   tpc::PolygonSet slopes; // (each slope one polygon)
   slopes.Add({ Vec3(-2, 0, 0), Vec3(2, 0, 0), Vec3(2, 2, 2 * slope), Vec3(-2, 2, 2 * slope) });
   slopes.Add({ Vec3(-2, 0, 0), Vec3(-2, -2, 2 * slope), Vec3(2, -2, 2 * slope), Vec3(2, 0, 0) });
-  const std::vector<SourceTriangle> piece = { { Vec3(-0.5, -0.4, 1.0), Vec3(0.5, -0.3, 1.05), Vec3(0.1, 0.45, 0.95) } };
+  const std::vector<SourceTriangle> piece = {
+    { Vec3(-0.5, -0.4, 1.0), Vec3(0.5, -0.3, 1.05), Vec3(0.1, 0.45, 0.95) }
+  };
   const Vec3 up1(0, -std::sin(angle), std::cos(angle)), up2(0, std::sin(angle), std::cos(angle));
   const auto least = [&](const Vec3& x) { return std::min(tpc::Dot(up1, x), tpc::Dot(up2, x)); };
   double exact = 0.0;
