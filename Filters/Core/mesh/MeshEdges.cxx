@@ -31,16 +31,19 @@ bool BuildEdgeTable(const Triangle* triangles, std::size_t count, std::vector<Ed
   }
   std::partial_sum(start.begin(), start.end(), start.begin());
   uses.resize(3 * count);
-  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+  // (Each vertex's uses filled from its start, which ends at the next one's;
+  // then the starts moved back up one place - no copy of them to fill from.)
   for (std::size_t t = 0; t < count; ++t)
   {
     for (int k = 0; k < 3; ++k)
     {
       const std::uint32_t from = triangles[t][k], to = triangles[t][(k + 1) % 3];
-      uses[fill[std::min(from, to)]++] = { EdgeKey(from, to), static_cast<std::uint32_t>(t), static_cast<std::uint8_t>(k),
+      uses[start[std::min(from, to)]++] = { EdgeKey(from, to), static_cast<std::uint32_t>(t), static_cast<std::uint8_t>(k),
         from < to };
     }
   }
+  std::copy_backward(start.begin(), start.end() - 1, start.end());
+  start[0] = 0;
   parallelFor(vertices, [&](std::size_t begin, std::size_t end) {
     for (std::size_t v = begin; v < end; ++v)
     {

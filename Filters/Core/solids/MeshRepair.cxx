@@ -82,39 +82,44 @@ std::uint64_t CoordinatesHash(const Vec3& p)
 void MergeCoincidentVertices(std::vector<Vec3>& points, std::vector<Triangle>& triangles, MeshRepairReport& r)
 {
   // Each vertex maps to the first (lowest index) vertex with its coordinates;
-  // the survivors keep their order.
-  const std::vector<std::uint32_t> representative = FirstOfEach(
+  // the survivors keep their order, moved down in place, and where nothing
+  // merges (most inputs) the triangles are left alone. (The copies this
+  // replaced were most of the step: on the benchmark machine each page first
+  // touched - a fault - costs about 11 us.)
+  std::vector<std::uint32_t> renamed = FirstOfEach(
     points.size(), [&](std::uint32_t v) { return CoordinatesHash(points[v]); },
     [&](std::uint32_t a, std::uint32_t b) {
       const Vec3 &p = points[a], &q = points[b];
       return p[0] == q[0] && p[1] == q[1] && p[2] == q[2];
     });
-  std::vector<std::uint32_t> remap(points.size());
-  std::vector<Vec3> merged;
+  std::uint32_t kept = 0;
   for (std::uint32_t v = 0; v < points.size(); ++v)
   {
-    if (representative[v] == v)
+    // (A representative comes first, so it is renamed before its copies.)
+    const std::uint32_t representative = renamed[v];
+    if (representative == v)
     {
-      remap[v] = static_cast<std::uint32_t>(merged.size());
-      merged.push_back(points[v]);
+      points[kept] = points[v];
+      renamed[v] = kept++;
     }
     else
     {
-      ++r.MergedVertices;
+      renamed[v] = renamed[representative];
     }
   }
-  for (std::uint32_t v = 0; v < points.size(); ++v)
+  r.MergedVertices += points.size() - kept;
+  if (kept == points.size())
   {
-    remap[v] = remap[representative[v]];
+    return;
   }
+  points.resize(kept);
   for (Triangle& t : triangles)
   {
     for (auto& v : t)
     {
-      v = remap[v];
+      v = renamed[v];
     }
   }
-  points.swap(merged);
 }
 
 bool Degenerate(const std::vector<Vec3>& P, const Triangle& t)
@@ -134,6 +139,14 @@ bool Degenerate(const std::vector<Vec3>& P, const Triangle& t)
   return true; // collinear in every projection: no area
 }
 
+/// A triangle's vertex ids in increasing order: the same for the triangles
+/// with the same three vertices.
+Triangle SortedIds(Triangle t)
+{
+  std::sort(t.begin(), t.end());
+  return t;
+}
+
 void DropDegenerateAndDuplicates(const std::vector<Vec3>& P, std::vector<Triangle>& triangles,
   const ParallelFor& parallelFor, MeshRepairReport& r)
 {
@@ -145,58 +158,60 @@ void DropDegenerateAndDuplicates(const std::vector<Vec3>& P, std::vector<Triangl
       degenerate[t] = Degenerate(P, triangles[t]) ? 1 : 0;
     }
   });
-  std::vector<Triangle> kept, ids; // (ids: each kept triangle's vertex ids in increasing order)
-  kept.reserve(triangles.size());
-  ids.reserve(triangles.size());
+  // Of the triangles with the same three vertices, the first is kept; a
+  // degenerate one equals none, so it stays out of the table. (The ids are
+  // sorted where they are compared: sorted copies of the triangles, and a
+  // copy of those kept, were a third of the step - pages first touched.)
+  const std::vector<std::uint32_t> first = FirstOfEach(
+    triangles.size(),
+    [&](std::uint32_t t) {
+      const Triangle ids = SortedIds(triangles[t]);
+      return MixIn(MixIn(MixIn(0, ids[0]), ids[1]), ids[2]);
+    },
+    [&](std::uint32_t a, std::uint32_t b) {
+      return !degenerate[a] && !degenerate[b] && SortedIds(triangles[a]) == SortedIds(triangles[b]);
+    });
+  std::size_t kept = 0;
   for (std::size_t t = 0; t < triangles.size(); ++t)
   {
     if (degenerate[t])
     {
       ++r.DegenerateTriangles;
-      continue;
     }
-    Triangle s = triangles[t];
-    std::sort(s.begin(), s.end());
-    ids.push_back(s);
-    kept.push_back(triangles[t]);
-  }
-  // Of the triangles with the same three vertices, the first is kept.
-  const std::vector<std::uint32_t> first = FirstOfEach(
-    kept.size(), [&](std::uint32_t t) { return MixIn(MixIn(MixIn(0, ids[t][0]), ids[t][1]), ids[t][2]); },
-    [&](std::uint32_t a, std::uint32_t b) { return ids[a] == ids[b]; });
-  triangles.clear();
-  for (std::size_t i = 0; i < kept.size(); ++i)
-  {
-    if (first[i] == i)
-    {
-      triangles.push_back(kept[i]);
-    }
-    else
+    else if (first[t] != t)
     {
       ++r.DuplicateTriangles;
     }
+    else
+    {
+      triangles[kept++] = triangles[t];
+    }
   }
+  triangles.resize(kept);
 }
 
-/// Across the edge from corner k of a triangle to the next, if that edge is
-/// manifold: the triangle on the other side and whether the two walk the
-/// edge the same way (one of them must then be flipped). One per corner, in
-/// one array (a list per triangle was an allocation per triangle: a fifth of
-/// the orientation step on armadillo).
-struct Across
+/// Across the edge from corner k of each triangle to the next, where that
+/// edge is manifold: the triangle on the other side (else None, as
+/// MeshSolid::Across answers), and whether the two walk the edge the same
+/// way (one of them must then be flipped), bit k of the triangle's
+/// SameDirection. (Kept apart, the triangles across are the neighbours
+/// RepairIntoSolid hands on, not copied out of a per-corner record.)
+struct EdgeAdjacency
 {
   static constexpr std::uint32_t None = UINT32_MAX;
-  std::uint32_t Triangle = None;
-  bool SameDirection = false;
+  std::vector<Triangle> Across;
+  std::vector<std::uint8_t> SameDirection;
 };
 
 /// The triangles across each triangle's manifold edges, from the edge table;
 /// counts the edges (`edges`), the boundary, non-manifold and inconsistently
 /// oriented ones, and joins the triangles of each connected component.
-std::vector<Across> EdgeNeighbours(const std::vector<EdgeUse>& uses, std::size_t triangles, UnionFind& components,
+EdgeAdjacency EdgeNeighbours(const std::vector<EdgeUse>& uses, std::size_t triangles, UnionFind& components,
   MeshRepairReport& r, long long& edges)
 {
-  std::vector<Across> across(3 * triangles);
+  EdgeAdjacency adjacency;
+  adjacency.Across.assign(triangles, { EdgeAdjacency::None, EdgeAdjacency::None, EdgeAdjacency::None });
+  adjacency.SameDirection.assign(triangles, 0);
   ForEachEdge(uses, [&](std::size_t first, std::size_t count) {
     ++edges;
     r.BoundaryEdges += count == 1 ? 1 : 0;
@@ -210,19 +225,21 @@ std::vector<Across> EdgeNeighbours(const std::vector<EdgeUse>& uses, std::size_t
       const EdgeUse &a = uses[first], &b = uses[first + 1];
       const bool same = a.Ascending == b.Ascending;
       r.InconsistentEdges += same ? 1 : 0;
-      across[3 * static_cast<std::size_t>(a.Triangle) + a.Corner] = { b.Triangle, same };
-      across[3 * static_cast<std::size_t>(b.Triangle) + b.Corner] = { a.Triangle, same };
+      adjacency.Across[a.Triangle][a.Corner] = b.Triangle;
+      adjacency.Across[b.Triangle][b.Corner] = a.Triangle;
+      adjacency.SameDirection[a.Triangle] |= static_cast<std::uint8_t>(same ? 1 << a.Corner : 0);
+      adjacency.SameDirection[b.Triangle] |= static_cast<std::uint8_t>(same ? 1 << b.Corner : 0);
     }
   });
-  return across;
+  return adjacency;
 }
 
 /// Which triangles to flip so that across every manifold edge the two
 /// triangles walk it in opposite directions: breadth-first from a seed per
 /// component (kept as it is). A contradiction makes the mesh not orientable.
-std::vector<bool> ConsistentFlips(const std::vector<Across>& across, MeshRepairReport& r)
+std::vector<bool> ConsistentFlips(const EdgeAdjacency& adjacency, MeshRepairReport& r)
 {
-  const std::size_t n = across.size() / 3;
+  const std::size_t n = adjacency.Across.size();
   std::vector<int> flip(n, -1);
   std::vector<std::uint32_t> queue;
   for (std::uint32_t seed = 0; seed < n; ++seed)
@@ -238,18 +255,19 @@ std::vector<bool> ConsistentFlips(const std::vector<Across>& across, MeshRepairR
       const std::uint32_t t = queue[q];
       for (int k = 0; k < 3; ++k)
       {
-        const Across& nb = across[3 * static_cast<std::size_t>(t) + k];
-        if (nb.Triangle == Across::None)
+        const std::uint32_t across = adjacency.Across[t][k];
+        if (across == EdgeAdjacency::None)
         {
           continue;
         }
-        const int wanted = nb.SameDirection ? 1 - flip[t] : flip[t];
-        if (flip[nb.Triangle] < 0)
+        const bool same = (adjacency.SameDirection[t] >> k & 1) != 0;
+        const int wanted = same ? 1 - flip[t] : flip[t];
+        if (flip[across] < 0)
         {
-          flip[nb.Triangle] = wanted;
-          queue.push_back(nb.Triangle);
+          flip[across] = wanted;
+          queue.push_back(across);
         }
-        else if (flip[nb.Triangle] != wanted)
+        else if (flip[across] != wanted)
         {
           r.Orientable = false;
         }
@@ -305,23 +323,16 @@ std::vector<std::uint32_t> OrientConsistently(std::vector<Triangle>& triangles, 
   std::vector<EdgeUse> uses;
   BuildEdgeTable(triangles.data(), triangles.size(), uses, parallelFor);
   UnionFind components(triangles.size());
-  const std::vector<Across> across = EdgeNeighbours(uses, triangles.size(), components, r, edges);
+  EdgeAdjacency adjacency = EdgeNeighbours(uses, triangles.size(), components, r, edges);
   std::vector<EdgeUse>().swap(uses);
   // (No edge walked twice the same way - most inputs: nothing turns, and the
   // search, which would keep every triangle, is not needed.)
   const std::vector<bool> flips =
-    r.InconsistentEdges == 0 ? std::vector<bool>(triangles.size(), false) : ConsistentFlips(across, r);
+    r.InconsistentEdges == 0 ? std::vector<bool>(triangles.size(), false) : ConsistentFlips(adjacency, r);
   if (neighbours)
   {
-    static_assert(Across::None == MeshSolid::NoTriangle, "the same mark for no neighbour");
-    neighbours->resize(triangles.size());
-    for (std::size_t t = 0; t < triangles.size(); ++t)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        (*neighbours)[t][k] = across[3 * t + static_cast<std::size_t>(k)].Triangle;
-      }
-    }
+    static_assert(EdgeAdjacency::None == MeshSolid::NoTriangle, "the same mark for no neighbour");
+    *neighbours = std::move(adjacency.Across);
   }
   for (std::size_t t = 0; t < triangles.size(); ++t)
   {
