@@ -37,12 +37,23 @@ bool GatherDistinct(std::size_t blocks, std::size_t buckets, const Emit& emit, c
   const Less& less, const SameKey& sameKey, const ParallelFor& parallelFor, const ProgressCallback& progress,
   BucketedRecords<Record>& out)
 {
-  // Pass 1: each block's records, by bucket.
+  // Pass 1: each block's records, by bucket, each part sorted and
+  // deduplicated on its own. (Most repeats come from one block - a corner or
+  // a crossing shared by neighbouring cells, which are mostly one block's -
+  // so the output below is filled about once, not once per repeat. The
+  // first of a key's repeats by `less` in each part, then the first of
+  // those: the first of them all.)
   std::vector<std::vector<Record>> parts(blocks * buckets);
   if (!ChunkedFor(blocks, 8, parallelFor, [&](std::size_t begin, std::size_t end) {
         for (std::size_t b = begin; b < end; ++b)
         {
           emit(b, [&parts, &bucketOf, b, buckets](const Record& r) { parts[b * buckets + bucketOf(r)].push_back(r); });
+          for (std::size_t k = 0; k < buckets; ++k)
+          {
+            std::vector<Record>& part = parts[b * buckets + k];
+            std::sort(part.begin(), part.end(), less);
+            part.erase(std::unique(part.begin(), part.end(), sameKey), part.end());
+          }
         }
       }, ProgressRange(progress, 0.0, 0.5)))
   {
