@@ -3,11 +3,12 @@
 // extraction (each vertex placed once) are both many records with repeats.
 //
 // Blocks of work emit records in parallel, each into the bucket of its key's
-// hash; each bucket is then sorted and deduplicated on its own, in parallel
-// and in chunks reporting progress (one global sort of tens of millions of
-// records takes seconds without an abort check). The result is the buckets
-// concatenated, with where each starts, so a record is found by a binary
-// search in its bucket. Which record of a repeated key is kept depends only
+// hash (each block's part of a bucket deduplicated at once); each bucket is
+// then sorted and deduplicated on its own, where it lands in the output, in
+// parallel and in chunks reporting progress (one global sort of tens of
+// millions of records takes seconds without an abort check). The result is
+// the buckets concatenated, with where each starts, so a record is found by
+// a binary search in its bucket. Which record of a repeated key is kept depends only
 // on `less`, never on the number of threads.
 #pragma once
 
@@ -99,9 +100,12 @@ bool GatherDistinct(std::size_t blocks, std::size_t buckets, const Emit& emit, c
   for (std::size_t k = 0; k < buckets; ++k)
   {
     out.BucketStart[k + 1] = out.BucketStart[k] + kept[k];
-    const auto from = out.Records.begin() + static_cast<std::ptrdiff_t>(start[k]);
-    std::move(from, from + static_cast<std::ptrdiff_t>(kept[k]),
-      out.Records.begin() + static_cast<std::ptrdiff_t>(out.BucketStart[k]));
+    if (out.BucketStart[k] < start[k]) // (std::move may not write onto its own source's start)
+    {
+      const auto from = out.Records.begin() + static_cast<std::ptrdiff_t>(start[k]);
+      std::move(from, from + static_cast<std::ptrdiff_t>(kept[k]),
+        out.Records.begin() + static_cast<std::ptrdiff_t>(out.BucketStart[k]));
+    }
   }
   out.Records.resize(out.BucketStart[buckets]);
   return true;
