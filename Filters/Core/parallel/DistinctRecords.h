@@ -4,11 +4,11 @@
 //
 // Blocks of work emit records in parallel, each into the bucket of its key's
 // hash (each block's part of a bucket deduplicated at once); each bucket is
-// then sorted and deduplicated on its own, where it lands in the output, in
-// parallel and in chunks reporting progress (one global sort of tens of
-// millions of records takes seconds without an abort check). The result is
-// the buckets concatenated, with where each starts, so a record is found by
-// a binary search in its bucket. Which record of a repeated key is kept depends only
+// then sorted and deduplicated on its own in the output, in parallel and in
+// chunks reporting progress (one global sort of tens of millions of records
+// takes seconds without an abort check). The result is the buckets
+// concatenated, with where each starts, so a record is found by a binary
+// search in its bucket. Which record of a repeated key is kept depends only
 // on `less`, never on the number of threads.
 #pragma once
 
@@ -31,8 +31,9 @@ struct BucketedRecords
 /// Calls emit(b, out) for each block b < `blocks` (in parallel), which hands
 /// its records to out(record); each lands in bucket bucketOf(record) <
 /// `buckets`. Each bucket is sorted by `less`, and of each run of records
-/// that `sameKey` calls equal the first is kept. Progress: emitting over
-/// the first half, sorting over the second; false when it asked to stop.
+/// that `sameKey` calls equal the first is kept. Progress: emitting (and
+/// each block's parts sorted) over the first half, the buckets over the
+/// second; false when it asked to stop (`out` is then unusable).
 template <typename Record, typename Emit, typename BucketOf, typename Less, typename SameKey>
 bool GatherDistinct(std::size_t blocks, std::size_t buckets, const Emit& emit, const BucketOf& bucketOf,
   const Less& less, const SameKey& sameKey, const ParallelFor& parallelFor, const ProgressCallback& progress,
