@@ -38,8 +38,8 @@ bool BuildEdgeTable(const Triangle* triangles, std::size_t count, std::vector<Ed
     for (int k = 0; k < 3; ++k)
     {
       const std::uint32_t from = triangles[t][k], to = triangles[t][(k + 1) % 3];
-      uses[start[std::min(from, to)]++] = { EdgeKey(from, to), static_cast<std::uint32_t>(t), static_cast<std::uint8_t>(k),
-        from < to };
+      uses[start[std::min(from, to)]++] = { EdgeKey(from, to), static_cast<std::uint32_t>(t),
+        static_cast<std::uint8_t>(k), from < to };
     }
   }
   std::copy_backward(start.begin(), start.end() - 1, start.end());

@@ -475,8 +475,8 @@ struct BinnedTriangles
     this->Triangles.resize(this->Start.back());
     // Bin k filled from Start[k], which ends at the next bin's start; then
     // every start moved back up one place. (A copy of the starts to fill
-    // from - up to 8 bins a triangle - was most of the pages the check first
-    // touched.)
+    // from - up to 8 bins a triangle - was a third of the pages the check
+    // first touched.)
     for (std::size_t t = 0; t < boxes.size(); ++t)
     {
       forEachBin(t, [&](std::uint64_t k) { this->Triangles[this->Start[k]++] = static_cast<std::uint32_t>(t); });
