@@ -1,5 +1,7 @@
 #include "MeshEdges.h"
 
+#include "BucketStarts.h"
+
 #include <algorithm>
 #include <numeric>
 
@@ -31,8 +33,6 @@ bool BuildEdgeTable(const Triangle* triangles, std::size_t count, std::vector<Ed
   }
   std::partial_sum(start.begin(), start.end(), start.begin());
   uses.resize(3 * count);
-  // (Each vertex's uses filled from its start, which ends at the next one's;
-  // then the starts moved back up one place - no copy of them to fill from.)
   for (std::size_t t = 0; t < count; ++t)
   {
     for (int k = 0; k < 3; ++k)
@@ -42,8 +42,7 @@ bool BuildEdgeTable(const Triangle* triangles, std::size_t count, std::vector<Ed
         static_cast<std::uint8_t>(k), from < to };
     }
   }
-  std::copy_backward(start.begin(), start.end() - 1, start.end());
-  start[0] = 0;
+  RestoreBucketStarts(start);
   parallelFor(vertices, [&](std::size_t begin, std::size_t end) {
     for (std::size_t v = begin; v < end; ++v)
     {

@@ -1,5 +1,6 @@
 #include "VertexLinks.h"
 
+#include "BucketStarts.h"
 #include "UnionFind.h"
 
 #include <algorithm>
@@ -66,14 +67,14 @@ VertexTriangles::VertexTriangles(const Triangle* triangles, std::size_t triangle
   }
   std::partial_sum(this->Start.begin(), this->Start.end(), this->Start.begin());
   this->Incident.resize(this->Start.back());
-  std::vector<std::size_t> fill(this->Start.begin(), this->Start.end() - 1);
   for (std::size_t t = 0; t < triangleCount; ++t)
   {
     for (const std::uint32_t v : triangles[t])
     {
-      this->Incident[fill[v]++] = static_cast<std::uint32_t>(t);
+      this->Incident[this->Start[v]++] = static_cast<std::uint32_t>(t);
     }
   }
+  RestoreBucketStarts(this->Start);
 }
 
 bool CountNonManifoldVertices(const Triangle* triangles, std::size_t triangleCount, std::size_t vertexCount,

@@ -1,11 +1,13 @@
 #include "MeshSolid.h"
 
+#include "BucketStarts.h"
 #include "ExactPredicates.h"
 #include "GridIndex.h"
 #include "MeshEdges.h"
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace tpc
 {
@@ -113,7 +115,8 @@ void MeshSolid::Index(const ParallelFor& parallelFor)
         this->GridColumn(1, b.lo[2] - wz), this->GridColumn(1, b.hi[2] + wz) };
     }
   });
-  std::vector<std::uint32_t> counts(static_cast<std::size_t>(n) * n + 1, 0);
+  // (A counting sort, BucketStarts.h.)
+  this->GridStart.assign(static_cast<std::size_t>(n) * n + 1, 0);
   for (int pass = 0; pass < 2; ++pass)
   {
     for (std::size_t t = 0; t < this->Faces.size(); ++t)
@@ -126,25 +129,22 @@ void MeshSolid::Index(const ParallelFor& parallelFor)
           const std::size_t cell = static_cast<std::size_t>(y) * n + z;
           if (pass == 0)
           {
-            ++counts[cell + 1];
+            ++this->GridStart[cell + 1];
           }
           else
           {
-            this->GridTriangles[counts[cell]++] = static_cast<std::uint32_t>(t);
+            this->GridTriangles[this->GridStart[cell]++] = static_cast<std::uint32_t>(t);
           }
         }
       }
     }
     if (pass == 0)
     {
-      for (std::size_t c = 1; c < counts.size(); ++c)
-      {
-        counts[c] += counts[c - 1];
-      }
-      this->GridStart = counts;
-      this->GridTriangles.resize(counts.back());
+      std::partial_sum(this->GridStart.begin(), this->GridStart.end(), this->GridStart.begin());
+      this->GridTriangles.resize(this->GridStart.back());
     }
   }
+  RestoreBucketStarts(this->GridStart);
 }
 
 bool MeshSolid::Crosses(std::uint32_t t, const Vec3& a, const Vec3* b, int axis, bool backward) const

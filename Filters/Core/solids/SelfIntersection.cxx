@@ -1,5 +1,6 @@
 #include "SelfIntersection.h"
 
+#include "BucketStarts.h"
 #include "EmbeddedStars.h"
 #include "ExactPredicates.h"
 #include "GridIndex.h"
@@ -473,16 +474,13 @@ struct BinnedTriangles
     }
     std::partial_sum(this->Start.begin(), this->Start.end(), this->Start.begin());
     this->Triangles.resize(this->Start.back());
-    // Bin k filled from Start[k], which ends at the next bin's start; then
-    // every start moved back up one place. (A copy of the starts to fill
-    // from - up to 8 bins a triangle - was a third of the pages the check
-    // first touched.)
+    // (Filled from the starts themselves, BucketStarts.h: a copy of them
+    // was a third of the pages the check first touched.)
     for (std::size_t t = 0; t < boxes.size(); ++t)
     {
       forEachBin(t, [&](std::uint64_t k) { this->Triangles[this->Start[k]++] = static_cast<std::uint32_t>(t); });
     }
-    std::copy_backward(this->Start.begin(), this->Start.end() - 1, this->Start.end());
-    this->Start[0] = 0;
+    RestoreBucketStarts(this->Start);
   }
 };
 
