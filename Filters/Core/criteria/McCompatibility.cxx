@@ -75,9 +75,11 @@ bool TileFaces(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& 
 /// with the tiles of its wide chords split (RefineChordTiles); where it then
 /// passes, the cell keeps that tiling (`boundary`, and the faces it records)
 /// and that prediction (in `v`). Else `boundary` and `v` stay. Where
-/// `creaseTiles`, `boundary`'s crease tiles are marked.
+/// `creaseTiles`, `boundary`'s crease tiles are marked. `surface`: S_C, its
+/// polygons clipped from `surfaceTriangles`.
 bool PredictOverFinerChords(const AdaptiveOctree& tree, std::uint32_t n, const PrimitiveSet& prims, double tolerance,
-  int faceRefinementLevels, bool creaseTiles, bool probesFirst, const PolygonSet& surface, CellSignCache& signs,
+  int faceRefinementLevels, bool creaseTiles, bool probesFirst, const PolygonSet& surface,
+  const TriangleList& surfaceTriangles, CellSignCache& signs,
   CellBoundary& boundary, McCompatibility& v)
 {
   const RootGrid& grid = tree.Grid;
@@ -91,7 +93,7 @@ bool PredictOverFinerChords(const AdaptiveOctree& tree, std::uint32_t n, const P
   }
   AdaptiveOctree::MeshCellPrediction prediction;
   const double bound = PredictedMeshCellError(*expression, prims, grid, grid.CellBox(node.Level, node.Ijk), finer,
-    TraceBoundaryLoops(finer), tolerance, prediction, &surface, probesFirst, nullptr, creaseTiles);
+    TraceBoundaryLoops(finer), tolerance, prediction, &surface, &surfaceTriangles, probesFirst, nullptr, creaseTiles);
   if (!(bound <= tolerance))
   {
     return false;
@@ -276,11 +278,10 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     }
     return *creasesFound;
   };
-  TriangleList surfaceTriangles; // (each polygon's triangle, for SheetSpokesStray)
+  TriangleList surfaceTriangles; // (each polygon's triangle: SheetSpokesStray, SlabPatchError)
   if (meshBounded)
   {
-    SurfaceInCell(
-      *LoneMeshLeaf(*expression), prims, box, meshSurface, provenFailuresFirst ? &surfaceTriangles : nullptr);
+    SurfaceInCell(*LoneMeshLeaf(*expression), prims, box, meshSurface, &surfaceTriangles);
   }
   if (meshBounded && provenFailuresFirst &&
     SpokeStrays(*LoneMeshLeaf(*expression), prims, box, mask, meshSurface, tolerance) &&
@@ -331,7 +332,7 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
       MarkCreaseTiles(
         boundary, *LoneMeshLeaf(*expression), prims, grid, [](int, std::size_t) { return true; }, faceDecisions);
     v.PredictedError = PredictedMeshCellError(*expression, prims, grid, box, boundary,
-      creases ? TraceBoundaryLoops(boundary) : loops, tolerance, v.MeshPrediction, &meshSurface,
+      creases ? TraceBoundaryLoops(boundary) : loops, tolerance, v.MeshPrediction, &meshSurface, &surfaceTriangles,
       provenFailuresFirst, oneMesh ? &meshCreases() : nullptr, oneMesh);
     v.ErrorBounded = v.MeshSurface = v.PredictedError <= tolerance;
     // Failed with chords far from the trace: again over a loop whose wide
@@ -340,7 +341,7 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
     if (!v.ErrorBounded && refineChords && !(v.MeshPrediction.Delta <= ChordRefinementShare * tolerance) &&
       meshCreases().empty() &&
       PredictOverFinerChords(tree, n, prims, tolerance, faceRefinementLevels, oneMesh, provenFailuresFirst,
-        meshSurface, signs, boundary, v))
+        meshSurface, surfaceTriangles, signs, boundary, v))
     {
       v.ErrorBounded = v.MeshSurface = v.ChordsRefined = true;
     }

@@ -7,6 +7,7 @@
 #include "FaceRefinement.h"
 #include "MeshArrangement.h"
 #include "MeshSolid.h"
+#include "SlabBound.h"
 #include "SymmetricEigen.h"
 #include "UnionFind.h"
 
@@ -604,6 +605,23 @@ int RefineChordTiles(const CsgExpressionPtr& expression, const PrimitiveSet& pri
 
 namespace
 {
+/// The largest distance from an apex of `apexes` to S_C `surface`: a
+/// distance the fans attain (a lower bound of E(P)).
+double ApexesAttained(const PolygonSet& surface, const std::vector<Vec3>& apexes)
+{
+  double attained = 0.0;
+  for (const Vec3& apex : apexes)
+  {
+    double nearest = HUGE_VAL;
+    for (std::size_t i = 0; i < surface.size(); ++i)
+    {
+      nearest = std::min(nearest, surface.Distance(apex, i));
+    }
+    attained = std::max(attained, nearest < HUGE_VAL ? nearest : 0.0);
+  }
+  return attained;
+}
+
 /// Whether one of the fans over `loops` around the sets of crease points
 /// CreaseApexSets gives for `apexes` follows every crease of `creases`
 /// within `reach` (header: Creases first).
@@ -619,7 +637,8 @@ bool CreaseApexFanFollows(const Box3& cell, const std::vector<CreaseSegment>& cr
 double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSet& primitives,
   const RootGrid& grid, const Box3& cell, const CellBoundary& boundary, const BoundaryLoopSet& loops,
   double tolerance, AdaptiveOctree::MeshCellPrediction& prediction, const PolygonSet* given,
-  bool probesFirst, const std::vector<CreaseSegment>* creases, bool sceneOfOneMesh)
+  const TriangleList* givenTriangles, bool probesFirst, const std::vector<CreaseSegment>* creases,
+  bool sceneOfOneMesh)
 {
   prediction = AdaptiveOctree::MeshCellPrediction();
   const CsgLeaf* leaf = LoneMeshLeaf(expression);
@@ -628,8 +647,14 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
   {
     return HUGE_VAL;
   }
-  const PolygonSet computed = given ? PolygonSet() : SurfaceInCell(*leaf, primitives, cell);
+  PolygonSet computed;
+  TriangleList computedTriangles;
+  if (!given)
+  {
+    SurfaceInCell(*leaf, primitives, cell, computed, &computedTriangles);
+  }
   const PolygonSet& surface = given ? *given : computed;
+  const TriangleList* surfaceTriangles = given ? givenTriangles : &computedTriangles;
   // Each loop's points, and delta_k: each chord against the trace on its
   // tile (on a crease tile, against its half of the trace), loop by loop in
   // the fan's order.
@@ -699,6 +724,21 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
     {
       return HUGE_VAL;
     }
+  }
+  // Where S_C and the fan face one way, the slab they lie in bounds E(P)
+  // (header: Slab bound); else, or where that bound is too wide, the branch
+  // and bound.
+  const double slab = surfaceTriangles
+    ? SlabPatchError(primitives.Meshes[leaf->Primitive], *surfaceTriangles, surface, fan, delta, slack)
+    : HUGE_VAL;
+  if (slab + delta <= tolerance)
+  {
+    prediction.Loops = std::move(points);
+    prediction.Apexes = std::move(apexes);
+    prediction.Attained = ApexesAttained(surface, prediction.Apexes);
+    prediction.OwnFanError = slab;
+    prediction.Bound = slab + delta;
+    return prediction.Bound;
   }
   const double anyWithin = sceneOfOneMesh ? PredictionPrecision * tolerance : 0.0;
   const HausdorffEstimate error = CertifiedMeshPatchError(

@@ -1,0 +1,127 @@
+#include "SlabBound.h"
+
+#include "SymmetricEigen.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tpc
+{
+namespace
+{
+/// The margin of the facing test, relative to |b - a| |c - a| (header:
+/// Rounding).
+constexpr double FacingMargin = 1e-9;
+
+/// Whether the triangle (a, b, c) faces along `n` with room for rounding.
+bool FacesAlong(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& n)
+{
+  const Vec3 ab = b - a, ac = c - a;
+  return Dot(Cross(ab, ac), n) > FacingMargin * Norm(ab) * Norm(ac);
+}
+
+/// S_C's area-weighted mean normal, unit (zero where it vanishes).
+Vec3 MeanNormal(const PolygonSet& surface)
+{
+  Vec3 mean(0.0, 0.0, 0.0);
+  for (const ConvexPolygon& q : surface)
+  {
+    mean = mean + q.Normal * q.TwiceArea;
+  }
+  const double length = Norm(mean);
+  return length > 0.0 ? mean * (1.0 / length) : Vec3(0.0, 0.0, 0.0);
+}
+
+/// The unit normal of the plane fitted to S_C's corners (least squares: the
+/// eigenvector of their scatter with the least eigenvalue), turned to the
+/// side of `along`.
+Vec3 FittedNormal(const PolygonSet& surface, const Vec3& along)
+{
+  Vec3 centre(0.0, 0.0, 0.0);
+  std::size_t count = 0;
+  for (const ConvexPolygon& q : surface)
+  {
+    for (const Vec3& p : q.Points)
+    {
+      centre = centre + p;
+      ++count;
+    }
+  }
+  centre = centre * (1.0 / static_cast<double>(count));
+  double scatter[3][3] = {};
+  for (const ConvexPolygon& q : surface)
+  {
+    for (const Vec3& p : q.Points)
+    {
+      const Vec3 d = p - centre;
+      for (int a = 0; a < 3; ++a)
+      {
+        for (int b = 0; b < 3; ++b)
+        {
+          scatter[a][b] += d[a] * d[b];
+        }
+      }
+    }
+  }
+  double vectors[3][3], values[3];
+  SymmetricEigen(scatter, vectors, values);
+  const int least = values[0] <= values[1] && values[0] <= values[2] ? 0 : values[1] <= values[2] ? 1 : 2;
+  const Vec3 normal(vectors[0][least], vectors[1][least], vectors[2][least]);
+  const double length = Norm(normal);
+  return length > 0.0 ? normal * ((Dot(normal, along) < 0.0 ? -1.0 : 1.0) / length) : Vec3(0.0, 0.0, 0.0);
+}
+
+/// The thickness along `n` of the slab holding S_C and the patch, or +inf
+/// where a triangle of either does not face along `n`.
+double SlabThickness(const MeshSolid& mesh, const TriangleList& surfaceTriangles, const PolygonSet& surface,
+  const std::vector<SourceTriangle>& patch, const Vec3& n)
+{
+  double lowest = HUGE_VAL, highest = -HUGE_VAL;
+  const auto hold = [&](const Vec3& p) {
+    const double h = Dot(p, n);
+    lowest = std::min(lowest, h);
+    highest = std::max(highest, h);
+  };
+  for (std::size_t i = 0; i < surface.size(); ++i)
+  {
+    const std::uint32_t t = surfaceTriangles[i];
+    if (!FacesAlong(mesh.Vertex(t, 0), mesh.Vertex(t, 1), mesh.Vertex(t, 2), n))
+    {
+      return HUGE_VAL;
+    }
+    for (const Vec3& p : surface[i].Points)
+    {
+      hold(p);
+    }
+  }
+  for (const SourceTriangle& f : patch)
+  {
+    if (!FacesAlong(f[0], f[1], f[2], n))
+    {
+      return HUGE_VAL;
+    }
+    for (const Vec3& p : f)
+    {
+      hold(p);
+    }
+  }
+  const double thickness = highest - lowest;
+  return std::isnan(thickness) ? HUGE_VAL : thickness;
+}
+} // namespace
+
+double SlabPatchError(const MeshSolid& mesh, const TriangleList& surfaceTriangles, const PolygonSet& surface,
+  const std::vector<SourceTriangle>& patch, double chordDeviation, double slack)
+{
+  if (surface.empty() || patch.empty() || surfaceTriangles.size() != surface.size())
+  {
+    return HUGE_VAL;
+  }
+  const Vec3 mean = MeanNormal(surface);
+  const double thickness = std::min(SlabThickness(mesh, surfaceTriangles, surface, patch, mean),
+    SlabThickness(mesh, surfaceTriangles, surface, patch, FittedNormal(surface, mean)));
+  const double bound = std::sqrt(thickness * thickness + chordDeviation * chordDeviation) + slack;
+  return std::isnan(bound) ? HUGE_VAL : bound;
+}
+
+} // namespace tpc
