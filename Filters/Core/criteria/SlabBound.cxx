@@ -111,7 +111,7 @@ double SlabThickness(const MeshSolid& mesh, const TriangleList& surfaceTriangles
 } // namespace
 
 double SlabPatchError(const MeshSolid& mesh, const TriangleList& surfaceTriangles, const PolygonSet& surface,
-  const std::vector<SourceTriangle>& patch, double chordDeviation, double slack)
+  const std::vector<SourceTriangle>& patch, double chordReach, double slack)
 {
   if (surface.empty() || patch.empty() || surfaceTriangles.size() != surface.size())
   {
@@ -120,7 +120,7 @@ double SlabPatchError(const MeshSolid& mesh, const TriangleList& surfaceTriangle
   const Vec3 mean = MeanNormal(surface);
   const double thickness = std::min(SlabThickness(mesh, surfaceTriangles, surface, patch, mean),
     SlabThickness(mesh, surfaceTriangles, surface, patch, FittedNormal(surface, mean)));
-  const double bound = std::sqrt(thickness * thickness + chordDeviation * chordDeviation) + slack;
+  const double bound = std::sqrt(thickness * thickness + chordReach * chordReach) + slack;
   return std::isnan(bound) ? HUGE_VAL : bound;
 }
 

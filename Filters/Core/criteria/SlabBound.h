@@ -7,8 +7,10 @@
 // cell's loops (the tiles passed the face tests - the surface crosses each in
 // one arc whose ends are its chord's, BoundaryLoops.h; a crease tile's two
 // chords a -> x, x -> b each take their half of it, CreaseCrossing.h). The
-// patch P is a fan over those loops; delta_c bounds the arc A_c's distance
-// from its chord c (MeasureChords: every point of S on c's tile or half).
+// patch P spans those loops - a fan around an apex or from a loop point,
+// any triangulated surface whose boundary they are; delta_c bounds the arc
+// A_c's distance from its chord c (MeasureChords: every point of S on c's
+// tile or half).
 // Take a unit direction n, heights h(x) = x . n, the projection pi along n
 // onto a plane across it, and t = the thickness of the slab of heights
 // holding S_C and P (their corners: P's points are convex combinations of
@@ -56,13 +58,26 @@
 // closed piece of S inside C would count 0 over every point: it cannot face
 // along n everywhere, so the facing test leaves none.
 //
+// Loops refining the cell's own (the extraction's final loops,
+// FinalLoopRefines in MeshCellError.h). Where crack patching replaced each
+// chord c = [a, b] by a polyline lambda_c from a to b through points of S on
+// c's tile, every point of lambda_c is within delta_c of [a, b] too (its
+// corners are, and that neighbourhood is convex). With C_c = A_c followed by
+// lambda_c backwards, (1) and (2) hold as they are. Both lambda_c and A_c
+// run from a to b, so each projects onto the line of pi(c) over all of
+// pi(c) (where pi(a) = pi(b), pi(a) is a point of both): a point x within
+// delta_c of pi(c), at q, has a point of each within delta_c of q, so within
+// 2 delta_c of x. The two cases above go through with 2 delta_c for
+// delta_c: E(P) <= sqrt(t^2 + 4 delta^2) - the caller passes 2 delta as the
+// chords' reach. (Where the final loop is the own loop, delta.)
+//
 // Why it helps. Where S_C is nearly flat across a cell - most cells of a
 // scan or a CAD part's faces at their largest size - t and delta are the
-// error's own scale, and the bound settles what the branch and bound would
-// settle, at the cost of one pass over S_C's corners (armadillo at 1/128:
-// 63 % of the predictions that pass, the bound 1.07 times the branch and
-// bound's proven one on average, which settles its pieces within a fifth of
-// the tolerance: MeshCellError.h, Prediction precision).
+// error's own scale, and the bound settles what a branch and bound
+// (PolygonHausdorff.h) would, at the cost of a pass over S_C's corners: on
+// armadillo at 1/128 three quarters of the subdivision's passing
+// predictions and of the extraction's loop-point fans (MeshCellError.h:
+// Slab bound), 7 % of a run's time.
 //
 // Which n. Any direction the triangles face along proves a bound: two are
 // tried, S_C's area-weighted mean normal and the normal of the plane
@@ -90,13 +105,14 @@
 namespace tpc
 {
 
-/// E(P) <= sqrt(t^2 + delta^2) + slack (header) for the patch `patch`
-/// against S_C `surface` - clipped from `mesh`'s triangles
-/// `surfaceTriangles`, one per polygon (SurfaceInCell's `triangles`) - with
-/// `chordDeviation` the largest delta_c of the patch's chords; +inf where a
+/// E(P) <= sqrt(t^2 + r^2) + slack (header) for the patch `patch` against
+/// S_C `surface` - clipped from `mesh`'s triangles `surfaceTriangles`, one
+/// per polygon (SurfaceInCell's `triangles`) - with `chordReach` r the
+/// largest delta_c of the patch's chords (twice that of the cell's own loop
+/// where the patch's loops refine it: header); +inf where a
 /// triangle of either faces along neither direction tried (or S_C is
 /// empty, or the lists disagree in size).
 double SlabPatchError(const MeshSolid& mesh, const TriangleList& surfaceTriangles, const PolygonSet& surface,
-  const std::vector<SourceTriangle>& patch, double chordDeviation, double slack);
+  const std::vector<SourceTriangle>& patch, double chordReach, double slack);
 
 } // namespace tpc

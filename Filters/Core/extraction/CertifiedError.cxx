@@ -2,6 +2,7 @@
 
 #include "ExactCellCriterion.h"
 #include "MeshBooleanCellError.h"
+#include "SlabBound.h"
 
 #include <algorithm>
 #include <cmath>
@@ -45,10 +46,12 @@ bool SurfaceOfCell(
   {
     surface.OneMesh = true;
     surface.Slack = RoundingSlack(*leaf, prims, box);
-    SurfaceInCell(*leaf, prims, box, surface.Mesh);
+    surface.Solid = &prims.Meshes[leaf->Primitive];
+    SurfaceInCell(*leaf, prims, box, surface.Mesh, &surface.MeshTriangles);
     return true;
   }
   surface.OneMesh = false;
+  surface.Solid = nullptr;
   const bool boolean = IsCertifiableMeshBoolean(expression) &&
     MeshBooleanSurfaceInCell(expression, prims, box, BooleanPieceShare * tree.HausdorffTolerance,
       BooleanPieceBudget, surface.Boolean, creases ? &surface.Creases : nullptr);
@@ -64,6 +67,15 @@ HausdorffEstimate CertifiedCellError(const CellSurface& surface, const CellPatch
     surface.SceneOfOneMesh ? enough : 0.0);
   e.Lower = surface.OneMesh ? e.Lower : 0.0;
   return e;
+}
+
+double SlabCellError(const CellSurface& surface, const CellPatches& patches, const TriangleMesh& mesh,
+  double chordReach)
+{
+  return surface.OneMesh && surface.Solid
+    ? SlabPatchError(
+        *surface.Solid, surface.MeshTriangles, surface.Mesh, PatchTriangles(patches, mesh), chordReach, surface.Slack)
+    : HUGE_VAL;
 }
 
 } // namespace tpc

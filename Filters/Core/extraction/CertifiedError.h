@@ -35,6 +35,8 @@ double CertifiedPatchError(const QuadricCellError& bound, const CellPatches& pat
 struct CellSurface
 {
   PolygonSet Mesh;
+  TriangleList MeshTriangles;         ///< where one mesh is the surface: each polygon's triangle
+  const MeshSolid* Solid = nullptr;   ///< that mesh
   MeshBooleanSurface Boolean;
   std::vector<CreaseSegment> Creases;
   bool OneMesh = true;
@@ -68,5 +70,12 @@ bool SurfaceOfCell(
 /// bounded as tightly as their branch and bounds find.
 HausdorffEstimate CertifiedCellError(const CellSurface& surface, const CellPatches& patches, const TriangleMesh& mesh,
   double enough, double giveUp, std::size_t budget);
+
+/// E(P) of the cell's `patches` by the slab bound (SlabBound.h) where one
+/// mesh is the surface: every chord of the patch's loops within
+/// `chordReach` of the trace as that bound needs it (SlabBound.h: Loops
+/// refining the cell's own); +inf where it does not apply.
+double SlabCellError(const CellSurface& surface, const CellPatches& patches, const TriangleMesh& mesh,
+  double chordReach);
 
 } // namespace tpc

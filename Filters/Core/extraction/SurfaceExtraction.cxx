@@ -176,6 +176,40 @@ double FirstCertificateAim(const AdaptiveOctree& tree)
     : std::min(std::max(1.1 * attained, MeshEdgeFanKeptWithin * tolerance), tolerance);
 }
 
+/// The points of each of the final `loops`, in order.
+std::vector<std::vector<Vec3>> FinalLoopPoints(
+  const BoundaryLoopSet& loops, const CrossingVertices& vertices, const TriangleMesh& mesh)
+{
+  std::vector<std::vector<Vec3>> points(loops.LoopSizes.size());
+  std::size_t k = 0;
+  for (std::size_t l = 0; l < loops.LoopSizes.size(); ++l)
+  {
+    for (const std::size_t end = k + loops.LoopSizes[l]; k < end; ++k)
+    {
+      points[l].push_back(mesh.Points[vertices.IdOf(loops.Crossings[k])]);
+    }
+  }
+  return points;
+}
+
+/// How far from the trace the chords of a lone final loop may be for the
+/// slab bound (SlabBound.h), from the prediction's Delta (each own chord's
+/// deviation, at most): Delta where the final loop is the cell's own loop
+/// (SameLoop), twice that where it refines it (FinalLoopRefines: Loops
+/// refining the cell's own), +inf otherwise.
+double LoneLoopChordReach(const AdaptiveOctree::MeshCellPrediction& prediction, const BoundaryLoopSet& loops,
+  const CrossingVertices& vertices, const TriangleMesh& mesh, const Box3& box)
+{
+  if (prediction.Loops.size() != 1 || loops.LoopSizes.size() != 1)
+  {
+    return HUGE_VAL;
+  }
+  const std::vector<Vec3> final = FinalLoopPoints(loops, vertices, mesh)[0];
+  return SameLoop(prediction.Loops[0], final)  ? prediction.Delta
+    : FinalLoopRefines(prediction.Loops[0], final, box) ? 2.0 * prediction.Delta
+                                                        : HUGE_VAL;
+}
+
 /// A mesh cell larger than the tolerance (its prediction `prediction`)
 /// spanned by Marching Cubes' fan from a loop point (TriangulateCellFromLoopPoint):
 /// the apex fan's prediction says nothing of it, so it is kept on its own
@@ -188,11 +222,13 @@ double FirstCertificateAim(const AdaptiveOctree& tree)
 /// third crease the diagonals would cut by more is kept sharp by the apex.
 /// Either must follow the cell's `creases` (CreaseFollowing.h; none outside
 /// scenes of one mesh). False when the loop allows no such fan or it is not
-/// kept.
+/// kept. `chordReach`: how far the final loop's chords may be from the
+/// trace for the slab bound (LoneLoopChordReach), tried before the branch
+/// and bound where finite.
 bool MeshCellFromLoopPoint(const AdaptiveOctree& tree, std::uint32_t n, const BoundaryLoopSet& loops,
   const CrossingVertices& vertices, const TriangleMesh& mesh, const CellSurface& surface,
   const std::vector<CreaseSegment>& creases, double aim, const AdaptiveOctree::MeshCellPrediction& prediction,
-  CellPatches& patches, CellCertificate& certificate)
+  double chordReach, CellPatches& patches, CellCertificate& certificate)
 {
   CellPatches fan;
   bool fromMeshEdge = false;
@@ -210,8 +246,10 @@ bool MeshCellFromLoopPoint(const AdaptiveOctree& tree, std::uint32_t n, const Bo
   const double ownFan = prediction.OwnFanError < HUGE_VAL ? prediction.OwnFanError : 0.0;
   const double keptWithin =
     fromMeshEdge ? std::min(std::max(MeshEdgeFanKeptWithin * tolerance, ownFan), tolerance) : tolerance;
-  const HausdorffEstimate e =
-    CertifiedCellError(surface, fan, mesh, std::min(aim, keptWithin), keptWithin, FirstCertificateBudget);
+  const double slab = chordReach < HUGE_VAL ? SlabCellError(surface, fan, mesh, chordReach) : HUGE_VAL;
+  const HausdorffEstimate e = slab <= std::min(aim, keptWithin)
+    ? HausdorffEstimate{ slab, 0.0 }
+    : CertifiedCellError(surface, fan, mesh, std::min(aim, keptWithin), keptWithin, FirstCertificateBudget);
   if (!(e.Upper <= keptWithin))
   {
     return false;
@@ -288,9 +326,9 @@ bool FinalLoopsRefine(const AdaptiveOctree::MeshCellPrediction& prediction, cons
   {
     return false;
   }
-  std::size_t offset = 0;
+  const std::vector<std::vector<Vec3>> finals = FinalLoopPoints(loops, vertices, mesh);
   std::vector<bool> used(prediction.Apexes.size(), false);
-  for (std::size_t l = 0; l < loops.LoopSizes.size(); ++l)
+  for (std::size_t l = 0; l < finals.size(); ++l)
   {
     // (Each own loop once: two final loops around one apex would leave
     // another own loop's part of S_C unaccounted for.)
@@ -302,18 +340,12 @@ bool FinalLoopsRefine(const AdaptiveOctree::MeshCellPrediction& prediction, cons
       return false;
     }
     used[static_cast<std::size_t>(own - prediction.Apexes.begin())] = true;
-    std::vector<Vec3> final;
-    for (std::size_t k = offset; k < offset + loops.LoopSizes[l]; ++k)
-    {
-      final.push_back(mesh.Points[vertices.IdOf(loops.Crossings[k])]);
-    }
-    offset += loops.LoopSizes[l];
     const std::vector<Vec3>& ownLoop = prediction.Loops[static_cast<std::size_t>(own - prediction.Apexes.begin())];
-    if (!FinalLoopRefines(ownLoop, final, box))
+    if (!FinalLoopRefines(ownLoop, finals[l], box))
     {
       return false;
     }
-    same = same && SameLoop(ownLoop, final);
+    same = same && SameLoop(ownLoop, finals[l]);
   }
   return true;
 }
@@ -346,8 +378,11 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
       const std::vector<CreaseSegment> creases = IsOneMesh(*tree.SceneExpression)
         ? CreasesInCell(*LoneMeshLeaf(expression), prims, box)
         : std::vector<CreaseSegment>();
-      if (MeshCellFromLoopPoint(
-            tree, n, loops, vertices, mesh, surface, creases, aim, prediction->second, patches, certificate))
+      const AdaptiveOctree::MeshCellPrediction& predicted = prediction->second;
+      const double loneLoopReach =
+        predictionsHold && loops.Consistent ? LoneLoopChordReach(predicted, loops, vertices, mesh, box) : HUGE_VAL;
+      if (MeshCellFromLoopPoint(tree, n, loops, vertices, mesh, surface, creases, aim, predicted, loneLoopReach,
+            patches, certificate))
       {
         return certificate;
       }
@@ -356,7 +391,6 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
       // whose apex it was fanned around, its points on the surface's trace
       // in the same tiles (no cell was stopped by a limit: its tiles may hold
       // bends or two chords); the patch is certified on its own anyway.
-      const AdaptiveOctree::MeshCellPrediction& predicted = prediction->second;
       TriangulateCell(loops, node, expression, prims, tree.Grid, vertices, mesh, patches, nullptr, &predicted.Apexes);
       if (CellFromOtherApexes(tree, n, loops, prims, vertices, mesh, surface, creases,
             [&] { return CreaseApexSets(box, creases, predicted.Loops, predicted.Apexes); },
@@ -375,6 +409,15 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
         // the first certificates aim at.
         certificate.Error = predicted.OwnFanError;
         certificate.Lower = predicted.Attained;
+        return certificate;
+      }
+      // Else, over loops refining the cell's own, the slab bound where it is
+      // within the aim (SlabBound.h).
+      const double slab =
+        refined ? SlabCellError(surface, patches, mesh, (same ? 1.0 : 2.0) * predicted.Delta) : HUGE_VAL;
+      if (slab <= aim)
+      {
+        certificate.Error = std::min(certificate.Bound, slab);
         return certificate;
       }
     }
