@@ -127,8 +127,8 @@ double SampledDistance(const std::vector<SourceTriangle>& sources, const std::ve
 /// side of the square), spanning the cell's height.
 Box3 TileBetween(const Vec3& a, const Vec3& b)
 {
-  Box3 tile{ { std::min(a[0], b[0]), std::min(a[1], b[1]), -1.0 }, { std::max(a[0], b[0]), std::max(a[1], b[1]), 1.0 } };
-  return tile;
+  return { { std::min(a[0], b[0]), std::min(a[1], b[1]), -1.0 },
+    { std::max(a[0], b[0]), std::max(a[1], b[1]), 1.0 } };
 }
 
 struct SlabCase
