@@ -192,22 +192,21 @@ std::vector<std::vector<Vec3>> FinalLoopPoints(
   return points;
 }
 
-/// How far from the trace the chords of a lone final loop may be for the
+/// How far from the trace the chords of a lone final loop (`finals`) may be for the
 /// slab bound (SlabBound.h), from the prediction's Delta (each own chord's
 /// deviation, at most): Delta where the final loop is the cell's own loop
 /// (SameLoop), twice that where it refines it (FinalLoopRefines: Loops
 /// refining the cell's own), +inf otherwise.
-double LoneLoopChordReach(const AdaptiveOctree::MeshCellPrediction& prediction, const BoundaryLoopSet& loops,
-  const CrossingVertices& vertices, const TriangleMesh& mesh, const Box3& box)
+double LoneLoopChordReach(
+  const AdaptiveOctree::MeshCellPrediction& prediction, const std::vector<std::vector<Vec3>>& finals, const Box3& box)
 {
-  if (prediction.Loops.size() != 1 || loops.LoopSizes.size() != 1)
+  if (prediction.Loops.size() != 1 || finals.size() != 1)
   {
     return HUGE_VAL;
   }
-  const std::vector<Vec3> final = FinalLoopPoints(loops, vertices, mesh)[0];
-  return SameLoop(prediction.Loops[0], final)  ? prediction.Delta
-    : FinalLoopRefines(prediction.Loops[0], final, box) ? 2.0 * prediction.Delta
-                                                        : HUGE_VAL;
+  return SameLoop(prediction.Loops[0], finals[0])  ? prediction.Delta
+    : FinalLoopRefines(prediction.Loops[0], finals[0], box) ? 2.0 * prediction.Delta
+                                                            : HUGE_VAL;
 }
 
 /// A mesh cell larger than the tolerance (its prediction `prediction`)
@@ -311,22 +310,21 @@ bool CellFromOtherApexes(const AdaptiveOctree& tree, std::uint32_t n, const Boun
   return false;
 }
 
-/// Whether each final loop of a cell whose prediction is `prediction` was
-/// fanned around one of its apexes, unchanged, and refines the cell's own
+/// Whether each final loop (`finals`, FinalLoopPoints) of a cell whose
+/// prediction is `prediction` was fanned around one of its apexes,
+/// unchanged, and refines the cell's own
 /// loop of that apex (FinalLoopRefines): the prediction's Bound then holds
 /// for the patch (MeshCellError.h; fan by fan where there are several
 /// loops). `same`: each final loop is that own loop itself (SameLoop), so the
 /// patch is the predicted fans.
-bool FinalLoopsRefine(const AdaptiveOctree::MeshCellPrediction& prediction, const BoundaryLoopSet& loops,
-  const CrossingVertices& vertices, const TriangleMesh& mesh, const CellPatches& patches, const Box3& box,
-  bool& same)
+bool FinalLoopsRefine(const AdaptiveOctree::MeshCellPrediction& prediction,
+  const std::vector<std::vector<Vec3>>& finals, const CellPatches& patches, const Box3& box, bool& same)
 {
   same = true;
-  if (loops.LoopSizes.size() != prediction.Loops.size() || patches.Apexes.size() != prediction.Loops.size())
+  if (finals.size() != prediction.Loops.size() || patches.Apexes.size() != prediction.Loops.size())
   {
     return false;
   }
-  const std::vector<std::vector<Vec3>> finals = FinalLoopPoints(loops, vertices, mesh);
   std::vector<bool> used(prediction.Apexes.size(), false);
   for (std::size_t l = 0; l < finals.size(); ++l)
   {
@@ -379,8 +377,9 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
         ? CreasesInCell(*LoneMeshLeaf(expression), prims, box)
         : std::vector<CreaseSegment>();
       const AdaptiveOctree::MeshCellPrediction& predicted = prediction->second;
+      const std::vector<std::vector<Vec3>> finals = FinalLoopPoints(loops, vertices, mesh);
       const double loneLoopReach =
-        predictionsHold && loops.Consistent ? LoneLoopChordReach(predicted, loops, vertices, mesh, box) : HUGE_VAL;
+        predictionsHold && loops.Consistent ? LoneLoopChordReach(predicted, finals, box) : HUGE_VAL;
       if (MeshCellFromLoopPoint(tree, n, loops, vertices, mesh, surface, creases, aim, predicted, loneLoopReach,
             patches, certificate))
       {
@@ -400,7 +399,7 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
       }
       bool same = false;
       const bool refined = predictionsHold && loops.Consistent &&
-        FinalLoopsRefine(predicted, loops, vertices, mesh, patches, box, same);
+        FinalLoopsRefine(predicted, finals, patches, box, same);
       certificate.Bound = refined ? predicted.Bound : HUGE_VAL;
       if (refined && predicted.OwnFanError <= aim && same)
       {
