@@ -12,6 +12,7 @@
 #include "MeshBuilders.h"
 #include "MeshCellError.h"
 #include "PolygonHausdorff.h"
+#include "SampledDistance.h"
 #include "SceneBuilder.h"
 
 #include <gtest/gtest.h>
@@ -28,53 +29,12 @@ using tpc::Box3;
 using tpc::ConvexPolygon;
 using tpc::SourceTriangle;
 using tpc::Vec3;
+using tpctest::AsMeshSolid;
+using tpctest::SampledHausdorff;
 using tpctest::SceneBuilder;
 
 namespace
 {
-/// The triangles as one MeshSolid (a soup: for its closest-point routine,
-/// independent of PolygonDistance).
-tpc::MeshSolid AsMeshSolid(const std::vector<SourceTriangle>& triangles)
-{
-  std::vector<Vec3> points;
-  tpctest::Triangles faces;
-  for (const SourceTriangle& t : triangles)
-  {
-    const std::uint32_t base = static_cast<std::uint32_t>(points.size());
-    points.insert(points.end(), t.begin(), t.end());
-    faces.push_back({ base, base + 1, base + 2 });
-  }
-  return tpc::MeshSolid(points, faces);
-}
-
-/// max over dense samples of `sources` of the distance to the nearest target
-/// (a lower estimate of h; the distance to each target from MeshSolid's own
-/// closest-point routine, independent of PolygonDistance).
-double SampledHausdorff(const std::vector<SourceTriangle>& sources, const std::vector<SourceTriangle>& targets)
-{
-  const tpc::MeshSolid target = AsMeshSolid(targets);
-  tpc::TriangleList all(targets.size());
-  for (std::uint32_t k = 0; k < all.size(); ++k)
-  {
-    all[k] = k;
-  }
-  double worst = 0.0;
-  constexpr int Steps = 40;
-  for (const SourceTriangle& s : sources)
-  {
-    for (int i = 0; i <= Steps; ++i)
-    {
-      for (int j = 0; i + j <= Steps; ++j)
-      {
-        const double a = double(i) / Steps, b = double(j) / Steps;
-        const Vec3 x = s[0] * (1 - a - b) + s[1] * a + s[2] * b;
-        worst = std::max(worst, std::fabs(target.ApproximateSignedDistance(x, all)));
-      }
-    }
-  }
-  return worst;
-}
-
 /// Offsets for the branch and bound's tests, drawn from `random`: up to 0.02
 /// for each of `sources`, 0.01 to 0.03 for each of `targets` (none near 0: a
 /// hierarchy node's least offset matters).

@@ -7,6 +7,7 @@
 #include "ConvexPolygons.h"
 #include "MeshCellError.h"
 #include "PolygonHausdorff.h"
+#include "SampledDistance.h"
 #include "SlabBound.h"
 
 #include <gtest/gtest.h>
@@ -88,39 +89,10 @@ std::vector<SourceTriangle> Triangles(const HeightField& field)
   return triangles;
 }
 
-/// The largest distance from a dense sample of `sources` to `targets`
-/// (brute force over the targets' closest points).
-double SampledDistance(const std::vector<SourceTriangle>& sources, const std::vector<SourceTriangle>& targets)
+/// The two-sided distance between `a` and `b`, sampled (12 steps a side).
+double Sampled(const std::vector<SourceTriangle>& a, const std::vector<SourceTriangle>& b)
 {
-  std::vector<Vec3> points;
-  std::vector<std::array<std::uint32_t, 3>> faces;
-  for (const SourceTriangle& t : targets)
-  {
-    const std::uint32_t base = static_cast<std::uint32_t>(points.size());
-    points.insert(points.end(), t.begin(), t.end());
-    faces.push_back({ base, base + 1, base + 2 });
-  }
-  const tpc::MeshSolid target(points, faces);
-  tpc::TriangleList all(faces.size());
-  for (std::uint32_t k = 0; k < all.size(); ++k)
-  {
-    all[k] = k;
-  }
-  double worst = 0.0;
-  constexpr int Steps = 12;
-  for (const SourceTriangle& s : sources)
-  {
-    for (int i = 0; i <= Steps; ++i)
-    {
-      for (int j = 0; i + j <= Steps; ++j)
-      {
-        const double a = double(i) / Steps, b = double(j) / Steps;
-        const Vec3 x = s[0] * (1 - a - b) + s[1] * a + s[2] * b;
-        worst = std::max(worst, std::fabs(target.ApproximateSignedDistance(x, all)));
-      }
-    }
-  }
-  return worst;
+  return std::max(tpctest::SampledHausdorff(a, b, 12), tpctest::SampledHausdorff(b, a, 12));
 }
 
 /// The face tile of the unit cell between loop points `a` and `b` (on one
@@ -184,7 +156,7 @@ TEST(SlabBound, BoundsTheSampledDistanceWhereBothFaceOneWay)
     const double bound = tpc::SlabPatchError(c.Mesh, c.Listed, c.Surface, c.Fan, c.Delta, 0.0);
     ASSERT_LT(bound, HUGE_VAL) << "trial " << trial;
     const std::vector<SourceTriangle> surface = Triangles(field);
-    const double measured = std::max(SampledDistance(c.Fan, surface), SampledDistance(surface, c.Fan));
+    const double measured = Sampled(c.Fan, surface);
     EXPECT_LE(measured, bound) << "trial " << trial;
     ++bounded;
     tightest = std::min(tightest, bound / measured);
@@ -243,7 +215,7 @@ TEST(SlabBound, ChordsFarFromTheTraceAreInTheBound)
   EXPECT_NEAR(c.Delta, 0.15, 0.002); // (the top face's chord; the level line is piecewise linear)
   const double bound = tpc::SlabPatchError(c.Mesh, c.Listed, c.Surface, c.Fan, c.Delta, 0.0);
   const double slabAlone = tpc::SlabPatchError(c.Mesh, c.Listed, c.Surface, c.Fan, 0.0, 0.0);
-  const double measured = std::max(SampledDistance(c.Fan, surface), SampledDistance(surface, c.Fan));
+  const double measured = Sampled(c.Fan, surface);
   EXPECT_LE(measured, bound);
   EXPECT_LT(slabAlone, 0.05);
   EXPECT_GT(measured, 2 * slabAlone);
