@@ -9,7 +9,9 @@
 #include "PolygonHausdorff.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace tpctest

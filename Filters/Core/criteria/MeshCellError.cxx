@@ -615,7 +615,11 @@ double ApexesAttained(const PolygonSet& surface, const std::vector<Vec3>& apexes
     double nearest = HUGE_VAL;
     for (std::size_t i = 0; i < surface.size(); ++i)
     {
-      nearest = std::min(nearest, surface.Distance(apex, i));
+      // (A polygon whose box is farther than the nearest so far is too.)
+      if (!(surface.Bounds(i).Distance2(apex) >= nearest * nearest))
+      {
+        nearest = std::min(nearest, surface.Distance(apex, i));
+      }
     }
     attained = std::max(attained, nearest < HUGE_VAL ? nearest : 0.0);
   }
@@ -728,8 +732,9 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
   // Where S_C and the fan face one way, the slab they lie in bounds E(P)
   // (header: Slab bound); else, or where that bound is too wide, the branch
   // and bound.
-  const double slab = surfaceTriangles
-    ? SlabPatchError(primitives.Meshes[leaf->Primitive], *surfaceTriangles, surface, fan, delta, slack)
+  const MeshSolid& mesh = primitives.Meshes[leaf->Primitive];
+  const double slab = surfaceTriangles && sceneOfOneMesh && mesh.EveryEdgeHasTwoTriangles()
+    ? SlabPatchError(mesh, *surfaceTriangles, surface, fan, delta, slack)
     : HUGE_VAL;
   if (slab + delta <= tolerance)
   {

@@ -7,7 +7,8 @@
 // over the leaf's listed triangles tau (a superset of those meeting C). The
 // patch predicted is a fan around an apex c that depends on S_C and C only
 // (MeshCellApex below; the extraction may draw a fan from a loop point
-// instead, certified on its own, SurfaceExtraction.cxx): the triangles
+// instead, certified on its own - by the slab bound from the prediction's
+// chords or a branch and bound - SurfaceExtraction.cxx): the triangles
 // (p_k, p_k+1, c) over the cell's loop p_0 .. p_m-1, whose points are surface
 // crossings on lattice sub-edges in C's faces, each on the crossed
 // triangle's plane, i.e. on S up to rounding.

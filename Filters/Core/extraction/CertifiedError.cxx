@@ -72,7 +72,7 @@ HausdorffEstimate CertifiedCellError(const CellSurface& surface, const CellPatch
 double SlabCellError(const CellSurface& surface, const CellPatches& patches, const TriangleMesh& mesh,
   double chordReach)
 {
-  return surface.OneMesh && surface.Solid
+  return surface.OneMesh && surface.SceneOfOneMesh && surface.Solid && surface.Solid->EveryEdgeHasTwoTriangles()
     ? SlabPatchError(
         *surface.Solid, surface.MeshTriangles, surface.Mesh, PatchTriangles(patches, mesh), chordReach, surface.Slack)
     : HUGE_VAL;

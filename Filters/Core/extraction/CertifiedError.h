@@ -72,7 +72,9 @@ HausdorffEstimate CertifiedCellError(const CellSurface& surface, const CellPatch
   double enough, double giveUp, std::size_t budget);
 
 /// E(P) of the cell's `patches` by the slab bound (SlabBound.h) where one
-/// mesh is the surface: every chord of the patch's loops within
+/// mesh is the surface, in a scene of one closed manifold mesh (elsewhere
+/// the decimation reads the cells' errors as spent room: CertifiedCellError
+/// keeps them tight): every chord of the patch's loops within
 /// `chordReach` of the trace as that bound needs it (SlabBound.h: Loops
 /// refining the cell's own); +inf where it does not apply.
 double SlabCellError(const CellSurface& surface, const CellPatches& patches, const TriangleMesh& mesh,

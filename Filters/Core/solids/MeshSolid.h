@@ -122,6 +122,9 @@ public:
   /// The other triangle of triangle t's edge k (from its corner k to corner
   /// k + 1), or NoTriangle when that edge has not exactly two triangles.
   std::uint32_t Across(std::uint32_t t, int k) const { return this->Neighbours[t][k]; }
+  /// Every edge between exactly two triangles (with the repair's consistent
+  /// orientation, MeshRepair.h: the mesh is a closed oriented surface).
+  bool EveryEdgeHasTwoTriangles() const { return this->Closed; }
   /// Signed distance to the nearest of `triangles` (sign from that triangle's
   /// side; for placing vertices only - topology never uses it).
   double ApproximateSignedDistance(const Vec3& p, const TriangleList& triangles, std::uint32_t* nearest = nullptr) const;
