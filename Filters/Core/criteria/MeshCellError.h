@@ -292,27 +292,26 @@
 // 1/64 and 1/128 took 3.7 % and 4.4 % fewer instructions, the turbine 2.4 %
 // and 3.7 %: the benchmark page, "settled pieces".)
 //
-// Slab bound. In a scene of one closed mesh (every edge between two
-// triangles: S is a 2-cycle, the bound's premise; in other scenes the
-// decimation reads the cells' errors as their triangles' spent room, so they
-// stay as tight as found, below), before its branch and bound the
-// prediction tries SlabPatchError (SlabBound.h): where every triangle of S_C and of the fan
-// faces one way n, E(P) <= sqrt(t^2 + delta^2) + slack, t the thickness along
-// n of the slab holding both. Where that and delta are within the tolerance
-// the cell passes on it: OwnFanError and Bound are read from it, and
-// Attained is the apexes' distance to S_C (the branch and bound's Lower is
-// at least that: an apex is a piece's corner). The extraction tries it too
-// on the final patch - the loop-point fan, or the apex fans over loops
-// refining the cell's own - before the branch and bound of its first
-// certificate (SurfaceExtraction.cxx: its chords' reach is Delta over the
-// cell's own loop, twice that over a loop refining it). The bound is looser
-// than the branch and bound's, but its cells are the flat ones, far within
-// the tolerance: on armadillo at 1/128, 2 187 of the 2 954 predictions that
-// pass (and on fandisk one the branch and bound's budget fails), about
-// 1 350 of the 1 900 loop-point fans; the same cells accepted but a few
-// whose loop-point fan keeps its place (MeshEdgeFanKeptWithin and the first
-// certificates' aim read OwnFanError, Attained): over CGAL's 91 closed demo
-// meshes at 1/64, 16 surfaces changed, by 68 of 385 768 triangles in all,
+// Slab bound. In a scene of one closed mesh (every edge between two triangles:
+// S is a 2-cycle, the bound's premise; in other scenes the decimation reads the
+// cells' errors as their triangles' spent room, so they stay as tight as found,
+// below), before its branch and bound the prediction tries SlabPatchError
+// (SlabBound.h): where every triangle of S_C and of the fan faces one way n,
+// E(P) <= sqrt(t^2 + delta^2) + slack, t the thickness along n of the slab
+// holding both. Where that and delta are within the tolerance the cell passes
+// on it: OwnFanError and Bound are read from it, and Attained is the apexes'
+// distance to S_C (the branch and bound's Lower is at least that: an apex is a
+// piece's corner). The extraction tries it too on the final patch - the loop-
+// point fan, or the apex fans over loops refining the cell's own - before the
+// branch and bound of its first certificate (SurfaceExtraction.cxx: its chords'
+// reach is Delta over the cell's own loop, twice that over a loop refining it).
+// The bound is looser than the branch and bound's, but its cells are the flat
+// ones, far within the tolerance: on armadillo at 1/128, 2 187 of the 2 954
+// predictions that pass (and on fandisk one the branch and bound's budget
+// fails), about 1 350 of the 1 900 loop-point fans; the same cells accepted but
+// a few whose loop-point fan keeps its place (MeshEdgeFanKeptWithin and the
+// first certificates' aim read OwnFanError, Attained): over CGAL's 91 closed
+// demo meshes at 1/64, 16 surfaces changed, by 68 of 385 768 triangles in all,
 // with the same topology, guarantees and no larger bound.
 //
 // Cells no larger than the tolerance keep their usual patch
@@ -497,8 +496,9 @@ bool PredictCreaseApex(const PolygonSet& surface, const Box3& cell, const std::v
 /// E(P) + delta having failed before E(P) was proven).
 /// `surface`: S_C when the caller has it (SurfaceInCell with `cell`), else
 /// null; `surfaceTriangles`: its polygons' triangles, where given (else the
-/// slab bound is not tried: header, Slab bound). With `probesFirst`, the fan's probes (header: Probes) may fail it
-/// before the branch and bound (then prediction.ProbeStrayed is set), and,
+/// slab bound is not tried: header, Slab bound). With `probesFirst`, the
+/// fan's probes (header: Probes) may fail it before the branch and bound
+/// (then prediction.ProbeStrayed is set), and,
 /// given the cell's `creases` (CreasesInCell, in a scene of one mesh, where
 /// its fan must follow them), so may fans that follow them around no apex
 /// (header: Creases first; then prediction.Creases is NoneFollows, and it

@@ -2,18 +2,17 @@
 // where S_C and its fan both face one way (issue 17's "mesh inputs" bound,
 // made two-sided; MeshCellError.h's setting and names).
 //
-// Setting. S_C is the part in the cell C of a closed oriented mesh - every
-// edge between two triangles that walk it opposite ways, so that S is a
-// 2-cycle (the callers ask MeshSolid::EveryEdgeHasTwoTriangles; the repair
-// orients them, MeshRepair.h) - and its boundary is the trace T on C's
-// faces: one arc A_c per chord c of the
-// cell's loops (the tiles passed the face tests - the surface crosses each in
-// one arc whose ends are its chord's, BoundaryLoops.h; a crease tile's two
-// chords a -> x, x -> b each take their half of it, CreaseCrossing.h). The
-// patch P spans those loops - a fan around an apex or from a loop point,
-// any triangulated surface whose boundary they are; delta_c bounds the arc
-// A_c's distance from its chord c (MeasureChords: every point of S on c's
-// tile or half).
+// Setting. S_C is the part in the cell C of a closed oriented mesh - every edge
+// between two triangles that walk it opposite ways, so that S is a 2-cycle (the
+// callers ask MeshSolid::EveryEdgeHasTwoTriangles; the repair orients them,
+// MeshRepair.h) - and its boundary is the trace T on C's faces: one arc A_c per
+// chord c of the cell's loops (the tiles passed the face tests - the surface
+// crosses each in one arc whose ends are its chord's, BoundaryLoops.h; a crease
+// tile's two chords a -> x, x -> b each take their half of it,
+// CreaseCrossing.h). The patch P spans those loops - a fan around an apex or
+// from a loop point, any triangulated surface whose boundary they are; delta_c
+// bounds the arc A_c's distance from its chord c (MeasureChords: every point of
+// S on c's tile or half).
 // Take a unit direction n, heights h(x) = x . n, the projection pi along n
 // onto a plane across it, and t = the thickness of the slab of heights
 // holding S_C and P (their corners: P's points are convex combinations of
@@ -24,14 +23,14 @@
 //   E(P) <= sqrt(t^2 + delta^2),  delta = max over chords of delta_c.
 //
 // Proof. Degree: for a compact oriented piecewise-linear surface F with
-// boundary curve dF and a point x of the plane off pi(dF), the signed count
-// of F's points over x is the winding number w(pi(dF), x); where every
-// triangle of F faces along n each point over x counts +1, so F has a point
-// over x exactly where w(pi(dF), x) >= 1 (where w != 0, F has one whatever
-// its triangles' facing). Let L_T be the chord polygon of each loop
-// traversed as T is (the loop itself, or it reversed - the same for every
-// loop, since loops and fans alike take their orientation from the solid's
-// inside (BoundaryLoops.h); the argument needs no more). As 1-cycles T - L_T = sum over chords of C_c, C_c =
+// boundary curve dF and a point x of the plane off pi(dF), the signed count of
+// F's points over x is the winding number w(pi(dF), x); where every triangle of
+// F faces along n each point over x counts +1, so F has a point over x exactly
+// where w(pi(dF), x) >= 1 (where w != 0, F has one whatever its triangles'
+// facing). Let L_T be the chord polygon of each loop traversed as T is (the
+// loop itself, or it reversed - the same for every loop, since loops and fans
+// alike take their orientation from the solid's inside (BoundaryLoops.h); the
+// argument needs no more). As 1-cycles T - L_T = sum over chords of C_c, C_c =
 // A_c followed by c backwards, so
 //   w(T, x) - w(L_T, x) = sum_c w(C_c, x).                            (1)
 // A point x with w(C_c, x) != 0 lies in the convex hull of pi(C_c); every
