@@ -1,6 +1,6 @@
 #include "SlabBound.h"
 
-#include "SymmetricEigen.h"
+#include "BestFitNormal.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,41 +32,19 @@ Vec3 MeanNormal(const PolygonSet& surface)
   return length > 0.0 ? mean * (1.0 / length) : Vec3(0.0, 0.0, 0.0);
 }
 
-/// The unit normal of the plane fitted to S_C's corners (least squares: the
-/// eigenvector of their scatter with the least eigenvalue), turned to the
-/// side of `along`.
+/// The unit normal of the plane fitted to S_C's corners (least squares,
+/// BestFitNormal.h), turned to the side of `along`; zero where it vanishes.
 Vec3 FittedNormal(const PolygonSet& surface, const Vec3& along)
 {
-  Vec3 centre(0.0, 0.0, 0.0);
-  std::size_t count = 0;
-  for (const ConvexPolygon& q : surface)
-  {
-    for (const Vec3& p : q.Points)
+  const Vec3 normal = BestFitNormal([&](const auto& visit) {
+    for (const ConvexPolygon& q : surface)
     {
-      centre = centre + p;
-      ++count;
-    }
-  }
-  centre = centre * (1.0 / static_cast<double>(count));
-  double scatter[3][3] = {};
-  for (const ConvexPolygon& q : surface)
-  {
-    for (const Vec3& p : q.Points)
-    {
-      const Vec3 d = p - centre;
-      for (int a = 0; a < 3; ++a)
+      for (const Vec3& p : q.Points)
       {
-        for (int b = 0; b < 3; ++b)
-        {
-          scatter[a][b] += d[a] * d[b];
-        }
+        visit(p);
       }
     }
-  }
-  double vectors[3][3], values[3];
-  SymmetricEigen(scatter, vectors, values);
-  const int least = values[0] <= values[1] && values[0] <= values[2] ? 0 : values[1] <= values[2] ? 1 : 2;
-  const Vec3 normal(vectors[0][least], vectors[1][least], vectors[2][least]);
+  });
   const double length = Norm(normal);
   return length > 0.0 ? normal * ((Dot(normal, along) < 0.0 ? -1.0 : 1.0) / length) : Vec3(0.0, 0.0, 0.0);
 }

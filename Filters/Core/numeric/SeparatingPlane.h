@@ -15,7 +15,7 @@
 // themselves.
 #pragma once
 
-#include "SymmetricEigen.h"
+#include "BestFitNormal.h"
 #include "Vector3.h"
 
 #include <vector>
@@ -34,47 +34,19 @@ struct SeparatingPlane
 
 namespace detail
 {
-/// The smallest-variance direction of `points` (zero if fewer than three).
+/// The smallest-variance direction of the points of `sets` (zero if fewer
+/// than three).
 inline Vec3 BestFitNormal(const std::vector<const std::vector<Vec3>*>& sets)
 {
-  Vec3 mean;
-  std::size_t n = 0;
-  for (const auto* set : sets)
-  {
-    for (const Vec3& p : *set)
+  return tpc::BestFitNormal([&](const auto& visit) {
+    for (const auto* set : sets)
     {
-      mean += p;
-      ++n;
-    }
-  }
-  if (n < 3)
-  {
-    return {};
-  }
-  mean = mean * (1.0 / static_cast<double>(n));
-  double c[3][3] = { { 0, 0, 0 }, { 0, 0, 0 }, { 0, 0, 0 } };
-  for (const auto* set : sets)
-  {
-    for (const Vec3& p : *set)
-    {
-      const Vec3 d = p - mean;
-      for (int i = 0; i < 3; ++i)
+      for (const Vec3& p : *set)
       {
-        for (int j = 0; j < 3; ++j)
-        {
-          c[i][j] += d[i] * d[j];
-        }
+        visit(p);
       }
     }
-  }
-  double vectors[3][3], values[3];
-  SymmetricEigen(c, vectors, values);
-  int smallest = 0;
-  for (int k = 1; k < 3; ++k)
-  {
-    smallest = values[k] < values[smallest] ? k : smallest;
-  }
-  return { vectors[0][smallest], vectors[1][smallest], vectors[2][smallest] };
+  });
 }
 
 inline Vec3 Centroid(const std::vector<Vec3>& points)
