@@ -626,6 +626,15 @@ double ApexesAttained(const PolygonSet& surface, const std::vector<Vec3>& apexes
   return attained;
 }
 
+/// The slab bound (and its local heights) sheet by sheet: the largest over
+/// S_C's sheets, each with its loops' fans and chords (header: Slab bound,
+/// Several sheets); +inf where the sheets cannot be matched to the loops
+/// `loops` (their chords' deltas `chordDelta`, their fans `fan`, loop by
+/// loop). Defined below.
+double SheetwiseSlabError(const MeshSolid& mesh, const TriangleList& surfaceTriangles, const PolygonSet& surface,
+  const Box3& cell, const std::vector<std::vector<Vec3>>& loops, const std::vector<double>& chordDelta,
+  const std::vector<SourceTriangle>& fan, double delta, double slack, double enough);
+
 /// Whether one of the fans over `loops` around the sets of crease points
 /// CreaseApexSets gives for `apexes` follows every crease of `creases`
 /// within `reach` (header: Creases first).
@@ -729,13 +738,20 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
       return HUGE_VAL;
     }
   }
-  // Where S_C and the fan face one way, the slab they lie in bounds E(P)
-  // (header: Slab bound); else, or where that bound is too wide, the branch
-  // and bound.
+  // Where S_C and the fan face one way, the slab they lie in - or its local
+  // heights - bound E(P), or sheet by sheet where S_C is several (header: Slab
+  // bound); else, or where those bounds are too wide, the branch and bound.
   const MeshSolid& mesh = primitives.Meshes[leaf->Primitive];
-  const double slab = surfaceTriangles && sceneOfOneMesh && mesh.EveryEdgeHasTwoTriangles()
-    ? SlabPatchError(mesh, *surfaceTriangles, surface, fan, delta, slack)
-    : HUGE_VAL;
+  const bool slabApplies = surfaceTriangles && sceneOfOneMesh && mesh.EveryEdgeHasTwoTriangles();
+  const double within = tolerance - delta;
+  const OwnChords own{ &points, &chordDelta, HUGE_VAL, false, cell };
+  double slab = slabApplies ? SlabPatchError(mesh, *surfaceTriangles, surface, fan, delta, slack, own, within, within)
+                            : HUGE_VAL;
+  if (slabApplies && !(slab <= within) && points.size() > 1)
+  {
+    slab = std::min(
+      slab, SheetwiseSlabError(mesh, *surfaceTriangles, surface, cell, points, chordDelta, fan, delta, slack, within));
+  }
   if (slab + delta <= tolerance)
   {
     prediction.Loops = std::move(points);
@@ -863,6 +879,120 @@ SurfaceSheets SheetsInCell(const MeshSolid& mesh, const TriangleList& meeting, c
     sheets.SheetOf.push_back(sheet);
   }
   return sheets;
+}
+
+/// The sheet of S_C `surface` (its polygons' sheets `sheets`) every point of
+/// `loop` lies on within `reach` - the one sheet near each - or NoSheet.
+std::uint32_t SheetOfLoop(const PolygonSet& surface, const SurfaceSheets& sheets, const std::vector<Vec3>& loop,
+  double reach)
+{
+  constexpr std::uint32_t NoSheet = UINT32_MAX;
+  std::uint32_t found = NoSheet;
+  for (const Vec3& p : loop)
+  {
+    bool near = false;
+    for (std::size_t i = 0; i < surface.size(); ++i)
+    {
+      if (surface.Bounds(i).Distance2(p) <= reach * reach && surface.Distance(p, i) <= reach)
+      {
+        if (found != NoSheet && sheets.SheetOf[i] != found)
+        {
+          return NoSheet;
+        }
+        found = sheets.SheetOf[i];
+        near = true;
+      }
+    }
+    if (!near)
+    {
+      return NoSheet;
+    }
+  }
+  return found;
+}
+
+/// Whether no mesh vertex in the closed `cell` is a corner of triangles of
+/// two sheets (`sheets`, over S_C's triangles `meeting`).
+bool SheetsApartInCell(
+  const MeshSolid& mesh, const TriangleList& meeting, const SurfaceSheets& sheets, const Box3& cell)
+{
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> corners; // (vertex, sheet)
+  for (std::size_t i = 0; i < meeting.size(); ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      if (cell.Contains(mesh.Vertex(meeting[i], k)))
+      {
+        corners.emplace_back(mesh.Triangles()[meeting[i]][k], sheets.SheetOf[i]);
+      }
+    }
+  }
+  std::sort(corners.begin(), corners.end());
+  for (std::size_t i = 1; i < corners.size(); ++i)
+  {
+    if (corners[i].first == corners[i - 1].first && corners[i].second != corners[i - 1].second)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+double SheetwiseSlabError(const MeshSolid& mesh, const TriangleList& surfaceTriangles, const PolygonSet& surface,
+  const Box3& cell, const std::vector<std::vector<Vec3>>& loops, const std::vector<double>& chordDelta,
+  const std::vector<SourceTriangle>& fan, double delta, double slack, double enough)
+{
+  const SurfaceSheets sheets = SheetsInCell(mesh, surfaceTriangles, cell);
+  if (sheets.Count < 2 || sheets.Count > loops.size() || !SheetsApartInCell(mesh, surfaceTriangles, sheets, cell))
+  {
+    return HUGE_VAL;
+  }
+  std::vector<std::uint32_t> sheetOf(loops.size());
+  std::vector<bool> hasLoop(sheets.Count, false);
+  for (std::size_t l = 0; l < loops.size(); ++l)
+  {
+    sheetOf[l] = SheetOfLoop(surface, sheets, loops[l], slack);
+    if (sheetOf[l] >= sheets.Count)
+    {
+      return HUGE_VAL;
+    }
+    hasLoop[sheetOf[l]] = true;
+  }
+  if (std::find(hasLoop.begin(), hasLoop.end(), false) != hasLoop.end())
+  {
+    return HUGE_VAL;
+  }
+  // Each sheet with its loops, their fans and chords, bounded on its own.
+  double largest = 0.0;
+  for (std::uint32_t s = 0; s < sheets.Count && largest <= enough; ++s)
+  {
+    PolygonSet part;
+    part.SetSlackMagnitude(surface.GetSlackMagnitude());
+    TriangleList partTriangles;
+    for (std::size_t i = 0; i < surface.size(); ++i)
+    {
+      if (sheets.SheetOf[i] == s)
+      {
+        part.Add(surface[i].Points.begin(), surface[i].Points.size());
+        partTriangles.push_back(surfaceTriangles[i]);
+      }
+    }
+    std::vector<std::vector<Vec3>> partLoops;
+    std::vector<double> partDeltas;
+    std::vector<SourceTriangle> partFan;
+    for (std::size_t l = 0, first = 0; l < loops.size(); first += loops[l].size(), ++l)
+    {
+      if (sheetOf[l] == s)
+      {
+        partLoops.push_back(loops[l]);
+        partDeltas.insert(partDeltas.end(), chordDelta.begin() + first, chordDelta.begin() + first + loops[l].size());
+        partFan.insert(partFan.end(), fan.begin() + first, fan.begin() + first + loops[l].size());
+      }
+    }
+    const OwnChords own{ &partLoops, &partDeltas, HUGE_VAL, false, cell };
+    largest = std::max(largest, SlabPatchError(mesh, partTriangles, part, partFan, delta, slack, own, enough, enough));
+  }
+  return largest;
 }
 
 /// Whether an apex `apexOf(t)` or a point of a spoke to it from the crossing

@@ -1,8 +1,10 @@
 #include "SlabBound.h"
 
 #include "BestFitNormal.h"
+#include "BoundedVector.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 namespace tpc
@@ -86,20 +88,531 @@ double SlabThickness(const MeshSolid& mesh, const TriangleList& surfaceTriangles
   const double thickness = highest - lowest;
   return std::isnan(thickness) ? HUGE_VAL : thickness;
 }
+
+/// The slope limit of the local heights' bound (header: Local heights): a
+/// triangle's normal N has N . n >= |N| / SteepLimit.
+constexpr double SteepLimit = 16.0;
+
+/// Whether a triangle of normal `normal` (any length) is steep enough along
+/// `n` for the local heights (header).
+bool SteepAlong(const Vec3& normal, const Vec3& n)
+{
+  return SteepLimit * Dot(normal, n) >= Norm(normal);
+}
+
+/// Coordinates in the orthonormal frame (E1, E2, N), N = n: across n, then
+/// the height along it. (E1 x E2 = N: a triangle facing along n turns
+/// counterclockwise in (s, t).)
+struct HeightFrame
+{
+  Vec3 E1, E2, N;
+
+  explicit HeightFrame(const Vec3& n)
+    : N(n)
+  {
+    int least = 0; // (the axis least along n, crossed with it)
+    for (int a = 1; a < 3; ++a)
+    {
+      least = std::fabs(n[a]) < std::fabs(n[least]) ? a : least;
+    }
+    Vec3 axis(0.0, 0.0, 0.0);
+    axis[least] = 1.0;
+    this->E1 = Normalized(Cross(n, axis));
+    this->E2 = Cross(n, this->E1);
+  }
+  Vec3 Of(const Vec3& p) const { return Vec3(Dot(p, this->E1), Dot(p, this->E2), Dot(p, this->N)); }
+};
+
+/// A convex polygon's corners in a HeightFrame, cut by half-spaces. (A cut
+/// adds a corner at most, and rounding on a near-degenerate polygon rarely
+/// one more: a cut that would pass the capacity makes the bound give up.)
+using FrameCorners = BoundedVector<Vec3, 48>;
+
+/// The (s, t) box of some corners.
+struct Shadow
+{
+  double Lo[2] = { HUGE_VAL, HUGE_VAL }, Hi[2] = { -HUGE_VAL, -HUGE_VAL };
+
+  void Hold(const Vec3& p)
+  {
+    for (int a = 0; a < 2; ++a)
+    {
+      this->Lo[a] = std::min(this->Lo[a], p[a]);
+      this->Hi[a] = std::max(this->Hi[a], p[a]);
+    }
+  }
+  bool Meets(const Shadow& other) const
+  {
+    return !(this->Lo[0] > other.Hi[0] || other.Lo[0] > this->Hi[0] || this->Lo[1] > other.Hi[1] ||
+      other.Lo[1] > this->Hi[1]);
+  }
+};
+
+/// The half-space Normal . x <= Offset of frame coordinates (a half-plane of
+/// (s, t) where Normal[2] = 0).
+struct HalfSpace
+{
+  Vec3 Normal;
+  double Offset;
+};
+
+/// `points` cut to `half`, every coordinate carried along each edge (the
+/// heights are affine there); false where the cut would pass the capacity.
+bool CutTo(FrameCorners& points, const HalfSpace& half)
+{
+  // (Most cuts keep all or nothing: those are told first.)
+  const std::size_t m = points.size();
+  std::array<double, FrameCorners::capacity()> beyond;
+  std::size_t in = 0;
+  for (std::size_t i = 0; i < m; ++i)
+  {
+    beyond[i] = Dot(half.Normal, points[i]) - half.Offset;
+    in += beyond[i] <= 0.0 ? 1 : 0;
+  }
+  if (in == m)
+  {
+    return true;
+  }
+  if (in == 0)
+  {
+    points.clear();
+    return true;
+  }
+  FrameCorners kept;
+  for (std::size_t i = 0; i < m; ++i)
+  {
+    const Vec3& p = points[i];
+    const Vec3& q = points[(i + 1) % m];
+    const double dp = beyond[i], dq = beyond[(i + 1) % m];
+    const bool inP = dp <= 0.0, crosses = inP != (dq <= 0.0);
+    if (kept.size() + (inP ? 1 : 0) + (crosses ? 1 : 0) > kept.capacity())
+    {
+      return false;
+    }
+    if (inP)
+    {
+      kept.push_back(p);
+    }
+    if (crosses)
+    {
+      kept.push_back(p + (q - p) * (dp / (dp - dq)));
+    }
+  }
+  points = kept;
+  return true;
+}
+
+/// `points` cut to every half-space of `halves`; false where a cut gives up.
+template <typename HalfSpaces>
+bool CutToAll(FrameCorners& points, const HalfSpaces& halves)
+{
+  for (const HalfSpace& half : halves)
+  {
+    if (points.empty())
+    {
+      return true;
+    }
+    if (!CutTo(points, half))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// The largest of `value` over `corners` (0 where there are none; +inf for
+/// a NaN).
+template <typename Value>
+double LargestAt(const FrameCorners& corners, const Value& value)
+{
+  double largest = 0.0;
+  for (const Vec3& p : corners)
+  {
+    const double v = value(p);
+    largest = v <= largest ? largest : (std::isnan(v) ? HUGE_VAL : v);
+  }
+  return largest;
+}
+
+/// A triangle of P in the frame: its corners, its shadow's box and sides,
+/// and its plane (Normal . (x - Corners[0]) = 0, Normal[2] > 0).
+struct FrameTriangle
+{
+  std::array<Vec3, 3> Corners;
+  Shadow Box;
+  std::array<HalfSpace, 3> Sides;
+  Vec3 Normal;
+
+  double HeightAt(const Vec3& x) const
+  {
+    const Vec3& c = this->Corners[0];
+    return c[2] - (this->Normal[0] * (x[0] - c[0]) + this->Normal[1] * (x[1] - c[1])) / this->Normal[2];
+  }
+};
+
+/// The face of `cell` holding both `a` and `b` - its axis, and its side in
+/// `side` - or -1 where no face holds both within `near`, or two do (a chord
+/// along an edge).
+int SharedFace(const Vec3& a, const Vec3& b, const Box3& cell, double near, double& side)
+{
+  int face = -1;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (double at : { cell.lo[axis], cell.hi[axis] })
+    {
+      if (std::fabs(a[axis] - at) <= near && std::fabs(b[axis] - at) <= near)
+      {
+        if (face >= 0)
+        {
+          return -1;
+        }
+        face = axis;
+        side = at;
+      }
+    }
+  }
+  return face;
+}
+
+/// A chord c = [a, b] as the local heights see it (header: Local heights):
+/// its ends and direction in the frame; where its face is known, the unit
+/// vectors Across (in the face's plane, across c) and Out (the face's
+/// normal), and the range [Low, High] of Across . (w - a) over the points
+/// w of its arc and refining polylines (0 in it); and the rectangle of the
+/// (s, t) plane holding R_c, widened by the slack, with its box.
+struct ChordView
+{
+  Vec3 A, B, Along;
+  double Length = 0.0;
+  bool OnFace = false;
+  Vec3 Across, Out;
+  double Low = 0.0, High = 0.0;
+  std::array<HalfSpace, 4> Rectangle;
+  Shadow Box;
+};
+
+/// The rectangle of the (s, t) plane aligned with the shadow of the chord
+/// from `a` to `b` (frame coordinates) holding every point of `region`
+/// (frame coordinates) widened by `reach`, into `chord`.
+void RectangleAround(const Vec3& a, const Vec3& b, const FrameCorners& region, double reach, ChordView& chord)
+{
+  const double ds = b[0] - a[0], dt = b[1] - a[1], length = std::hypot(ds, dt);
+  const double us = length > 0.0 ? ds / length : 1.0, ut = length > 0.0 ? dt / length : 0.0;
+  double lo[2] = { HUGE_VAL, HUGE_VAL }, hi[2] = { -HUGE_VAL, -HUGE_VAL }; // (along u, along u's normal w)
+  for (const Vec3& p : region)
+  {
+    const double along = us * p[0] + ut * p[1], side = -ut * p[0] + us * p[1];
+    lo[0] = std::min(lo[0], along - reach);
+    hi[0] = std::max(hi[0], along + reach);
+    lo[1] = std::min(lo[1], side - reach);
+    hi[1] = std::max(hi[1], side + reach);
+  }
+  chord.Rectangle = { HalfSpace{ Vec3(us, ut, 0.0), hi[0] }, HalfSpace{ Vec3(-us, -ut, 0.0), -lo[0] },
+    HalfSpace{ Vec3(-ut, us, 0.0), hi[1] }, HalfSpace{ Vec3(ut, -us, 0.0), -lo[1] } };
+  for (double along : { lo[0], hi[0] })
+  {
+    for (double side : { lo[1], hi[1] })
+    {
+      chord.Box.Hold(Vec3(us * along - ut * side, ut * along + us * side, 0.0));
+    }
+  }
+}
+
+/// The chord from `a` to `b` (world coordinates) with reach `delta` in
+/// `cell` (header: Local heights). Where a face of the cell holds both
+/// ends (within `near`), its arc and refining polylines lie in that face,
+/// in the cell, within delta of c: in the region a + alpha Along + beta
+/// Across, -delta <= alpha <= |c| + delta, Low <= beta <= High - Low and
+/// High the range of beta over S_C's part on the face within delta of c's
+/// box, which holds the arc (and the polylines' corners), clamped to
+/// [-delta, delta] - and R_c is the shadow of that region's part in the
+/// cell. Else R_c is the chord's shadow widened by delta.
+ChordView ViewOf(const HeightFrame& frame, const PolygonSet& surface, const Vec3& a, const Vec3& b,
+  const Box3& cell, double near, double delta, double slack)
+{
+  ChordView chord;
+  chord.A = frame.Of(a);
+  chord.B = frame.Of(b);
+  chord.Length = Norm(b - a);
+  const Vec3 along = chord.Length > 0.0 ? (b - a) * (1.0 / chord.Length) : Vec3(0.0, 0.0, 0.0);
+  chord.Along = frame.Of(along);
+  double side = 0.0;
+  const int face = chord.Length > 0.0 ? SharedFace(a, b, cell, near, side) : -1;
+  FrameCorners region;
+  if (face >= 0)
+  {
+    Vec3 out(0.0, 0.0, 0.0);
+    out[face] = 1.0;
+    const Vec3 across = Normalized(Cross(out, along));
+    chord.OnFace = true;
+    chord.Out = frame.Of(out);
+    chord.Across = frame.Of(across);
+    // (S_C's corners clipped to the cell lie on its faces exactly.)
+    Box3 trace = cell;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      trace.lo[axis] = axis == face ? side : std::max(cell.lo[axis], std::min(a[axis], b[axis]) - delta - slack);
+      trace.hi[axis] = axis == face ? side : std::min(cell.hi[axis], std::max(a[axis], b[axis]) + delta + slack);
+    }
+    double low = 0.0, high = 0.0;
+    for (std::size_t i = 0; i < surface.size(); ++i)
+    {
+      if (surface.Bounds(i).Overlaps(trace))
+      {
+        BoundedVector<Vec3, 2 * ClippedCorners::capacity()> clipped;
+        for (const Vec3& p : surface[i].Points)
+        {
+          clipped.push_back(p);
+        }
+        ClipToBox(clipped, trace);
+        for (const Vec3& p : clipped)
+        {
+          low = std::min(low, Dot(across, p - a));
+          high = std::max(high, Dot(across, p - a));
+        }
+      }
+    }
+    chord.Low = std::max(low - slack, -delta);
+    chord.High = std::min(high + slack, delta);
+    BoundedVector<Vec3, 16> corners{ a - along * delta + across * chord.Low,
+      b + along * delta + across * chord.Low, b + along * delta + across * chord.High,
+      a - along * delta + across * chord.High };
+    Box3 within = cell; // (open along the face's axis: the corners are on its plane up to rounding)
+    within.lo[face] = -HUGE_VAL;
+    within.hi[face] = HUGE_VAL;
+    ClipToBox(corners, within);
+    for (const Vec3& p : corners)
+    {
+      region.push_back(frame.Of(p));
+    }
+  }
+  if (region.empty())
+  {
+    chord.OnFace = false;
+    region.push_back(chord.A);
+    region.push_back(chord.B);
+    RectangleAround(chord.A, chord.B, region, delta + slack, chord);
+  }
+  else
+  {
+    RectangleAround(chord.A, chord.B, region, slack, chord);
+  }
+  return chord;
+}
+
+/// The largest over `corners` (frame coordinates) cut to R_c of a bound of
+/// the distance from their points to the far side - S_C's points to P's,
+/// P's to S_C's (header: Local heights) - in three parts: beyond a (the
+/// distance to a, a loop point on both), beyond b (to b), and between
+/// (points whose nearest point of c's line is on c: there the far side's
+/// point w over that nearest point u - on the arc, or on a refining polyline
+/// - has w - u = beta Across, Low <= beta <= High, so |x - w| <=
+/// sqrt((Out . (x - a))^2 + max over beta of (Across . (x - a) - beta)^2),
+/// convex; with no face known, d(x, c) + delta). `farSideOnC`: the far side
+/// holds c itself (S_C's points against the own loops' P): there d(x, c).
+double FarthestOver(const FrameCorners& corners, const ChordView& chord, double delta, bool farSideOnC)
+{
+  const double alongA = Dot(chord.Along, chord.A), alongB = Dot(chord.Along, chord.B);
+  const HalfSpace beyondA{ chord.Along, alongA }, beforeB{ chord.Along, alongB };
+  const HalfSpace afterA{ chord.Along * -1.0, -alongA }, beyondB{ chord.Along * -1.0, -alongB };
+  FrameCorners inR = corners;
+  if (!CutToAll(inR, chord.Rectangle))
+  {
+    return HUGE_VAL;
+  }
+  if (inR.empty())
+  {
+    return 0.0;
+  }
+  double largest = 0.0;
+  for (const auto& [half, end] : { std::pair{ beyondA, chord.A }, std::pair{ beyondB, chord.B } })
+  {
+    FrameCorners part = inR;
+    if (!CutTo(part, half))
+    {
+      return HUGE_VAL;
+    }
+    largest = std::max(largest, LargestAt(part, [&](const Vec3& x) { return Norm(x - end); }));
+  }
+  FrameCorners between = inR;
+  if (!CutTo(between, afterA) || !CutTo(between, beforeB))
+  {
+    return HUGE_VAL;
+  }
+  const auto toFarSide = [&](const Vec3& x) {
+    if (farSideOnC)
+    {
+      return SegmentDistance(x, chord.A, chord.B);
+    }
+    if (!chord.OnFace)
+    {
+      return SegmentDistance(x, chord.A, chord.B) + delta;
+    }
+    const double out = Dot(chord.Out, x - chord.A), across = Dot(chord.Across, x - chord.A);
+    const double apart = std::max(std::fabs(across - chord.Low), std::fabs(across - chord.High));
+    return std::sqrt(out * out + apart * apart);
+  };
+  const double viaC = LargestAt(between, toFarSide);
+  const double viaEnds = std::min(LargestAt(between, [&](const Vec3& x) { return Norm(x - chord.A); }),
+    LargestAt(between, [&](const Vec3& x) { return Norm(x - chord.B); }));
+  return std::max(largest, std::min(viaC, viaEnds));
+}
+
+/// The local heights' bound max(G, D_S, D_P) along `n` (header: Local
+/// heights), without the slack: +inf where a triangle is not steep enough,
+/// a cut gives up, or a term passes `giveUp`. (The triangles face along n:
+/// SlabThickness found them so.)
+double LocalHeightsBound(const MeshSolid& mesh, const TriangleList& surfaceTriangles, const PolygonSet& surface,
+  const std::vector<SourceTriangle>& patch, const OwnChords& chords, const Vec3& n, double slack, double giveUp)
+{
+  const HeightFrame frame(n);
+  std::vector<FrameTriangle> fan(patch.size());
+  for (std::size_t i = 0; i < patch.size(); ++i)
+  {
+    FrameTriangle& f = fan[i];
+    for (int k = 0; k < 3; ++k)
+    {
+      f.Corners[k] = frame.Of(patch[i][k]);
+      f.Box.Hold(f.Corners[k]);
+    }
+    f.Normal = Cross(f.Corners[1] - f.Corners[0], f.Corners[2] - f.Corners[0]);
+    if (!SteepAlong(f.Normal, Vec3(0.0, 0.0, 1.0)))
+    {
+      return HUGE_VAL;
+    }
+    for (int k = 0; k < 3; ++k) // (counterclockwise: inside is left of each side)
+    {
+      const Vec3 &p = f.Corners[k], &q = f.Corners[(k + 1) % 3];
+      const Vec3 outward(q[1] - p[1], p[0] - q[0], 0.0);
+      f.Sides[k] = HalfSpace{ outward, Dot(outward, p) };
+    }
+  }
+  std::vector<Vec3> corners; // S_C's, polygon i's from first[i] to first[i + 1]
+  corners.reserve(4 * surface.size());
+  std::vector<std::size_t> first{ 0 };
+  first.reserve(surface.size() + 1);
+  std::vector<Shadow> shadows(surface.size());
+  for (std::size_t i = 0; i < surface.size(); ++i)
+  {
+    const std::uint32_t t = surfaceTriangles[i];
+    const Vec3 &a = mesh.Vertex(t, 0), &b = mesh.Vertex(t, 1), &c = mesh.Vertex(t, 2);
+    // (S_C's polygons have at most ClippedCorners' corners: room for the cuts.)
+    static_assert(FrameCorners::capacity() >= ClippedCorners::capacity() + 8);
+    if (!SteepAlong(Cross(b - a, c - a), n) || surface[i].Points.size() > ClippedCorners::capacity())
+    {
+      return HUGE_VAL;
+    }
+    for (const Vec3& p : surface[i].Points)
+    {
+      corners.push_back(frame.Of(p));
+      shadows[i].Hold(corners.back());
+    }
+    first.push_back(corners.size());
+  }
+  const auto polygon = [&](std::size_t i) {
+    FrameCorners p;
+    for (std::size_t j = first[i]; j < first[i + 1]; ++j)
+    {
+      p.push_back(corners[j]);
+    }
+    return p;
+  };
+  // G: each polygon of S_C cut to each triangle of P it may meet.
+  double largest = 0.0;
+  for (std::size_t i = 0; i < surface.size(); ++i)
+  {
+    for (const FrameTriangle& f : fan)
+    {
+      if (!shadows[i].Meets(f.Box))
+      {
+        continue;
+      }
+      FrameCorners cut = polygon(i);
+      if (!CutToAll(cut, f.Sides))
+      {
+        return HUGE_VAL;
+      }
+      largest = std::max(largest, LargestAt(cut, [&](const Vec3& x) { return std::fabs(x[2] - f.HeightAt(x)); }));
+      if (!(largest <= giveUp))
+      {
+        return HUGE_VAL;
+      }
+    }
+  }
+  // D_S and D_P: S_C's polygons and P's triangles in each chord's R_c.
+  // (Loop points lie on their faces up to an ulp or so: a chord's face is
+  // read within 64 of them, its plane then off by far less than the slack.)
+  const double onFace = 64.0 * DBL_EPSILON * chords.Cell.Magnitude();
+  std::size_t k = 0;
+  for (const std::vector<Vec3>& loop : *chords.Loops)
+  {
+    for (std::size_t j = 0; j < loop.size(); ++j, ++k)
+    {
+      const double delta = chords.Deltas ? (k < chords.Deltas->size() ? (*chords.Deltas)[k] : HUGE_VAL) : chords.Delta;
+      if (!(delta < giveUp))
+      {
+        return HUGE_VAL;
+      }
+      const Vec3 &a = loop[j], &b = loop[(j + 1) % loop.size()];
+      const ChordView chord = ViewOf(frame, surface, a, b, chords.Cell, onFace, delta, slack);
+      for (std::size_t i = 0; i < surface.size() && largest <= giveUp; ++i)
+      {
+        largest = shadows[i].Meets(chord.Box)
+          ? std::max(largest, FarthestOver(polygon(i), chord, delta, !chords.Refined))
+          : largest;
+      }
+      for (std::size_t i = 0; i < fan.size() && largest <= giveUp; ++i)
+      {
+        const FrameCorners triangle{ fan[i].Corners[0], fan[i].Corners[1], fan[i].Corners[2] };
+        largest =
+          fan[i].Box.Meets(chord.Box) ? std::max(largest, FarthestOver(triangle, chord, delta, false)) : largest;
+      }
+      if (!(largest <= giveUp))
+      {
+        return HUGE_VAL;
+      }
+    }
+  }
+  return largest;
+}
 } // namespace
 
 double SlabPatchError(const MeshSolid& mesh, const TriangleList& surfaceTriangles, const PolygonSet& surface,
-  const std::vector<SourceTriangle>& patch, double chordReach, double slack)
+  const std::vector<SourceTriangle>& patch, double chordReach, double slack, const OwnChords& chords,
+  double enough, double giveUp)
 {
   if (surface.empty() || patch.empty() || surfaceTriangles.size() != surface.size())
   {
     return HUGE_VAL;
   }
   const Vec3 mean = MeanNormal(surface);
-  const double thickness = std::min(SlabThickness(mesh, surfaceTriangles, surface, patch, mean),
-    SlabThickness(mesh, surfaceTriangles, surface, patch, FittedNormal(surface, mean)));
-  const double bound = std::sqrt(thickness * thickness + chordReach * chordReach) + slack;
-  return std::isnan(bound) ? HUGE_VAL : bound;
+  const std::array<Vec3, 2> directions = { mean, FittedNormal(surface, mean) };
+  std::array<double, 2> thickness{};
+  double best = HUGE_VAL;
+  for (std::size_t d = 0; d < directions.size(); ++d)
+  {
+    thickness[d] = SlabThickness(mesh, surfaceTriangles, surface, patch, directions[d]);
+    const double bound = std::sqrt(thickness[d] * thickness[d] + chordReach * chordReach) + slack;
+    best = std::isnan(bound) ? best : std::min(best, bound);
+  }
+  // (Thinner slabs first: their local heights are likelier to settle.)
+  const std::size_t first = thickness[1] < thickness[0] ? 1 : 0;
+  for (std::size_t d : { first, 1 - first })
+  {
+    if (best <= enough || !chords.Loops)
+    {
+      break;
+    }
+    if (!(thickness[d] < HUGE_VAL))
+    {
+      continue;
+    }
+    const double local =
+      LocalHeightsBound(mesh, surfaceTriangles, surface, patch, chords, directions[d], slack, std::min(giveUp, best))
+      + slack;
+    best = std::min(best, local);
+  }
+  return best;
 }
 
 } // namespace tpc

@@ -70,11 +70,11 @@ HausdorffEstimate CertifiedCellError(const CellSurface& surface, const CellPatch
 }
 
 double SlabCellError(const CellSurface& surface, const CellPatches& patches, const TriangleMesh& mesh,
-  double chordReach)
+  double chordReach, const OwnChords& own, double enough, double giveUp)
 {
   return surface.OneMesh && surface.SceneOfOneMesh && surface.Solid && surface.Solid->EveryEdgeHasTwoTriangles()
-    ? SlabPatchError(
-        *surface.Solid, surface.MeshTriangles, surface.Mesh, PatchTriangles(patches, mesh), chordReach, surface.Slack)
+    ? SlabPatchError(*surface.Solid, surface.MeshTriangles, surface.Mesh, PatchTriangles(patches, mesh), chordReach,
+        surface.Slack, own, enough, giveUp)
     : HUGE_VAL;
 }
 

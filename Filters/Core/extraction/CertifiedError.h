@@ -11,6 +11,7 @@
 #include "MeshBooleanSurface.h"
 #include "MeshCellError.h"
 #include "QuadricCellError.h"
+#include "SlabBound.h"
 #include "TriangleMesh.h"
 
 namespace tpc
@@ -76,8 +77,10 @@ HausdorffEstimate CertifiedCellError(const CellSurface& surface, const CellPatch
 /// the decimation reads the cells' errors as spent room: CertifiedCellError
 /// keeps them tight): every chord of the patch's loops within
 /// `chordReach` of the trace as that bound needs it (SlabBound.h: Loops
-/// refining the cell's own); +inf where it does not apply.
+/// refining the cell's own); where that is above `enough`, the local
+/// heights' bound over the cell's own chords `own` is tried too (SlabBound.h:
+/// Local heights), up to `giveUp`. +inf where neither applies.
 double SlabCellError(const CellSurface& surface, const CellPatches& patches, const TriangleMesh& mesh,
-  double chordReach);
+  double chordReach, const OwnChords& own = {}, double enough = HUGE_VAL, double giveUp = HUGE_VAL);
 
 } // namespace tpc

@@ -246,7 +246,13 @@ bool MeshCellFromLoopPoint(const AdaptiveOctree& tree, std::uint32_t n, const Bo
   const double ownFan = prediction.OwnFanError < HUGE_VAL ? prediction.OwnFanError : 0.0;
   const double keptWithin =
     fromMeshEdge ? std::min(std::max(MeshEdgeFanKeptWithin * tolerance, ownFan), tolerance) : tolerance;
-  const double slab = chordReach < HUGE_VAL ? SlabCellError(surface, fan, mesh, chordReach) : HUGE_VAL;
+  // (The own loop's chords for the local heights: the final loop refines
+  // it where the reach is twice Delta, LoneLoopChordReach.)
+  const Box3 box = tree.Grid.CellBox(tree.Nodes[n].Level, tree.Nodes[n].Ijk);
+  const OwnChords own{ &prediction.Loops, nullptr, prediction.Delta, chordReach != prediction.Delta, box };
+  const double slab = chordReach < HUGE_VAL
+    ? SlabCellError(surface, fan, mesh, chordReach, own, std::min(aim, keptWithin), keptWithin)
+    : HUGE_VAL;
   HausdorffEstimate e = slab <= std::min(aim, keptWithin)
     ? HausdorffEstimate{ slab, 0.0 }
     : CertifiedCellError(surface, fan, mesh, std::min(aim, keptWithin), keptWithin, FirstCertificateBudget);
@@ -419,8 +425,10 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
       // pass over S_C, where skipping it left the branch and bound's
       // attained distances to raise the reported bound - knot1.off at 1/64:
       // 0.0176 -> 0.0188.)
-      const double slab =
-        refined ? SlabCellError(surface, patches, mesh, (same ? 1.0 : 2.0) * predicted.Delta) : HUGE_VAL;
+      const OwnChords own{ &predicted.Loops, nullptr, predicted.Delta, !same, box };
+      const double slab = refined
+        ? SlabCellError(surface, patches, mesh, (same ? 1.0 : 2.0) * predicted.Delta, own, aim, tree.HausdorffTolerance)
+        : HUGE_VAL;
       if (slab <= aim)
       {
         certificate.Error = std::min(certificate.Bound, slab);

@@ -1354,6 +1354,45 @@ TEST(MeshCellError, CellsOfSeveralLoopsAreFannedAroundAnApexEach)
   }
 }
 
+TEST(MeshCellError, TwoCurvedSheetsAreBoundedSheetBySheet)
+{
+  // A thin spherical shell - a ball with a ball hollowed out, as one mesh of
+  // two components - whose walls lie in one cell where cells are larger than
+  // the tolerance: two sheets facing opposite ways, so that no direction
+  // passes the slab bound's facing test for both; each is bounded with its
+  // own loop's fan (MeshCellError.h: Several sheets). Every certificate and
+  // prediction bounds the brute-force distance both ways.
+  const tpc::MeshSolid outer = tpctest::SphereMesh({ 0.02, -0.03, 0.01 }, 0.8, 4);
+  const tpc::MeshSolid inner = tpctest::SphereMesh({ 0.02, -0.03, 0.01 }, 0.74, 4);
+  std::vector<Vec3> points = outer.Points();
+  std::vector<std::array<std::uint32_t, 3>> faces = outer.Triangles();
+  const std::uint32_t base = static_cast<std::uint32_t>(points.size());
+  points.insert(points.end(), inner.Points().begin(), inner.Points().end());
+  for (const auto& f : inner.Triangles())
+  {
+    faces.push_back({ base + f[0], base + f[2], base + f[1] }); // (facing into the hollow)
+  }
+  SceneBuilder b;
+  b.Finish(b.Mesh(tpc::MeshSolid(points, faces)));
+  for (const double tolerance : { 1.0 / 32, 1.0 / 48 })
+  {
+    SCOPED_TRACE(tolerance);
+    const tpctest::ContourRun r = tpctest::Contour(b.Scene, { { -1, -1, -1 }, { 1, 1, 1 } }, tolerance);
+    EXPECT_TRUE(r.Guaranteed);
+    EXPECT_EQ(r.Report.Components, 2);
+    EXPECT_EQ(r.Report.Genus, 0);
+    EXPECT_LE(r.HausdorffBound, r.Tolerance * (1 + 1e-9));
+    const Measured m = CheckEveryMeshCertificate(r, b.Scene.Primitives.Meshes[0]);
+    EXPECT_GE(m.SeveralLoops, 10u);
+    EXPECT_GT(m.WorstRatio, 0.2); // not vacuous
+    std::cout << "spherical shell 1/" << 1 / tolerance << ": " << r.Extraction.Mesh.Triangles.size()
+              << " triangles, " << m.Cells << " certified mesh cells (" << m.OversizedCells
+              << " larger than the tolerance, " << m.SeveralLoops << " of several loops, " << m.BoundChecked
+              << " checked against their prediction), bound " << r.HausdorffBound / r.Tolerance
+              << " tolerance, worst measured/certified " << m.WorstRatio << "\n";
+  }
+}
+
 namespace
 {
 /// The spokes' early tests in `cell` of the one-mesh scene `scene`, at

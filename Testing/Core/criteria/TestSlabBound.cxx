@@ -113,27 +113,33 @@ struct SlabCase
   tpc::PolygonSet Surface;
   std::vector<SourceTriangle> Fan;
   double Delta = 0.0; ///< the largest chord deviation
+  std::vector<std::vector<Vec3>> Loops; ///< the fan's loop
+  std::vector<double> Deltas;           ///< each chord's deviation
 };
 
+/// The cell of the height fields.
+const Box3 UnitCell{ { 0, 0, -1 }, { 1, 1, 1 } };
+
 /// The field's S_C, and the fan over its loop every `step` around S_C's
-/// apex, with its chords' largest deviation from the trace.
+/// apex, with its chords' deviations from the trace.
 SlabCase FanOverField(const HeightField& field, int step)
 {
-  SlabCase c{ tpc::MeshSolid(field.Points, field.Faces), {}, {}, {}, 0.0 };
+  SlabCase c{ tpc::MeshSolid(field.Points, field.Faces), {}, {}, {}, 0.0, {}, {} };
   for (std::uint32_t t = 0; t < field.Faces.size(); ++t)
   {
     c.Listed.push_back(t);
     c.Surface.Add({ c.Mesh.Vertex(t, 0), c.Mesh.Vertex(t, 1), c.Mesh.Vertex(t, 2) });
   }
   const std::vector<Vec3> loop = field.Loop(step);
-  const Box3 cell{ { 0, 0, -1 }, { 1, 1, 1 } };
-  c.Fan = tpc::ApexFan(loop, tpc::MeshCellApex(c.Surface, cell));
+  c.Fan = tpc::ApexFan(loop, tpc::MeshCellApex(c.Surface, UnitCell));
   for (std::size_t k = 0; k < loop.size(); ++k)
   {
     const Vec3& a = loop[k];
     const Vec3& b = loop[(k + 1) % loop.size()];
-    c.Delta = std::max(c.Delta, tpc::ChordDeviation(c.Surface, TileBetween(a, b), a, b));
+    c.Deltas.push_back(tpc::ChordDeviation(c.Surface, TileBetween(a, b), a, b));
+    c.Delta = std::max(c.Delta, c.Deltas.back());
   }
+  c.Loops = { loop };
   return c;
 }
 } // namespace
@@ -190,7 +196,7 @@ TEST(SlabBound, ChordsFarFromTheTraceAreInTheBound)
     };
     const HeightField field(32, height);
     const Box3 cell{ { 0, 0, -1 }, { 1, 1, 0.1 } };
-    SlabCase c{ tpc::MeshSolid(field.Points, field.Faces), {}, {}, {}, 0.0 };
+    SlabCase c{ tpc::MeshSolid(field.Points, field.Faces), {}, {}, {}, 0.0, {}, {} };
     std::vector<SourceTriangle> surface;
     for (std::uint32_t t = 0; t < field.Faces.size(); ++t)
     {
@@ -215,17 +221,24 @@ TEST(SlabBound, ChordsFarFromTheTraceAreInTheBound)
       { { 0, 1, -1 }, { 1, 1, 0.1 } }, { { 0, 0, -1 }, { 0, 1, 0.1 } } };
     for (std::size_t k = 0; k < 4; ++k)
     {
-      c.Delta = std::max(c.Delta, tpc::ChordDeviation(c.Surface, tiles[k], loop[k], loop[(k + 1) % 4]));
+      c.Deltas.push_back(tpc::ChordDeviation(c.Surface, tiles[k], loop[k], loop[(k + 1) % 4]));
+      c.Delta = std::max(c.Delta, c.Deltas.back());
     }
     EXPECT_NEAR(c.Delta, 0.15, 0.002) << bend; // (the top face's chord; the level line is piecewise linear)
     const double bound = tpc::SlabPatchError(c.Mesh, c.Listed, c.Surface, c.Fan, c.Delta, 0.0);
     const double slabAlone = tpc::SlabPatchError(c.Mesh, c.Listed, c.Surface, c.Fan, 0.0, 0.0);
+    // The local heights over the same chords (asked for below any value:
+    // the smaller of both is returned).
+    c.Loops = { loop };
+    const tpc::OwnChords own{ &c.Loops, &c.Deltas, HUGE_VAL, false, cell };
+    const double local = tpc::SlabPatchError(c.Mesh, c.Listed, c.Surface, c.Fan, c.Delta, 0.0, own, 0.0);
     const double measured = Sampled(c.Fan, surface);
     EXPECT_LE(measured, bound) << bend;
+    EXPECT_LE(measured, local) << bend;
     EXPECT_LT(slabAlone, 0.05) << bend;
     EXPECT_GT(measured, 2 * slabAlone) << bend;
-    std::cout << "bend " << bend << ": measured " << measured << ", bound " << bound << ", slab alone "
-              << slabAlone << "\n";
+    std::cout << "bend " << bend << ": measured " << measured << ", bound " << bound << ", local " << local
+              << ", slab alone " << slabAlone << "\n";
   }
 }
 
@@ -249,4 +262,71 @@ TEST(SlabBound, RefusesWhereATriangleFacesTheOtherWay)
   // The lists disagree: no bound.
   tpc::TriangleList shorter(c.Listed.begin(), c.Listed.end() - 1);
   EXPECT_EQ(tpc::SlabPatchError(c.Mesh, shorter, c.Surface, c.Fan, c.Delta, 0.0), HUGE_VAL);
+}
+
+TEST(SlabBound, LocalHeightsBoundTheSampledDistanceOverCurvedSheets)
+{
+  // Bumps several times the chords' deviations, fanned over loops of one
+  // chord a side up to one per grid edge: the slab's thickness is their
+  // whole range, the local heights follow the fan's triangles (header:
+  // Local heights). Each bound is at least the two-sided distance measured.
+  std::mt19937 random(29);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  double tightest = HUGE_VAL;
+  int tighterThanTheSlab = 0;
+  const int trials = 32;
+  for (int trial = 0; trial < trials; ++trial)
+  {
+    const double amplitude = 0.03 + 0.1 * unit(random), fx = 1 + 4 * unit(random), fy = 1 + 4 * unit(random),
+                 phase = 6 * unit(random), tilt = 0.6 * unit(random);
+    const HeightField field(8, [&](double x, double y) {
+      return tilt * (y - 0.5) + amplitude * std::sin(fx * x + phase) * std::cos(fy * y);
+    });
+    const SlabCase c = FanOverField(field, 1 + trial % 8);
+    const double slab = tpc::SlabPatchError(c.Mesh, c.Listed, c.Surface, c.Fan, c.Delta, 0.0);
+    const tpc::OwnChords own{ &c.Loops, &c.Deltas, HUGE_VAL, false, UnitCell };
+    const double bound = tpc::SlabPatchError(c.Mesh, c.Listed, c.Surface, c.Fan, c.Delta, 0.0, own, 0.0);
+    ASSERT_LT(bound, HUGE_VAL) << "trial " << trial;
+    const double measured = Sampled(c.Fan, Triangles(field));
+    EXPECT_LE(measured, bound) << "trial " << trial;
+    tightest = std::min(tightest, bound / measured);
+    tighterThanTheSlab += bound < 0.8 * slab ? 1 : 0;
+  }
+  // Not vacuous: the local heights beat the slab by a fifth in most trials,
+  // and come within 1.3 times of the distance somewhere.
+  EXPECT_GT(tighterThanTheSlab, trials / 2);
+  EXPECT_LT(tightest, 1.3);
+  std::cout << "local heights below 0.8 of the slab in " << tighterThanTheSlab << " of " << trials
+            << " trials; tightest bound / measured " << tightest << "\n";
+}
+
+TEST(SlabBound, LocalHeightsOverLoopsRefiningTheOwn)
+{
+  // The extraction's final loops refine the cell's own (crack patching put
+  // trace points between its loop points): the fan over the fine loop
+  // around the same apex, bounded over the own chords with Refined (their
+  // polylines are within delta_c of them, header).
+  std::mt19937 random(31);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int tighterThanTheSlab = 0;
+  for (int trial = 0; trial < 16; ++trial)
+  {
+    const double amplitude = 0.03 + 0.1 * unit(random), fx = 1 + 4 * unit(random), fy = 1 + 4 * unit(random),
+                 tilt = 0.6 * unit(random);
+    const HeightField field(8, [&](double x, double y) {
+      return tilt * (x - 0.5) + amplitude * std::cos(fx * x) * std::sin(fy * y + 1);
+    });
+    const SlabCase own = FanOverField(field, 8);  // one chord a side
+    const SlabCase fine = FanOverField(field, 2); // its points and the trace's between
+    const Vec3 apex = tpc::MeshCellApex(own.Surface, UnitCell);
+    const std::vector<SourceTriangle> patch = tpc::ApexFan(fine.Loops[0], apex);
+    const double slab = tpc::SlabPatchError(own.Mesh, own.Listed, own.Surface, patch, 2 * own.Delta, 0.0);
+    const tpc::OwnChords chords{ &own.Loops, &own.Deltas, HUGE_VAL, true, UnitCell };
+    const double bound =
+      tpc::SlabPatchError(own.Mesh, own.Listed, own.Surface, patch, 2 * own.Delta, 0.0, chords, 0.0);
+    ASSERT_LT(bound, HUGE_VAL) << "trial " << trial;
+    EXPECT_LE(Sampled(patch, Triangles(field)), bound) << "trial " << trial;
+    tighterThanTheSlab += bound < slab ? 1 : 0;
+  }
+  EXPECT_GT(tighterThanTheSlab, 8);
 }
