@@ -626,15 +626,6 @@ double ApexesAttained(const PolygonSet& surface, const std::vector<Vec3>& apexes
   return attained;
 }
 
-/// The slab bound (and its local heights) sheet by sheet: the largest over
-/// S_C's sheets, each with its loops' fans and chords (header: Slab bound,
-/// Several sheets); +inf where the sheets cannot be matched to the loops
-/// `loops` (their chords' deltas `chordDelta`, their fans `fan`, loop by
-/// loop). Defined below.
-double SheetwiseSlabError(const MeshSolid& mesh, const TriangleList& surfaceTriangles, const PolygonSet& surface,
-  const Box3& cell, const std::vector<std::vector<Vec3>>& loops, const std::vector<double>& chordDelta,
-  const std::vector<SourceTriangle>& fan, double delta, double slack, double enough);
-
 /// Whether one of the fans over `loops` around the sets of crease points
 /// CreaseApexSets gives for `apexes` follows every crease of `creases`
 /// within `reach` (header: Creases first).
@@ -749,8 +740,13 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
                             : HUGE_VAL;
   if (slabApplies && !(slab <= within) && points.size() > 1)
   {
+    std::vector<std::vector<SourceTriangle>> fans;
+    for (std::size_t l = 0; l < points.size(); ++l)
+    {
+      fans.push_back(ApexFan(points[l], apexes[l]));
+    }
     slab = std::min(
-      slab, SheetwiseSlabError(mesh, *surfaceTriangles, surface, cell, points, chordDelta, fan, delta, slack, within));
+      slab, SheetwiseSlabError(mesh, *surfaceTriangles, surface, cell, points, own, fans, delta, slack, within));
   }
   if (slab + delta <= tolerance)
   {
@@ -938,12 +934,15 @@ bool SheetsApartInCell(
   return true;
 }
 
+} // namespace
+
 double SheetwiseSlabError(const MeshSolid& mesh, const TriangleList& surfaceTriangles, const PolygonSet& surface,
-  const Box3& cell, const std::vector<std::vector<Vec3>>& loops, const std::vector<double>& chordDelta,
-  const std::vector<SourceTriangle>& fan, double delta, double slack, double enough)
+  const Box3& cell, const std::vector<std::vector<Vec3>>& loops, const OwnChords& chords,
+  const std::vector<std::vector<SourceTriangle>>& fans, double chordReach, double slack, double enough)
 {
   const SurfaceSheets sheets = SheetsInCell(mesh, surfaceTriangles, cell);
-  if (sheets.Count < 2 || sheets.Count > loops.size() || !SheetsApartInCell(mesh, surfaceTriangles, sheets, cell))
+  if (sheets.Count < 2 || sheets.Count > loops.size() || fans.size() != loops.size() ||
+    !SheetsApartInCell(mesh, surfaceTriangles, sheets, cell))
   {
     return HUGE_VAL;
   }
@@ -985,16 +984,23 @@ double SheetwiseSlabError(const MeshSolid& mesh, const TriangleList& surfaceTria
       if (sheetOf[l] == s)
       {
         partLoops.push_back(loops[l]);
-        partDeltas.insert(partDeltas.end(), chordDelta.begin() + first, chordDelta.begin() + first + loops[l].size());
-        partFan.insert(partFan.end(), fan.begin() + first, fan.begin() + first + loops[l].size());
+        if (chords.Deltas)
+        {
+          partDeltas.insert(partDeltas.end(), chords.Deltas->begin() + first,
+            chords.Deltas->begin() + first + loops[l].size());
+        }
+        partFan.insert(partFan.end(), fans[l].begin(), fans[l].end());
       }
     }
-    const OwnChords own{ &partLoops, &partDeltas, HUGE_VAL, false, cell };
-    largest = std::max(largest, SlabPatchError(mesh, partTriangles, part, partFan, delta, slack, own, enough, enough));
+    const OwnChords own{ &partLoops, chords.Deltas ? &partDeltas : nullptr, chords.Delta, chords.Refined, cell };
+    largest = std::max(
+      largest, SlabPatchError(mesh, partTriangles, part, partFan, chordReach, slack, own, enough, enough));
   }
   return largest;
 }
 
+namespace
+{
 /// Whether an apex `apexOf(t)` or a point of a spoke to it from the crossing
 /// of a cell edge that S crosses once (t the crossed triangle) strays farther
 /// than `reach` from S_C (header: Spokes).

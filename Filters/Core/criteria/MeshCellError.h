@@ -364,6 +364,7 @@
 #include "CreaseFollowing.h"
 #include "CsgExpression.h"
 #include "PolygonHausdorff.h"
+#include "SlabBound.h"
 
 #include <cmath>
 #include <cstddef>
@@ -548,6 +549,19 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
 /// alone - SheetSpokesStray.)
 bool SpokeStrays(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3& cell, unsigned insideCorners,
   const PolygonSet& surface, double tolerance);
+
+/// E(P) of a cell whose S_C `surface` (its polygons' triangles
+/// `surfaceTriangles` of `mesh`, in order) is several sheets, by the slab bound
+/// and its local heights (SlabBound.h) sheet by sheet (header: Slab bound,
+/// Several sheets): the cell's own loops `loops` - their chords' deltas
+/// `chords` (its Loops unread) - and `fans[l]`, the patch's triangles over own
+/// loop l (or over the final loop refining it), `chordReach` as for
+/// SlabPatchError. +inf where the sheets and the loops do not match (each
+/// loop on one sheet, each sheet with a loop, no two sharing a vertex in the
+/// cell) or a sheet's bound is above `enough`.
+double SheetwiseSlabError(const MeshSolid& mesh, const TriangleList& surfaceTriangles, const PolygonSet& surface,
+  const Box3& cell, const std::vector<std::vector<Vec3>>& loops, const OwnChords& chords,
+  const std::vector<std::vector<SourceTriangle>>& fans, double chordReach, double slack, double enough);
 
 /// Where SpokeStrays is true: true where S_C is one sheet (then the cell can
 /// only pass with one loop, and the spokes' proof stands), else - the cell

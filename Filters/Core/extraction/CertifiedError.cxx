@@ -69,13 +69,53 @@ HausdorffEstimate CertifiedCellError(const CellSurface& surface, const CellPatch
   return e;
 }
 
+namespace
+{
+/// Whether the slab bound's premise holds for the cell's surface (SlabBound.h:
+/// one closed mesh, in a scene of it alone).
+bool SlabApplies(const CellSurface& surface)
+{
+  return surface.OneMesh && surface.SceneOfOneMesh && surface.Solid && surface.Solid->EveryEdgeHasTwoTriangles();
+}
+} // namespace
+
 double SlabCellError(const CellSurface& surface, const CellPatches& patches, const TriangleMesh& mesh,
   double chordReach, const OwnChords& own, double enough, double giveUp)
 {
-  return surface.OneMesh && surface.SceneOfOneMesh && surface.Solid && surface.Solid->EveryEdgeHasTwoTriangles()
-    ? SlabPatchError(*surface.Solid, surface.MeshTriangles, surface.Mesh, PatchTriangles(patches, mesh), chordReach,
-        surface.Slack, own, enough, giveUp)
-    : HUGE_VAL;
+  return SlabApplies(surface) ? SlabPatchError(*surface.Solid, surface.MeshTriangles, surface.Mesh,
+                                  PatchTriangles(patches, mesh), chordReach, surface.Slack, own, enough, giveUp)
+                              : HUGE_VAL;
+}
+
+double SheetwiseCellError(const CellSurface& surface, const CellPatches& patches, const TriangleMesh& mesh,
+  const AdaptiveOctree::MeshCellPrediction& prediction, bool same, const Box3& cell, double enough)
+{
+  if (!SlabApplies(surface))
+  {
+    return HUGE_VAL;
+  }
+  std::vector<std::vector<SourceTriangle>> fans(prediction.Loops.size());
+  const std::vector<SourceTriangle> triangles = PatchTriangles(patches, mesh);
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+  {
+    const Triangle& t = patches.Triangles[i];
+    const auto local = std::find_if(t.begin(), t.end(), [](std::uint32_t v) { return v & CellPatches::LocalFlag; });
+    if (local == t.end())
+    {
+      return HUGE_VAL;
+    }
+    const Vec3& apex = patches.Apexes[*local & ~CellPatches::LocalFlag];
+    const auto own = std::find_if(prediction.Apexes.begin(), prediction.Apexes.end(),
+      [&](const Vec3& a) { return a[0] == apex[0] && a[1] == apex[1] && a[2] == apex[2]; });
+    if (own == prediction.Apexes.end() || prediction.Apexes.size() != fans.size())
+    {
+      return HUGE_VAL;
+    }
+    fans[static_cast<std::size_t>(own - prediction.Apexes.begin())].push_back(triangles[i]);
+  }
+  const OwnChords chords{ nullptr, nullptr, prediction.Delta, !same, cell };
+  return SheetwiseSlabError(*surface.Solid, surface.MeshTriangles, surface.Mesh, cell, prediction.Loops, chords,
+    fans, (same ? 1.0 : 2.0) * prediction.Delta, surface.Slack, enough);
 }
 
 } // namespace tpc

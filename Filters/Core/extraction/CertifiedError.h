@@ -83,4 +83,12 @@ HausdorffEstimate CertifiedCellError(const CellSurface& surface, const CellPatch
 double SlabCellError(const CellSurface& surface, const CellPatches& patches, const TriangleMesh& mesh,
   double chordReach, const OwnChords& own = {}, double enough = HUGE_VAL, double giveUp = HUGE_VAL);
 
+/// E(P) of the cell's apex fans over final loops that refine its own
+/// (`same`: are them) where S_C is several sheets: the slab bound sheet by
+/// sheet (SheetwiseSlabError, MeshCellError.h), each fan grouped with the own
+/// loop whose apex (`prediction`'s) it is drawn around; +inf where SlabCellError
+/// would not apply, or a triangle is around no own apex.
+double SheetwiseCellError(const CellSurface& surface, const CellPatches& patches, const TriangleMesh& mesh,
+  const AdaptiveOctree::MeshCellPrediction& prediction, bool same, const Box3& cell, double enough);
+
 } // namespace tpc

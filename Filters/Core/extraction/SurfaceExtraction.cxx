@@ -426,9 +426,13 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
       // attained distances to raise the reported bound - knot1.off at 1/64:
       // 0.0176 -> 0.0188.)
       const OwnChords own{ &predicted.Loops, nullptr, predicted.Delta, !same, box };
-      const double slab = refined
+      double slab = refined
         ? SlabCellError(surface, patches, mesh, (same ? 1.0 : 2.0) * predicted.Delta, own, aim, tree.HausdorffTolerance)
         : HUGE_VAL;
+      if (refined && !(slab <= aim) && predicted.Loops.size() > 1)
+      {
+        slab = std::min(slab, SheetwiseCellError(surface, patches, mesh, predicted, same, box, aim));
+      }
       if (slab <= aim)
       {
         certificate.Error = std::min(certificate.Bound, slab);
