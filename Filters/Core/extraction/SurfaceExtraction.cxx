@@ -419,8 +419,9 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
         return certificate;
       }
       // Else, over the cell's own loops or loops refining them, the slab
-      // bound where it is within the aim (SlabBound.h); a proven bound all
-      // the same where it is not. (Over the own loops it repeats the
+      // bound or its local heights where within the aim (SlabBound.h), sheet
+      // by sheet where S_C is several (MeshCellError.h: Several sheets); a
+      // proven bound all the same where not. (Over the own loops it repeats the
       // prediction's where that settled the cell, which missed the aim: a
       // pass over S_C, where skipping it left the branch and bound's
       // attained distances to raise the reported bound - knot1.off at 1/64:
