@@ -746,7 +746,7 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
       fans.push_back(ApexFan(points[l], apexes[l]));
     }
     slab = std::min(
-      slab, SheetwiseSlabError(mesh, *surfaceTriangles, surface, cell, points, own, fans, delta, slack, within));
+      slab, SheetwiseSlabError(mesh, *surfaceTriangles, surface, cell, points, own, fans, delta, slack, within, within));
   }
   if (slab + delta <= tolerance)
   {
@@ -938,11 +938,21 @@ bool SheetsApartInCell(
 
 double SheetwiseSlabError(const MeshSolid& mesh, const TriangleList& surfaceTriangles, const PolygonSet& surface,
   const Box3& cell, const std::vector<std::vector<Vec3>>& loops, const OwnChords& chords,
-  const std::vector<std::vector<SourceTriangle>>& fans, double chordReach, double slack, double enough)
+  const std::vector<std::vector<SourceTriangle>>& fans, double chordReach, double slack, double enough,
+  double giveUp)
 {
+  std::size_t chordCount = 0;
+  for (const std::vector<Vec3>& loop : loops)
+  {
+    chordCount += loop.size();
+  }
+  if (surfaceTriangles.size() != surface.size() || fans.size() != loops.size() ||
+    (chords.Deltas && chords.Deltas->size() != chordCount))
+  {
+    return HUGE_VAL;
+  }
   const SurfaceSheets sheets = SheetsInCell(mesh, surfaceTriangles, cell);
-  if (sheets.Count < 2 || sheets.Count > loops.size() || fans.size() != loops.size() ||
-    !SheetsApartInCell(mesh, surfaceTriangles, sheets, cell))
+  if (sheets.Count < 2 || sheets.Count > loops.size() || !SheetsApartInCell(mesh, surfaceTriangles, sheets, cell))
   {
     return HUGE_VAL;
   }
@@ -963,7 +973,7 @@ double SheetwiseSlabError(const MeshSolid& mesh, const TriangleList& surfaceTria
   }
   // Each sheet with its loops, their fans and chords, bounded on its own.
   double largest = 0.0;
-  for (std::uint32_t s = 0; s < sheets.Count && largest <= enough; ++s)
+  for (std::uint32_t s = 0; s < sheets.Count; ++s)
   {
     PolygonSet part;
     part.SetSlackMagnitude(surface.GetSlackMagnitude());
@@ -994,7 +1004,11 @@ double SheetwiseSlabError(const MeshSolid& mesh, const TriangleList& surfaceTria
     }
     const OwnChords own{ &partLoops, chords.Deltas ? &partDeltas : nullptr, chords.Delta, chords.Refined, cell };
     largest = std::max(
-      largest, SlabPatchError(mesh, partTriangles, part, partFan, chordReach, slack, own, enough, enough));
+      largest, SlabPatchError(mesh, partTriangles, part, partFan, chordReach, slack, own, enough, giveUp));
+    if (!(largest <= giveUp))
+    {
+      return HUGE_VAL; // (a bound of some sheets only proves nothing of E(P))
+    }
   }
   return largest;
 }

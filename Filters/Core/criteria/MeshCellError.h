@@ -556,12 +556,15 @@ bool SpokeStrays(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3
 /// Several sheets): the cell's own loops `loops` - their chords' deltas
 /// `chords` (its Loops unread) - and `fans[l]`, the patch's triangles over own
 /// loop l (or over the final loop refining it), `chordReach` as for
-/// SlabPatchError. +inf where the sheets and the loops do not match (each
-/// loop on one sheet, each sheet with a loop, no two sharing a vertex in the
-/// cell) or a sheet's bound is above `enough`.
+/// SlabPatchError (the largest delta: each sheet's bound takes it), `enough`
+/// and `giveUp` as for SlabPatchError, sheet by sheet. +inf where the sheets
+/// and the loops do not match (each loop on one sheet, each sheet with a
+/// loop, no two sharing a vertex in the cell) or a sheet's bound is above
+/// `giveUp`.
 double SheetwiseSlabError(const MeshSolid& mesh, const TriangleList& surfaceTriangles, const PolygonSet& surface,
   const Box3& cell, const std::vector<std::vector<Vec3>>& loops, const OwnChords& chords,
-  const std::vector<std::vector<SourceTriangle>>& fans, double chordReach, double slack, double enough);
+  const std::vector<std::vector<SourceTriangle>>& fans, double chordReach, double slack, double enough,
+  double giveUp);
 
 /// Where SpokeStrays is true: true where S_C is one sheet (then the cell can
 /// only pass with one loop, and the spokes' proof stands), else - the cell

@@ -97,7 +97,8 @@ constexpr double SteepLimit = 16.0;
 /// `n` for the local heights (header).
 bool SteepAlong(const Vec3& normal, const Vec3& n)
 {
-  return SteepLimit * Dot(normal, n) >= Norm(normal);
+  const double along = Dot(normal, n);
+  return along > 0.0 && SteepLimit * along >= Norm(normal);
 }
 
 /// Coordinates in the orthonormal frame (E1, E2, N), N = n: across n, then
@@ -157,7 +158,8 @@ struct HalfSpace
 };
 
 /// `points` cut to `half`, every coordinate carried along each edge (the
-/// heights are affine there); false where the cut would pass the capacity.
+/// heights are affine there); false where the cut would pass the capacity,
+/// or a corner's side is NaN.
 bool CutTo(FrameCorners& points, const HalfSpace& half)
 {
   // (Most cuts keep all or nothing: those are told first.)
@@ -167,6 +169,10 @@ bool CutTo(FrameCorners& points, const HalfSpace& half)
   for (std::size_t i = 0; i < m; ++i)
   {
     beyond[i] = Dot(half.Normal, points[i]) - half.Offset;
+    if (std::isnan(beyond[i]))
+    {
+      return false; // (nothing is proven of a NaN corner or side)
+    }
     in += beyond[i] <= 0.0 ? 1 : 0;
   }
   if (in == m)
@@ -282,7 +288,11 @@ int SharedFace(const Vec3& a, const Vec3& b, const Box3& cell, double near, doub
 /// (s, t) plane holding R_c, widened by the slack, with its box.
 struct ChordView
 {
-  Vec3 A, B, Along;
+  Vec3 A, B;
+  /// Where the face is known, c's ends put on its plane (within `near` of
+  /// A and B) and the unit vector from one to the other: the line the arc's
+  /// points are read across; else A, B and c's direction.
+  Vec3 FlatA, FlatB, Along;
   double Length = 0.0;
   bool OnFace = false;
   Vec3 Across, Out;
@@ -331,20 +341,32 @@ ChordView ViewOf(const HeightFrame& frame, const PolygonSet& surface, const Vec3
   const Box3& cell, double near, double delta, double slack)
 {
   ChordView chord;
-  chord.A = frame.Of(a);
-  chord.B = frame.Of(b);
+  chord.A = chord.FlatA = frame.Of(a);
+  chord.B = chord.FlatB = frame.Of(b);
   chord.Length = Norm(b - a);
-  const Vec3 along = chord.Length > 0.0 ? (b - a) * (1.0 / chord.Length) : Vec3(0.0, 0.0, 0.0);
-  chord.Along = frame.Of(along);
+  chord.Along = frame.Of(chord.Length > 0.0 ? (b - a) * (1.0 / chord.Length) : Vec3(0.0, 0.0, 0.0));
   double side = 0.0;
-  const int face = chord.Length > 0.0 ? SharedFace(a, b, cell, near, side) : -1;
+  int face = chord.Length > 0.0 ? SharedFace(a, b, cell, near, side) : -1;
+  // (Its ends put on the face's plane: a and b lie within `near` of it, so
+  // the chord's direction in the plane is read from them only where the
+  // chord is long against that.)
+  Vec3 flatA = a, flatB = b;
+  if (face >= 0)
+  {
+    flatA[face] = flatB[face] = side;
+    face = Norm(flatB - flatA) > 1024.0 * near ? face : -1;
+  }
   FrameCorners region;
   if (face >= 0)
   {
     Vec3 out(0.0, 0.0, 0.0);
     out[face] = 1.0;
-    const Vec3 across = Normalized(Cross(out, along));
+    const Vec3 inPlane = Normalized(flatB - flatA);
+    const Vec3 across = Normalized(Cross(out, inPlane));
     chord.OnFace = true;
+    chord.FlatA = frame.Of(flatA);
+    chord.FlatB = frame.Of(flatB);
+    chord.Along = frame.Of(inPlane);
     chord.Out = frame.Of(out);
     chord.Across = frame.Of(across);
     // (S_C's corners clipped to the cell lie on its faces exactly.)
@@ -354,29 +376,15 @@ ChordView ViewOf(const HeightFrame& frame, const PolygonSet& surface, const Vec3
       trace.lo[axis] = axis == face ? side : std::max(cell.lo[axis], std::min(a[axis], b[axis]) - delta - slack);
       trace.hi[axis] = axis == face ? side : std::min(cell.hi[axis], std::max(a[axis], b[axis]) + delta + slack);
     }
-    double low = 0.0, high = 0.0;
-    for (std::size_t i = 0; i < surface.size(); ++i)
-    {
-      if (surface.Bounds(i).Overlaps(trace))
-      {
-        BoundedVector<Vec3, 2 * ClippedCorners::capacity()> clipped;
-        for (const Vec3& p : surface[i].Points)
-        {
-          clipped.push_back(p);
-        }
-        ClipToBox(clipped, trace);
-        for (const Vec3& p : clipped)
-        {
-          low = std::min(low, Dot(across, p - a));
-          high = std::max(high, Dot(across, p - a));
-        }
-      }
-    }
+    // (The largest over S_C's clipped corners: 0 where none, as c's own.)
+    const double high = LargestOverClippedCorners(surface, trace, [&](const Vec3& p) { return Dot(across, p - a); });
+    const double low = -LargestOverClippedCorners(surface, trace, [&](const Vec3& p) { return Dot(across, a - p); });
     chord.Low = std::max(low - slack, -delta);
     chord.High = std::min(high + slack, delta);
-    BoundedVector<Vec3, 16> corners{ a - along * delta + across * chord.Low,
-      b + along * delta + across * chord.Low, b + along * delta + across * chord.High,
-      a - along * delta + across * chord.High };
+    const double reach = delta + near; // (the flattened ends moved by `near` at most)
+    BoundedVector<Vec3, 16> corners{ flatA - inPlane * reach + across * chord.Low,
+      flatB + inPlane * reach + across * chord.Low, flatB + inPlane * reach + across * chord.High,
+      flatA - inPlane * reach + across * chord.High };
     Box3 within = cell; // (open along the face's axis: the corners are on its plane up to rounding)
     within.lo[face] = -HUGE_VAL;
     within.hi[face] = HUGE_VAL;
@@ -389,6 +397,9 @@ ChordView ViewOf(const HeightFrame& frame, const PolygonSet& surface, const Vec3
   if (region.empty())
   {
     chord.OnFace = false;
+    chord.FlatA = chord.A;
+    chord.FlatB = chord.B;
+    chord.Along = frame.Of(chord.Length > 0.0 ? (b - a) * (1.0 / chord.Length) : Vec3(0.0, 0.0, 0.0));
     region.push_back(chord.A);
     region.push_back(chord.B);
     RectangleAround(chord.A, chord.B, region, delta + slack, chord);
@@ -404,15 +415,16 @@ ChordView ViewOf(const HeightFrame& frame, const PolygonSet& surface, const Vec3
 /// the distance from their points to the far side - S_C's points to P's,
 /// P's to S_C's (header: Local heights) - in three parts: beyond a (the
 /// distance to a, a loop point on both), beyond b (to b), and between
-/// (points whose nearest point of c's line is on c: there the far side's
-/// point w over that nearest point u - on the arc, or on a refining polyline
-/// - has w - u = beta Across, Low <= beta <= High, so |x - w| <=
-/// sqrt((Out . (x - a))^2 + max over beta of (Across . (x - a) - beta)^2),
-/// convex; with no face known, d(x, c) + delta). `farSideOnC`: the far side
-/// holds c itself (S_C's points against the own loops' P): there d(x, c).
+/// (points whose nearest point u of c's line - c put on its face's plane,
+/// FlatA to FlatB - is on c: the far side's point w there - on the arc, or
+/// on a refining polyline, both in that plane - has w - u = beta Across,
+/// Low <= beta <= High, so |x - w| <= sqrt((Out . (x - FlatA))^2 + max over
+/// beta of (Across . (x - FlatA) - beta)^2), convex; with no face known,
+/// d(x, c) + delta). `farSideOnC`: the far side holds c itself (S_C's points
+/// against the own loops' P): there d(x, c).
 double FarthestOver(const FrameCorners& corners, const ChordView& chord, double delta, bool farSideOnC)
 {
-  const double alongA = Dot(chord.Along, chord.A), alongB = Dot(chord.Along, chord.B);
+  const double alongA = Dot(chord.Along, chord.FlatA), alongB = Dot(chord.Along, chord.FlatB);
   const HalfSpace beyondA{ chord.Along, alongA }, beforeB{ chord.Along, alongB };
   const HalfSpace afterA{ chord.Along * -1.0, -alongA }, beyondB{ chord.Along * -1.0, -alongB };
   FrameCorners inR = corners;
@@ -448,7 +460,7 @@ double FarthestOver(const FrameCorners& corners, const ChordView& chord, double 
     {
       return SegmentDistance(x, chord.A, chord.B) + delta;
     }
-    const double out = Dot(chord.Out, x - chord.A), across = Dot(chord.Across, x - chord.A);
+    const double out = Dot(chord.Out, x - chord.FlatA), across = Dot(chord.Across, x - chord.FlatA);
     const double apart = std::max(std::fabs(across - chord.Low), std::fabs(across - chord.High));
     return std::sqrt(out * out + apart * apart);
   };
@@ -540,6 +552,11 @@ double LocalHeightsBound(const MeshSolid& mesh, const TriangleList& surfaceTrian
     }
   }
   // D_S and D_P: S_C's polygons and P's triangles in each chord's R_c.
+  // (The chords must be P's boundary, or what it refines: none, no bound.)
+  if (std::all_of(chords.Loops->begin(), chords.Loops->end(), [](const auto& loop) { return loop.empty(); }))
+  {
+    return HUGE_VAL;
+  }
   // (Loop points lie on their faces up to an ulp or so: a chord's face is
   // read within 64 of them, its plane then off by far less than the slack.)
   const double onFace = 64.0 * DBL_EPSILON * chords.Cell.Magnitude();

@@ -100,9 +100,11 @@
 // plane and f the face's normal, each of their points is
 // a + alpha u + beta m, -delta_c <= alpha <= |c| + delta_c, beta in
 // [Low, High]: the range, with 0 (c itself), of beta over S_C's points on
-// the face within delta_c of c's box - which hold A_c and lambda_c's
-// corners (points of S on c's tile), hence lambda_c - clamped to
-// [-delta_c, delta_c]. So C_c lies in that region's part in C, and R_c, the
+// the face within delta_c (and the slack) of c's box - which hold A_c and
+// lambda_c's corners (points of S on c's tile), hence lambda_c - clamped to
+// [-delta_c, delta_c]. (a and b lie on the face up to rounding: they are put
+// on its plane first, u along the line between them there, and a chord too
+// short against that rounding is read as one no face holds.) So C_c lies in that region's part in C, and R_c, the
 // rectangle of the plane aligned with pi(c) around its shadow, holds every
 // x with w(C_c, x) != 0 (2). (Where no face holds c, R_c holds every point
 // within delta_c of pi(c).) Then
@@ -153,7 +155,9 @@
 // chords; the slack widens R_c and [Low, High]), and the values change by
 // at most the slopes times that. A chord's face is read where its ends lie
 // within 64 units in the last place of a face of the cell (loop points are
-// placed on it up to about one). All of it is far within the slack.
+// placed on it up to about one); put on its plane, they move by as much, by
+// which the region is lengthened, and the bound's distances to the chord
+// change by no more. All of it is far within the slack.
 #pragma once
 
 #include "ConvexPolygons.h"

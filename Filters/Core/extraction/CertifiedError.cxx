@@ -88,7 +88,7 @@ double SlabCellError(const CellSurface& surface, const CellPatches& patches, con
 }
 
 double SheetwiseCellError(const CellSurface& surface, const CellPatches& patches, const TriangleMesh& mesh,
-  const AdaptiveOctree::MeshCellPrediction& prediction, bool same, const Box3& cell, double enough)
+  const AdaptiveOctree::MeshCellPrediction& prediction, bool same, const Box3& cell, double enough, double giveUp)
 {
   if (!SlabApplies(surface))
   {
@@ -115,7 +115,7 @@ double SheetwiseCellError(const CellSurface& surface, const CellPatches& patches
   }
   const OwnChords chords{ nullptr, nullptr, prediction.Delta, !same, cell };
   return SheetwiseSlabError(*surface.Solid, surface.MeshTriangles, surface.Mesh, cell, prediction.Loops, chords,
-    fans, (same ? 1.0 : 2.0) * prediction.Delta, surface.Slack, enough);
+    fans, (same ? 1.0 : 2.0) * prediction.Delta, surface.Slack, enough, giveUp);
 }
 
 } // namespace tpc

@@ -86,9 +86,10 @@ double SlabCellError(const CellSurface& surface, const CellPatches& patches, con
 /// E(P) of the cell's apex fans over final loops that refine its own
 /// (`same`: are them) where S_C is several sheets: the slab bound sheet by
 /// sheet (SheetwiseSlabError, MeshCellError.h), each fan grouped with the own
-/// loop whose apex (`prediction`'s) it is drawn around; +inf where SlabCellError
-/// would not apply, or a triangle is around no own apex.
+/// loop whose apex (`prediction`'s) it is drawn around, `enough` and `giveUp`
+/// as for SlabCellError; +inf where SlabCellError would not apply, a
+/// triangle is around no own apex, or a sheet's bound is above `giveUp`.
 double SheetwiseCellError(const CellSurface& surface, const CellPatches& patches, const TriangleMesh& mesh,
-  const AdaptiveOctree::MeshCellPrediction& prediction, bool same, const Box3& cell, double enough);
+  const AdaptiveOctree::MeshCellPrediction& prediction, bool same, const Box3& cell, double enough, double giveUp);
 
 } // namespace tpc

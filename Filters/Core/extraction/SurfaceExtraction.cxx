@@ -192,21 +192,28 @@ std::vector<std::vector<Vec3>> FinalLoopPoints(
   return points;
 }
 
-/// How far from the trace the chords of a lone final loop (`finals`) may be for the
-/// slab bound (SlabBound.h), from the prediction's Delta (each own chord's
-/// deviation, at most): Delta where the final loop is the cell's own loop
-/// (SameLoop), twice that where it refines it (FinalLoopRefines: Loops
-/// refining the cell's own), +inf otherwise.
-double LoneLoopChordReach(
+/// How a lone final loop stands to the cell's own (the slab bound's
+/// premises, SlabBound.h): its chords' reach from the trace, from the
+/// prediction's Delta (each own chord's deviation, at most) - Delta where
+/// the final loop is the own loop (SameLoop), twice that where it refines
+/// it (FinalLoopRefines: Loops refining the cell's own), +inf otherwise -
+/// and whether it refines rather than is it.
+struct LoneLoopReach
+{
+  double Reach = HUGE_VAL;
+  bool Refines = false;
+};
+
+LoneLoopReach LoneLoopChordReach(
   const AdaptiveOctree::MeshCellPrediction& prediction, const std::vector<std::vector<Vec3>>& finals, const Box3& box)
 {
   if (prediction.Loops.size() != 1 || finals.size() != 1)
   {
-    return HUGE_VAL;
+    return {};
   }
-  return SameLoop(prediction.Loops[0], finals[0])  ? prediction.Delta
-    : FinalLoopRefines(prediction.Loops[0], finals[0], box) ? 2.0 * prediction.Delta
-                                                            : HUGE_VAL;
+  return SameLoop(prediction.Loops[0], finals[0])  ? LoneLoopReach{ prediction.Delta, false }
+    : FinalLoopRefines(prediction.Loops[0], finals[0], box) ? LoneLoopReach{ 2.0 * prediction.Delta, true }
+                                                            : LoneLoopReach{};
 }
 
 /// A mesh cell larger than the tolerance (its prediction `prediction`)
@@ -222,13 +229,13 @@ double LoneLoopChordReach(
 /// third crease the diagonals would cut by more is kept sharp by the apex.
 /// Either must follow the cell's `creases` (CreaseFollowing.h; none outside
 /// scenes of one mesh). False when the loop allows no such fan or it is not
-/// kept. `chordReach`: how far the final loop's chords may be from the
-/// trace for the slab bound (LoneLoopChordReach), tried before the branch
-/// and bound where finite.
+/// kept. `reach`: how far the final loop's chords may be from the trace for
+/// the slab bound, and whether it refines the own (LoneLoopChordReach),
+/// tried before the branch and bound where finite.
 bool MeshCellFromLoopPoint(const AdaptiveOctree& tree, std::uint32_t n, const BoundaryLoopSet& loops,
   const CrossingVertices& vertices, const TriangleMesh& mesh, const CellSurface& surface,
   const std::vector<CreaseSegment>& creases, double aim, const AdaptiveOctree::MeshCellPrediction& prediction,
-  double chordReach, CellPatches& patches, CellCertificate& certificate)
+  const LoneLoopReach& reach, CellPatches& patches, CellCertificate& certificate)
 {
   CellPatches fan;
   bool fromMeshEdge = false;
@@ -246,12 +253,10 @@ bool MeshCellFromLoopPoint(const AdaptiveOctree& tree, std::uint32_t n, const Bo
   const double ownFan = prediction.OwnFanError < HUGE_VAL ? prediction.OwnFanError : 0.0;
   const double keptWithin =
     fromMeshEdge ? std::min(std::max(MeshEdgeFanKeptWithin * tolerance, ownFan), tolerance) : tolerance;
-  // (The own loop's chords for the local heights: the final loop refines
-  // it where the reach is twice Delta, LoneLoopChordReach.)
   const Box3 box = tree.Grid.CellBox(tree.Nodes[n].Level, tree.Nodes[n].Ijk);
-  const OwnChords own{ &prediction.Loops, nullptr, prediction.Delta, chordReach != prediction.Delta, box };
-  const double slab = chordReach < HUGE_VAL
-    ? SlabCellError(surface, fan, mesh, chordReach, own, std::min(aim, keptWithin), keptWithin)
+  const OwnChords own{ &prediction.Loops, nullptr, prediction.Delta, reach.Refines, box };
+  const double slab = reach.Reach < HUGE_VAL
+    ? SlabCellError(surface, fan, mesh, reach.Reach, own, std::min(aim, keptWithin), keptWithin)
     : HUGE_VAL;
   HausdorffEstimate e = slab <= std::min(aim, keptWithin)
     ? HausdorffEstimate{ slab, 0.0 }
@@ -386,8 +391,8 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
         : std::vector<CreaseSegment>();
       const AdaptiveOctree::MeshCellPrediction& predicted = prediction->second;
       const std::vector<std::vector<Vec3>> finals = FinalLoopPoints(loops, vertices, mesh);
-      const double loneLoopReach =
-        predictionsHold && loops.Consistent ? LoneLoopChordReach(predicted, finals, box) : HUGE_VAL;
+      const LoneLoopReach loneLoopReach =
+        predictionsHold && loops.Consistent ? LoneLoopChordReach(predicted, finals, box) : LoneLoopReach{};
       if (MeshCellFromLoopPoint(tree, n, loops, vertices, mesh, surface, creases, aim, predicted, loneLoopReach,
             patches, certificate))
       {
@@ -432,7 +437,8 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
         : HUGE_VAL;
       if (refined && !(slab <= aim) && predicted.Loops.size() > 1)
       {
-        slab = std::min(slab, SheetwiseCellError(surface, patches, mesh, predicted, same, box, aim));
+        slab = std::min(
+          slab, SheetwiseCellError(surface, patches, mesh, predicted, same, box, aim, tree.HausdorffTolerance));
       }
       if (slab <= aim)
       {

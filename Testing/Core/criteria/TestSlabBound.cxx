@@ -330,3 +330,92 @@ TEST(SlabBound, LocalHeightsOverLoopsRefiningTheOwn)
   }
   EXPECT_GT(tighterThanTheSlab, 8);
 }
+
+TEST(SlabBound, SheetBySheetBoundsTwoSheetsFacingOppositeWays)
+{
+  // Two bumpy sheets across the cell [0, 1]^2 x [-1, 1], one near z = 0.4
+  // facing up and one near z = -0.4 facing down (a thin part's two faces, as
+  // one mesh), each with its own loop on the cell's sides and its own fan: no
+  // direction passes the facing test for both, so the slab bound alone
+  // refuses; bounded sheet by sheet (MeshCellError.h: Several sheets), the
+  // result is at least the two-sided distance measured between the unions.
+  std::mt19937 random(37);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  double tightest = HUGE_VAL;
+  for (int trial = 0; trial < 12; ++trial)
+  {
+    const double amplitude = 0.02 + 0.1 * unit(random), fx = 1 + 4 * unit(random), fy = 1 + 4 * unit(random);
+    const HeightField top(8, [&](double x, double y) { return 0.4 + amplitude * std::sin(fx * x) * std::cos(fy * y); });
+    const HeightField bottom(8, [&](double x, double y) { return -0.4 + amplitude * std::cos(fy * x + fx * y); });
+    std::vector<Vec3> points = top.Points;
+    std::vector<std::array<std::uint32_t, 3>> faces = top.Faces;
+    const std::uint32_t base = static_cast<std::uint32_t>(points.size());
+    points.insert(points.end(), bottom.Points.begin(), bottom.Points.end());
+    for (const auto& f : bottom.Faces)
+    {
+      faces.push_back({ base + f[0], base + f[2], base + f[1] }); // (facing down)
+    }
+    const tpc::MeshSolid mesh(points, faces);
+    tpc::TriangleList listed;
+    tpc::PolygonSet surface, upper, lower;
+    for (std::uint32_t t = 0; t < faces.size(); ++t)
+    {
+      listed.push_back(t);
+      surface.Add({ mesh.Vertex(t, 0), mesh.Vertex(t, 1), mesh.Vertex(t, 2) });
+      (t < top.Faces.size() ? upper : lower)
+        .Add({ mesh.Vertex(t, 0), mesh.Vertex(t, 1), mesh.Vertex(t, 2) });
+    }
+    const int step = 1 + trial % 4;
+    std::vector<Vec3> down = bottom.Loop(step);
+    std::reverse(down.begin(), down.end());
+    const std::vector<std::vector<Vec3>> loops{ top.Loop(step), down };
+    const std::vector<std::vector<SourceTriangle>> fans{ tpc::ApexFan(loops[0], tpc::MeshCellApex(upper, UnitCell)),
+      tpc::ApexFan(loops[1], tpc::MeshCellApex(lower, UnitCell)) };
+    // Each chord against its own sheet's trace (the tile of its half of the
+    // side: the sheets' traces lie apart on it).
+    std::vector<double> deltas;
+    double delta = 0.0;
+    for (std::size_t l = 0; l < 2; ++l)
+    {
+      for (std::size_t k = 0; k < loops[l].size(); ++k)
+      {
+        const Vec3& a = loops[l][k];
+        const Vec3& b = loops[l][(k + 1) % loops[l].size()];
+        Box3 tile = TileBetween(a, b);
+        (l == 0 ? tile.lo : tile.hi)[2] = 0.0;
+        deltas.push_back(tpc::ChordDeviation(surface, tile, a, b));
+        delta = std::max(delta, deltas.back());
+      }
+    }
+    std::vector<SourceTriangle> patch = fans[0];
+    patch.insert(patch.end(), fans[1].begin(), fans[1].end());
+    ASSERT_EQ(tpc::SlabPatchError(mesh, listed, surface, patch, delta, 0.0), HUGE_VAL) << "trial " << trial;
+    const tpc::OwnChords chords{ nullptr, &deltas, HUGE_VAL, false, UnitCell };
+    const double slack = 1e-12; // (each loop's sheet is the one within it of its points)
+    const double bound =
+      tpc::SheetwiseSlabError(mesh, listed, surface, UnitCell, loops, chords, fans, delta, slack, 0.0, HUGE_VAL);
+    ASSERT_LT(bound, HUGE_VAL) << "trial " << trial;
+    std::vector<SourceTriangle> sheets = Triangles(top);
+    for (const auto& f : bottom.Faces)
+    {
+      sheets.push_back({ bottom.Points[f[0]], bottom.Points[f[2]], bottom.Points[f[1]] });
+    }
+    const double measured = Sampled(patch, sheets);
+    EXPECT_LE(measured, bound) << "trial " << trial;
+    tightest = std::min(tightest, bound / measured);
+    // A loop on no sheet of its own (both loops on the top sheet) proves nothing.
+    const std::vector<std::vector<Vec3>> same{ loops[0], loops[0] };
+    std::vector<double> twice = deltas;
+    std::copy(deltas.begin(), deltas.begin() + static_cast<std::ptrdiff_t>(loops[0].size()), twice.begin());
+    twice.resize(2 * loops[0].size());
+    std::copy(deltas.begin(), deltas.begin() + static_cast<std::ptrdiff_t>(loops[0].size()),
+      twice.begin() + static_cast<std::ptrdiff_t>(loops[0].size()));
+    const tpc::OwnChords both{ nullptr, &twice, HUGE_VAL, false, UnitCell };
+    EXPECT_EQ(tpc::SheetwiseSlabError(mesh, listed, surface, UnitCell, same, both, { fans[0], fans[0] }, delta,
+                slack, 0.0, HUGE_VAL),
+      HUGE_VAL)
+      << "trial " << trial;
+  }
+  EXPECT_LT(tightest, 1.5); // not vacuous
+  std::cout << "sheet by sheet: tightest bound / measured " << tightest << "\n";
+}
