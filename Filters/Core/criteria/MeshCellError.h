@@ -313,10 +313,9 @@
 // first certificates' aim read OwnFanError, Attained): over CGAL's 91 closed
 // demo meshes at 1/64, 16 surfaces changed, by 68 of 385 768 triangles in all,
 // with the same topology, guarantees and no larger bound.
-// Where the slab is too thick, its local heights are tried (SlabBound.h: Local
-// heights; the prediction's own chords and their deltas, each chord's face
-// read from the cell; the extraction's over the prediction's own loops and
-// Delta). They bound more tightly than the branch and bound stopped at its
+// Where the slab is too thick, its local heights are tried (LocalHeights.h;
+// the prediction's own chords and their deltas, each chord's face read from
+// the cell; the extraction's over the prediction's own loops and Delta). They bound more tightly than the branch and bound stopped at its
 // first proof, so OwnFanError reads lower there and MeshEdgeFanKeptWithin
 // keeps fewer loop-point fans: over CGAL's closed demo meshes at 1/64, 36 of 84
 // surfaces changed, 682 triangles more of 197 536, 43 bounds lower, none
@@ -552,7 +551,7 @@ bool SpokeStrays(const CsgLeaf& leaf, const PrimitiveSet& primitives, const Box3
 
 /// E(P) of a cell whose S_C `surface` (its polygons' triangles
 /// `surfaceTriangles` of `mesh`, in order) is several sheets, by the slab bound
-/// and its local heights (SlabBound.h) sheet by sheet (header: Slab bound,
+/// and its local heights (SlabBound.h, LocalHeights.h) sheet by sheet (header: Slab bound,
 /// Several sheets): the cell's own loops `loops` - their chords' deltas
 /// `chords` (its Loops unread) - and `fans[l]`, the patch's triangles over own
 /// loop l (or over the final loop refining it), `chordReach` as for

@@ -78,8 +78,8 @@ HausdorffEstimate CertifiedCellError(const CellSurface& surface, const CellPatch
 /// keeps them tight): every chord of the patch's loops within
 /// `chordReach` of the trace as that bound needs it (SlabBound.h: Loops
 /// refining the cell's own); where that is above `enough`, the local
-/// heights' bound over the cell's own chords `own` is tried too (SlabBound.h:
-/// Local heights), up to `giveUp`. +inf where neither applies.
+/// heights' bound over the cell's own chords `own` is tried too
+/// (LocalHeights.h), up to `giveUp`. +inf where neither applies.
 double SlabCellError(const CellSurface& surface, const CellPatches& patches, const TriangleMesh& mesh,
   double chordReach, const OwnChords& own = {}, double enough = HUGE_VAL, double giveUp = HUGE_VAL);
 

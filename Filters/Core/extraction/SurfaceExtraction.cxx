@@ -424,13 +424,13 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
         return certificate;
       }
       // Else, over the cell's own loops or loops refining them, the slab
-      // bound or its local heights where within the aim (SlabBound.h), sheet
-      // by sheet where S_C is several (MeshCellError.h: Several sheets); a
-      // proven bound all the same where not. (Over the own loops it repeats the
-      // prediction's where that settled the cell, which missed the aim: a
-      // pass over S_C, where skipping it left the branch and bound's
-      // attained distances to raise the reported bound - knot1.off at 1/64:
-      // 0.0176 -> 0.0188.)
+      // bound or its local heights where within the aim (SlabBound.h,
+      // LocalHeights.h), sheet by sheet where S_C is several (MeshCellError.h:
+      // Several sheets); a proven bound all the same where not. (Over the own
+      // loops it repeats the prediction's where that settled the cell, which
+      // missed the aim: a pass over S_C, where skipping it left the branch
+      // and bound's attained distances to raise the reported bound -
+      // knot1.off at 1/64: 0.0176 -> 0.0188.)
       const OwnChords own{ &predicted.Loops, nullptr, predicted.Delta, !same, box };
       double slab = refined
         ? SlabCellError(surface, patches, mesh, (same ? 1.0 : 2.0) * predicted.Delta, own, aim, tree.HausdorffTolerance)

@@ -268,8 +268,8 @@ TEST(SlabBound, LocalHeightsBoundTheSampledDistanceOverCurvedSheets)
 {
   // Bumps several times the chords' deviations, fanned over loops of one
   // chord a side up to one per grid edge: the slab's thickness is their
-  // whole range, the local heights follow the fan's triangles (header:
-  // Local heights). Each bound is at least the two-sided distance measured.
+  // whole range, the local heights follow the fan's triangles (LocalHeights.h).
+  // Each bound is at least the two-sided distance measured.
   std::mt19937 random(29);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   double tightest = HUGE_VAL;
