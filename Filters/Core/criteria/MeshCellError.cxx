@@ -740,10 +740,11 @@ double PredictedMeshCellError(const CsgExpression& expression, const PrimitiveSe
                             : HUGE_VAL;
   if (slabApplies && !(slab <= within) && points.size() > 1)
   {
-    std::vector<std::vector<SourceTriangle>> fans;
-    for (std::size_t l = 0; l < points.size(); ++l)
+    std::vector<std::vector<SourceTriangle>> fans; // (the fan's triangles loop by loop: ApexFans)
+    for (std::size_t l = 0, first = 0; l < points.size(); first += points[l].size(), ++l)
     {
-      fans.push_back(ApexFan(points[l], apexes[l]));
+      fans.emplace_back(fan.begin() + static_cast<std::ptrdiff_t>(first),
+        fan.begin() + static_cast<std::ptrdiff_t>(first + points[l].size()));
     }
     slab = std::min(
       slab, SheetwiseSlabError(mesh, *surfaceTriangles, surface, cell, points, own, fans, delta, slack, within, within));
