@@ -360,13 +360,14 @@ double FarthestOver(const FrameCorners& corners, const ChordView& chord, double 
     return 0.0;
   }
   double largest = 0.0;
-  for (const auto& [half, end] : { std::pair{ beyondA, chord.A }, std::pair{ beyondB, chord.B } })
+  for (const std::pair<HalfSpace, Vec3>& beyond : { std::pair{ beyondA, chord.A }, std::pair{ beyondB, chord.B } })
   {
     FrameCorners part = inR;
-    if (!CutTo(part, half))
+    if (!CutTo(part, beyond.first))
     {
       return HUGE_VAL;
     }
+    const Vec3& end = beyond.second; // (named outside the lambda: C++17 lambdas capture no bindings)
     largest = std::max(largest, LargestAt(part, [&](const Vec3& x) { return Norm(x - end); }));
   }
   FrameCorners between = inR;
