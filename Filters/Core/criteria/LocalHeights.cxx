@@ -216,7 +216,6 @@ struct ChordView
   /// A and B) and the unit vector from one to the other: the line the arc's
   /// points are read across; else A, B and c's direction.
   Vec3 FlatA, FlatB, Along;
-  double Length = 0.0;
   bool OnFace = false;
   Vec3 Across, Out;
   double Low = 0.0, High = 0.0;
@@ -266,10 +265,11 @@ ChordView ViewOf(const HeightFrame& frame, const PolygonSet& surface, const Vec3
   ChordView chord;
   chord.A = chord.FlatA = frame.Of(a);
   chord.B = chord.FlatB = frame.Of(b);
-  chord.Length = Norm(b - a);
-  chord.Along = frame.Of(chord.Length > 0.0 ? (b - a) * (1.0 / chord.Length) : Vec3(0.0, 0.0, 0.0));
+  const double length = Norm(b - a);
+  const Vec3 along = frame.Of(length > 0.0 ? (b - a) * (1.0 / length) : Vec3(0.0, 0.0, 0.0));
+  chord.Along = along;
   double side = 0.0;
-  int face = chord.Length > 0.0 ? SharedFace(a, b, cell, near, side) : -1;
+  int face = length > 0.0 ? SharedFace(a, b, cell, near, side) : -1;
   // (Its ends put on the face's plane: a and b lie within `near` of it, so
   // the chord's direction in the plane is read from them only where the
   // chord is long against that.)
@@ -322,7 +322,7 @@ ChordView ViewOf(const HeightFrame& frame, const PolygonSet& surface, const Vec3
     chord.OnFace = false;
     chord.FlatA = chord.A;
     chord.FlatB = chord.B;
-    chord.Along = frame.Of(chord.Length > 0.0 ? (b - a) * (1.0 / chord.Length) : Vec3(0.0, 0.0, 0.0));
+    chord.Along = along;
     region.push_back(chord.A);
     region.push_back(chord.B);
     RectangleAround(chord.A, chord.B, region, delta + slack, chord);

@@ -3,6 +3,7 @@
 #include "BestFitNormal.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace tpc
@@ -86,7 +87,6 @@ double SlabThickness(const MeshSolid& mesh, const TriangleList& surfaceTriangles
   const double thickness = highest - lowest;
   return std::isnan(thickness) ? HUGE_VAL : thickness;
 }
-
 } // namespace
 
 double SlabPatchError(const MeshSolid& mesh, const TriangleList& surfaceTriangles, const PolygonSet& surface,
