@@ -21,6 +21,11 @@ namespace
 /// two quadrics meeting at a grazing angle.)
 constexpr std::size_t Chunk = 256;
 
+/// The time a chunk of the cells' tests aims at (ForEachTimedChunk): its
+/// barrier and its serial part are a small share of it, and an abort waits
+/// for about that long.
+constexpr double ChunkSeconds = 0.05;
+
 CellState StateOf(RegionSign s)
 {
   return s == RegionSign::Inside ? CellState::Inside : CellState::Outside;
@@ -307,13 +312,17 @@ bool LevelByLevel::EvaluateUnseenCorners()
 /// hold them all at once (face refinement may sample thousands of points per
 /// cell). The face decisions the level shares (FaceDecisionCache.h) - a
 /// tiling and its corners' signs per face one cell has tiled and the other
-/// not yet - are held until the level ends.
+/// not yet - are held until the level ends. The chunks are sized by the
+/// clock (ForEachTimedChunk), which no verdict depends on: a cell's tests
+/// read no tiling of its own level, and of the sign table only exact signs,
+/// which the cell computes alike where they are not in it yet.
 bool LevelByLevel::TestCells(std::vector<CellTests>& tests)
 {
   AdaptiveOctree& tree = this->Result.Octree;
   tests.resize(this->Active.size());
   const ProgressCallback progress = this->Within(0.2, 0.7);
-  const bool done = ForEachChunk(this->Active.size(), Chunk, this->For, [&](std::size_t begin, std::size_t end) {
+  const bool done = ForEachTimedChunk(this->Active.size(), Chunk, ChunkSeconds, this->For,
+    [&](std::size_t begin, std::size_t end) {
     ScratchPool<PolygonSet>::Lease surface(this->SurfaceScratch);
     for (std::size_t i = begin; i < end; ++i)
     {
