@@ -259,9 +259,11 @@ bool WritePatches(std::vector<CellPatches>& patches, const std::vector<std::uint
     firstApex[i + 1] = firstApex[i] + patches[i].Apexes.size();
     firstTriangle[i + 1] = firstTriangle[i] + patches[i].Triangles.size();
   }
-  mesh.Points.resize(firstApex.back());
-  mesh.Normals.resize(firstApex.back());
-  mesh.Triangles.resize(firstTriangle.back());
+  // (Each cell writes its own apexes' points and normals and its triangles:
+  // in parallel, the threads first touch their pages, ReleasableArray.h.)
+  mesh.Points.resize_for_overwrite(firstApex.back());
+  mesh.Normals.resize_for_overwrite(firstApex.back());
+  mesh.Triangles.resize_for_overwrite(firstTriangle.back());
   mesh.TriangleCell.resize(firstTriangle.back());
   // Write.
   return ChunkedFor(cells.size(), Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {

@@ -91,8 +91,10 @@ bool PlaceCrossingVertices(const CrossingVertices& vertices, const AdaptiveOctre
   const ParallelFor& parallelFor, const ProgressCallback& progress)
 {
   const auto& records = vertices.Records();
-  mesh.Points.resize(records.size());
-  mesh.Normals.resize(records.size());
+  // (Every point and normal is written below, bends' last: in parallel, the
+  // threads first touch their pages, ReleasableArray.h.)
+  mesh.Points.resize_for_overwrite(records.size());
+  mesh.Normals.resize_for_overwrite(records.size());
   if (!ChunkedFor(records.size(), Chunk, parallelFor, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i)
     {

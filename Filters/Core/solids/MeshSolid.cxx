@@ -55,9 +55,9 @@ void MeshSolid::Index(const ParallelFor& parallelFor)
   this->Closed = std::all_of(this->Neighbours.begin(), this->Neighbours.end(), [](const auto& across) {
     return across[0] != NoTriangle && across[1] != NoTriangle && across[2] != NoTriangle;
   });
-  this->Normals.resize(this->Faces.size());
-  this->AxisFacing.resize(this->Faces.size());
-  this->FaceBoxes.resize(this->Faces.size());
+  this->Normals.resize_for_overwrite(this->Faces.size());
+  this->AxisFacing.resize_for_overwrite(this->Faces.size());
+  this->FaceBoxes.resize_for_overwrite(this->Faces.size());
   parallelFor(this->Faces.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t t = begin; t < end; ++t)
     {
@@ -104,7 +104,8 @@ void MeshSolid::Index(const ParallelFor& parallelFor)
   }
   // Each triangle's columns, y0 y1 z0 z1 (in parallel: the floors were most
   // of the grid's build), then entered by a counting sort.
-  std::vector<std::array<int, 4>> columns(this->Faces.size());
+  ReleasableArray<std::array<int, 4>> columns;
+  columns.resize_for_overwrite(this->Faces.size());
   const double wy = 1e-9 * this->GridStep[0], wz = 1e-9 * this->GridStep[1];
   parallelFor(this->Faces.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t t = begin; t < end; ++t)

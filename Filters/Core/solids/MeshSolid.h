@@ -24,6 +24,7 @@
 #pragma once
 
 #include "Parallel.h"
+#include "ReleasableArray.h"
 #include "Vector3.h"
 
 #include <array>
@@ -131,7 +132,7 @@ public:
   /// The box of triangle t's vertices (their exact minima and maxima).
   const Box3& TriangleBounds(std::uint32_t t) const { return this->FaceBoxes[t]; }
   /// Those boxes, one per triangle.
-  const std::vector<Box3>& TriangleBoxes() const { return this->FaceBoxes; }
+  const ReleasableArray<Box3>& TriangleBoxes() const { return this->FaceBoxes; }
   /// Vertex k (0..2) of triangle t.
   const Vec3& Vertex(std::uint32_t t, int k) const { return this->Vertices[this->Faces[t][k]]; }
 
@@ -158,15 +159,16 @@ private:
 
   std::vector<Vec3> Vertices;
   std::vector<std::array<std::uint32_t, 3>> Faces;
-  std::vector<Box3> FaceBoxes;
-  std::vector<Vec3> Normals;
+  // (Filled by a parallel loop: ReleasableArray::resize_for_overwrite.)
+  ReleasableArray<Box3> FaceBoxes;
+  ReleasableArray<Vec3> Normals;
   /// Every edge between exactly two triangles (IsInside may cast its ray
   /// either way).
   bool Closed = false;
   /// Each triangle's exact sign of its normal's component along each axis
   /// (Orient2D of its corners seen along that axis): read by every crossing
   /// test (Crosses), made once.
-  std::vector<std::array<std::int8_t, 3>> AxisFacing;
+  ReleasableArray<std::array<std::int8_t, 3>> AxisFacing;
   std::vector<std::array<std::uint32_t, 3>> Neighbours;
   Box3 Box;
   // Ray-casting index: a uniform grid over the (y, z) extent; each cell lists

@@ -368,7 +368,7 @@ struct BinGrid
   double Cell = 0.0;
   int Dims[3] = { 1, 1, 1 };
 
-  BinGrid(const std::vector<Box3>& boxes)
+  BinGrid(const ReleasableArray<Box3>& boxes)
   {
     std::vector<double> sizes(boxes.size());
     for (std::size_t t = 0; t < boxes.size(); ++t)
@@ -441,14 +441,16 @@ struct BinGrid
 struct BinnedTriangles
 {
   std::vector<std::size_t> Start;
-  std::vector<std::uint32_t> Triangles;
-  std::vector<std::array<int, 3>> Lower;
+  ReleasableArray<std::uint32_t> Triangles;
+  ReleasableArray<std::array<int, 3>> Lower;
 
-  BinnedTriangles(const BinGrid& grid, const std::vector<Box3>& boxes, const ParallelFor& parallelFor)
+  BinnedTriangles(const BinGrid& grid, const ReleasableArray<Box3>& boxes, const ParallelFor& parallelFor)
     : Start(grid.Bins() + 1, 0)
-    , Lower(boxes.size())
   {
-    std::vector<std::array<int, 3>> upper(boxes.size());
+    // (Every value below is written before it is read: resize_for_overwrite.)
+    ReleasableArray<std::array<int, 3>> upper;
+    this->Lower.resize_for_overwrite(boxes.size());
+    upper.resize_for_overwrite(boxes.size());
     parallelFor(boxes.size(), [&](std::size_t begin, std::size_t end) {
       for (std::size_t t = begin; t < end; ++t)
       {
@@ -473,7 +475,7 @@ struct BinnedTriangles
       forEachBin(t, [&](std::uint64_t k) { ++this->Start[k + 1]; });
     }
     std::partial_sum(this->Start.begin(), this->Start.end(), this->Start.begin());
-    this->Triangles.resize(this->Start.back());
+    this->Triangles.resize_for_overwrite(this->Start.back());
     // (Filled from the starts themselves, BucketStarts.h: a copy of them
     // was a third of the pages the check first touched.)
     for (std::size_t t = 0; t < boxes.size(); ++t)
@@ -500,7 +502,7 @@ struct BinnedTriangles
 /// caller that asked discards it).
 template <typename Accept>
 std::size_t CountAcceptedPairs(const std::vector<Vec3>& points,
-  const std::vector<std::array<std::uint32_t, 3>>& triangles, const std::vector<Box3>* givenBoxes, std::size_t limit,
+  const std::vector<std::array<std::uint32_t, 3>>& triangles, const ReleasableArray<Box3>* givenBoxes, std::size_t limit,
   const ParallelFor& parallelFor, const ProgressCallback& progress, const Accept& accept)
 {
   if (triangles.size() < 2 || limit == 0)
@@ -508,10 +510,10 @@ std::size_t CountAcceptedPairs(const std::vector<Vec3>& points,
     return 0;
   }
   // (The triangles' boxes: the caller's where it keeps them.)
-  std::vector<Box3> ownBoxes;
+  ReleasableArray<Box3> ownBoxes;
   if (!givenBoxes)
   {
-    ownBoxes.resize(triangles.size());
+    ownBoxes.resize_for_overwrite(triangles.size());
     parallelFor(triangles.size(), [&](std::size_t begin, std::size_t end) {
       for (std::size_t t = begin; t < end; ++t)
       {
@@ -519,7 +521,7 @@ std::size_t CountAcceptedPairs(const std::vector<Vec3>& points,
       }
     });
   }
-  const std::vector<Box3>& boxes = givenBoxes ? *givenBoxes : ownBoxes;
+  const ReleasableArray<Box3>& boxes = givenBoxes ? *givenBoxes : ownBoxes;
   const BinGrid grid(boxes);
   const BinnedTriangles bins(grid, boxes, parallelFor);
   if (progress && progress(0.2))
@@ -591,7 +593,7 @@ namespace
 {
 /// `given`: the stars proven of these triangles, or null to prove them here.
 std::size_t CountImproperPairs(const std::vector<Vec3>& points,
-  const std::vector<std::array<std::uint32_t, 3>>& triangles, const std::vector<Box3>* boxes,
+  const std::vector<std::array<std::uint32_t, 3>>& triangles, const ReleasableArray<Box3>* boxes,
   const EmbeddedStars* given, std::size_t limit, const ParallelFor& parallelFor, const ProgressCallback& progress)
 {
   if (triangles.size() < 2 || limit == 0)
