@@ -118,4 +118,87 @@ double SheetwiseCellError(const CellSurface& surface, const CellPatches& patches
     fans, (same ? 1.0 : 2.0) * prediction.Delta, surface.Slack, enough, giveUp);
 }
 
+namespace
+{
+/// The triangles of `patches` grouped by loop: those around apex l are loop
+/// l's fan when their other corners are points of `finals[l]` (TriangulateCell
+/// fans the loops in order, an apex each); false where a triangle has no
+/// apex, or not its loop's points, or the apexes are not one per loop.
+bool FansByLoop(const CellPatches& patches, const std::vector<SourceTriangle>& triangles,
+  const std::vector<std::vector<Vec3>>& finals, std::vector<std::vector<SourceTriangle>>& fans)
+{
+  if (patches.Apexes.size() != finals.size())
+  {
+    return false;
+  }
+  const auto onLoop = [](const std::vector<Vec3>& loop, const Vec3& p) {
+    return std::any_of(loop.begin(), loop.end(),
+      [&](const Vec3& q) { return q[0] == p[0] && q[1] == p[1] && q[2] == p[2]; });
+  };
+  fans.assign(finals.size(), {});
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+  {
+    const Triangle& t = patches.Triangles[i];
+    const auto local = std::find_if(t.begin(), t.end(), [](std::uint32_t v) { return v & CellPatches::LocalFlag; });
+    if (local == t.end())
+    {
+      return false;
+    }
+    const std::size_t l = *local & ~CellPatches::LocalFlag;
+    for (int k = 0; k < 3; ++k)
+    {
+      if (t[k] != *local && !onLoop(finals[l], triangles[i][k]))
+      {
+        return false;
+      }
+    }
+    fans[l].push_back(triangles[i]);
+  }
+  return true;
+}
+} // namespace
+
+double FinalChordsCellError(const CellSurface& surface, const CellPatches& patches, const TriangleMesh& mesh,
+  const RootGrid& grid, const CellBoundary& boundary, const BoundaryLoopSet& loops,
+  const std::vector<std::vector<Vec3>>& finals, const Box3& cell, double enough, double giveUp)
+{
+  const std::vector<std::vector<Crossing>> each = EachLoop(loops);
+  if (!SlabApplies(surface) || each.size() != finals.size())
+  {
+    return HUGE_VAL;
+  }
+  std::vector<double> deltas; // (the own chords' order: loop by loop, chord k from point k)
+  double delta = 0.0;
+  for (std::size_t l = 0; l < each.size(); ++l)
+  {
+    std::vector<ChordTile> chords;
+    if (each[l].size() != finals[l].size() ||
+      !MeasureChords(surface.Mesh, grid, boundary, each[l], finals[l], giveUp, chords) ||
+      chords.size() != each[l].size())
+    {
+      return HUGE_VAL;
+    }
+    for (const ChordTile& c : chords)
+    {
+      deltas.push_back(c.Deviation + surface.Slack);
+      delta = std::max(delta, deltas.back());
+    }
+  }
+  if (!(delta < giveUp))
+  {
+    return HUGE_VAL;
+  }
+  const OwnChords own{ &finals, &deltas, HUGE_VAL, false, cell };
+  const std::vector<SourceTriangle> triangles = PatchTriangles(patches, mesh);
+  double bound = SlabPatchError(
+    *surface.Solid, surface.MeshTriangles, surface.Mesh, triangles, delta, surface.Slack, own, enough, giveUp);
+  std::vector<std::vector<SourceTriangle>> fans;
+  if (!(bound <= enough) && finals.size() > 1 && FansByLoop(patches, triangles, finals, fans))
+  {
+    bound = std::min(bound, SheetwiseSlabError(*surface.Solid, surface.MeshTriangles, surface.Mesh, cell, finals,
+                              own, fans, delta, surface.Slack, enough, giveUp));
+  }
+  return bound;
+}
+
 } // namespace tpc

@@ -92,4 +92,24 @@ double SlabCellError(const CellSurface& surface, const CellPatches& patches, con
 double SheetwiseCellError(const CellSurface& surface, const CellPatches& patches, const TriangleMesh& mesh,
   const AdaptiveOctree::MeshCellPrediction& prediction, bool same, const Box3& cell, double enough, double giveUp);
 
+/// E(P) of the cell's fans over its final loops (`loops`, their points
+/// `finals`: FinalLoopPoints), whether or not those refine its own: each
+/// final chord's delta measured on the cell's final boundary (`boundary`,
+/// MarkedCellBoundary: the tiles the final chords cross, from whichever side
+/// of each face is finer - tiles that passed the face tests there, one arc
+/// of the trace each - and the crease tiles' halves) as the prediction
+/// measures its own chords (MeshCellError.h: MeasureChords), plus the slack;
+/// then the slab bound with the largest of them as the chords' reach and the
+/// final chords as the own (SlabBound.h: the final chords are the patch's,
+/// each within its delta of its arc; LocalHeights.h), sheet by sheet where
+/// there are several loops (MeshCellError.h: Several sheets; each loop's fan
+/// the triangles around its apex). Where a finer neighbour retiled a crease
+/// tile, the final loops no longer hold the own loops' points and the
+/// prediction's bound no longer holds (FinalLoopsRefine); this does. +inf
+/// where SlabCellError would not apply, a chord has no tile, or the fans
+/// are not one per loop around its own apex.
+double FinalChordsCellError(const CellSurface& surface, const CellPatches& patches, const TriangleMesh& mesh,
+  const RootGrid& grid, const CellBoundary& boundary, const BoundaryLoopSet& loops,
+  const std::vector<std::vector<Vec3>>& finals, const Box3& cell, double enough, double giveUp);
+
 } // namespace tpc

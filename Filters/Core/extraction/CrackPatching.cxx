@@ -225,16 +225,23 @@ CellBoundary GatherCellBoundary(const AdaptiveOctree& tree, std::size_t cell)
 BoundaryLoopSet CellLoops(
   const AdaptiveOctree& tree, std::uint32_t cell, const PrimitiveSet& prims, FaceDecisionCache* faceDecisions)
 {
-  CellBoundary boundary = GatherCellBoundary(tree, cell);
   const CsgLeaf* own = tree.Nodes[cell].State == CellState::Exact ? LoneMeshLeaf(*tree.Expressions[cell]) : nullptr;
   if (own)
   {
-    ExactPolygons polygons = ClipToExactCell(boundary, *own, prims, tree.Grid);
+    ExactPolygons polygons = ClipToExactCell(GatherCellBoundary(tree, cell), *own, prims, tree.Grid);
     BoundaryLoopSet set;
     set.Crossings = std::move(polygons.Vertices);
     set.LoopSizes = std::move(polygons.Sizes);
     return set;
   }
+  CellBoundary boundary = MarkedCellBoundary(tree, cell, prims, faceDecisions);
+  return TraceBoundaryLoops(boundary);
+}
+
+CellBoundary MarkedCellBoundary(
+  const AdaptiveOctree& tree, std::uint32_t cell, const PrimitiveSet& prims, FaceDecisionCache* faceDecisions)
+{
+  CellBoundary boundary = GatherCellBoundary(tree, cell);
   // Tiles shared with an exact cell carry the mesh's exact trace.
   std::vector<ExactTile> exact;
   for (int f = 0; f < 6; ++f)
@@ -291,7 +298,7 @@ BoundaryLoopSet CellLoops(
       return &tree.Expressions[mine ? cell : other];
     });
   }
-  return TraceBoundaryLoops(boundary);
+  return boundary;
 }
 
 } // namespace tpc

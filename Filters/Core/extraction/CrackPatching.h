@@ -31,9 +31,16 @@ class FaceDecisionCache; // (FaceDecisionCache.h)
 /// whichever side is finer, and every sample point on them.
 CellBoundary GatherCellBoundary(const AdaptiveOctree& tree, std::size_t cell);
 
-/// The loops of leaf `cell` traced from its boundary's samples; for an exact
-/// cell, its polygons (ExactCell.h).
+/// The loops of leaf `cell` traced from its boundary's samples
+/// (MarkedCellBoundary); for an exact cell, its polygons (ExactCell.h).
 BoundaryLoopSet CellLoops(const AdaptiveOctree& tree, std::uint32_t cell, const PrimitiveSet& primitives,
+  FaceDecisionCache* faceDecisions = nullptr);
+
+/// The boundary leaf `cell` (not exact) traces its loops from: its samples
+/// (GatherCellBoundary), the tiles shared with an exact cell carrying the
+/// mesh's trace, and its crease tiles marked - the tiles its loops' chords
+/// cross, for their deltas (MeshCellError.h: MeasureChords).
+CellBoundary MarkedCellBoundary(const AdaptiveOctree& tree, std::uint32_t cell, const PrimitiveSet& primitives,
   FaceDecisionCache* faceDecisions = nullptr);
 
 } // namespace tpc
