@@ -136,6 +136,19 @@ void PolygonSet::Add(const Vec3* corners, std::size_t m)
   this->Headers.push_back(h);
 }
 
+void PolygonSet::AddCopy(const PolygonSet& from, std::size_t i)
+{
+  assert(this->SlackMagnitude == from.SlackMagnitude && "Add would measure it against another magnitude");
+  Header h = from.Headers[i];
+  const std::size_t first = h.First;
+  h.First = static_cast<std::uint32_t>(this->Corners.size());
+  this->Corners.insert(this->Corners.end(), from.Corners.begin() + static_cast<std::ptrdiff_t>(first),
+    from.Corners.begin() + static_cast<std::ptrdiff_t>(first + h.Count));
+  this->Inward.insert(this->Inward.end(), from.Inward.begin() + static_cast<std::ptrdiff_t>(first),
+    from.Inward.begin() + static_cast<std::ptrdiff_t>(first + h.Count));
+  this->Headers.push_back(h);
+}
+
 namespace
 {
 /// Squared distance from `p` to the segment [a, b].

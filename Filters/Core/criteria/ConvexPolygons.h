@@ -157,6 +157,11 @@ public:
   /// its normal, area, box and edges' inward normals.
   void Add(const Vec3* corners, std::size_t count);
   void Add(std::initializer_list<Vec3> corners) { this->Add(corners.begin(), corners.size()); }
+  /// Adds polygon `i` of `from` as `from` holds it: its corners, normal,
+  /// area, box and inward normals copied rather than measured again (what Add
+  /// would compute, where this set has `from`'s slack magnitude; S_C's sheets
+  /// are cut out of S_C so, MeshCellError.h).
+  void AddCopy(const PolygonSet& from, std::size_t i);
   /// The largest coordinate M the caller's rounding slack is taken of
   /// (MeshCellError.h: Rounding) - the polygons added after are measured by
   /// their planes wherever that is within a quarter of the slack

@@ -878,17 +878,61 @@ SurfaceSheets SheetsInCell(const MeshSolid& mesh, const TriangleList& meeting, c
   return sheets;
 }
 
+/// The polygons of S_C `surface` that may lie within `reach` of a point of
+/// the cell's loops `loops`: all but those whose boxes lie deeper inside
+/// `cell` than off + 2 reach, off the largest distance of a loop point to
+/// its nearest face's plane. (A loop point p lies within off of some face's
+/// plane, a point x of such a box farther than off + 2 reach from it: x and
+/// p are more than 2 reach apart across it - twice, so that the
+/// comparisons' rounding, far smaller, cannot matter.) In a large cell most
+/// of S_C's polygons are inside, and SheetOfLoop looked at every one for
+/// every point.
+std::vector<std::uint32_t> PolygonsNearLoops(
+  const PolygonSet& surface, const std::vector<std::vector<Vec3>>& loops, const Box3& cell, double reach)
+{
+  double off = 0.0; // (the loop points' largest distance to the nearest face)
+  for (const std::vector<Vec3>& loop : loops)
+  {
+    for (const Vec3& p : loop)
+    {
+      double nearest = HUGE_VAL;
+      for (int a = 0; a < 3; ++a)
+      {
+        nearest = std::min({ nearest, std::fabs(p[a] - cell.lo[a]), std::fabs(cell.hi[a] - p[a]) });
+      }
+      off = std::max(off, nearest);
+    }
+  }
+  const double inside = off + 2.0 * reach;
+  std::vector<std::uint32_t> near;
+  for (std::size_t i = 0; i < surface.size(); ++i)
+  {
+    const Box3& b = surface.Bounds(i);
+    bool deep = true;
+    for (int a = 0; a < 3; ++a)
+    {
+      deep = deep && b.lo[a] - cell.lo[a] > inside && cell.hi[a] - b.hi[a] > inside;
+    }
+    if (!deep)
+    {
+      near.push_back(static_cast<std::uint32_t>(i));
+    }
+  }
+  return near;
+}
+
 /// The sheet of S_C `surface` (its polygons' sheets `sheets`) every point of
 /// `loop` lies on within `reach` - the one sheet near each - or NoSheet.
+/// `near`: the polygons that may be within `reach` of it (PolygonsNearLoops).
 std::uint32_t SheetOfLoop(const PolygonSet& surface, const SurfaceSheets& sheets, const std::vector<Vec3>& loop,
-  double reach)
+  double reach, const std::vector<std::uint32_t>& near)
 {
   constexpr std::uint32_t NoSheet = UINT32_MAX;
   std::uint32_t found = NoSheet;
   for (const Vec3& p : loop)
   {
-    bool near = false;
-    for (std::size_t i = 0; i < surface.size(); ++i)
+    bool onOne = false;
+    for (const std::uint32_t i : near)
     {
       if (surface.Bounds(i).Distance2(p) <= reach * reach && surface.Distance(p, i) <= reach)
       {
@@ -897,10 +941,10 @@ std::uint32_t SheetOfLoop(const PolygonSet& surface, const SurfaceSheets& sheets
           return NoSheet;
         }
         found = sheets.SheetOf[i];
-        near = true;
+        onOne = true;
       }
     }
-    if (!near)
+    if (!onOne)
     {
       return NoSheet;
     }
@@ -959,9 +1003,10 @@ double SheetwiseSlabError(const MeshSolid& mesh, const TriangleList& surfaceTria
   }
   std::vector<std::uint32_t> sheetOf(loops.size());
   std::vector<bool> hasLoop(sheets.Count, false);
+  const std::vector<std::uint32_t> near = PolygonsNearLoops(surface, loops, cell, slack);
   for (std::size_t l = 0; l < loops.size(); ++l)
   {
-    sheetOf[l] = SheetOfLoop(surface, sheets, loops[l], slack);
+    sheetOf[l] = SheetOfLoop(surface, sheets, loops[l], slack, near);
     if (sheetOf[l] >= sheets.Count)
     {
       return HUGE_VAL;
@@ -983,7 +1028,7 @@ double SheetwiseSlabError(const MeshSolid& mesh, const TriangleList& surfaceTria
     {
       if (sheets.SheetOf[i] == s)
       {
-        part.Add(surface[i].Points.begin(), surface[i].Points.size());
+        part.AddCopy(surface, i);
         partTriangles.push_back(surfaceTriangles[i]);
       }
     }
