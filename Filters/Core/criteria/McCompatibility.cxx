@@ -328,7 +328,9 @@ McCompatibility TestMcCompatibility(const AdaptiveOctree& tree, std::uint32_t n,
   // of the 72 cells of levels 3-5 that reached the star-shaped test and
   // split passed it and failed their error bound or their creases, and it
   // was a fifth of their tests' time. Either way a cell passes only if both
-  // pass: the same cells split; at a limit, where every test runs, the
+  // pass: the same cells split, but one failing both records its error's
+  // reason (SplitReason, FailedTest), not NotStarShapedVoxel - except at a
+  // depth or cell limit, where every test runs in the paper's order and the
   // topological failure is the one reported.)
   if (!provenFailuresFirst && !starShaped())
   {

@@ -115,7 +115,9 @@ constexpr int FaceRefinementLevels = 10;
 /// `provenFailuresFirst`, a cell larger than the tolerance whose surface is
 /// one mesh is first checked for a spoke that rules out every fan, and its
 /// prediction probes its fan before the branch and bound (MeshCellError.h:
-/// Spokes, Probes; SubdivisionParameters::ProvenFailuresFirst).
+/// Spokes, Probes; SubdivisionParameters::ProvenFailuresFirst), and every
+/// cell's error tests run before its star-shaped test (a cell failing both
+/// reports its error's reason).
 /// `surfaceScratch`: where S_C is built (a buffer reused across cells,
 /// ScratchPool.h); null for one of its own. With `refineChords`, a mesh
 /// cell's failed prediction is made again over finer chords where they

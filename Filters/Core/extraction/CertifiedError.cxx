@@ -162,18 +162,17 @@ double FinalChordsCellError(const CellSurface& surface, const CellPatches& patch
   const RootGrid& grid, const CellBoundary& boundary, const BoundaryLoopSet& loops,
   const std::vector<std::vector<Vec3>>& finals, const Box3& cell, double enough, double giveUp)
 {
-  const std::vector<std::vector<Crossing>> each = EachLoop(loops);
-  if (!SlabApplies(surface) || each.size() != finals.size())
+  if (!SlabApplies(surface))
   {
     return HUGE_VAL;
   }
+  const std::vector<std::vector<Crossing>> each = EachLoop(loops); // (FinalLoopPoints' order)
   std::vector<double> deltas; // (the own chords' order: loop by loop, chord k from point k)
   double delta = 0.0;
   for (std::size_t l = 0; l < each.size(); ++l)
   {
     std::vector<ChordTile> chords;
-    if (each[l].size() != finals[l].size() ||
-      !MeasureChords(surface.Mesh, grid, boundary, each[l], finals[l], giveUp, chords) ||
+    if (!MeasureChords(surface.Mesh, grid, boundary, each[l], finals[l], giveUp, chords) ||
       chords.size() != each[l].size())
     {
       return HUGE_VAL;

@@ -448,8 +448,8 @@ CellCertificate TriangulateSurfaceCell(const AdaptiveOctree& tree, std::uint32_t
       // short of the branch and bound, and where they do, tighter than twice
       // Delta (the turbine at 1/64: 51 of the 75 cells left here settle, 40
       // of them of two loops not refining their own; at about the branch and
-      // bound's cost, with lower bounds reported). (Not where a limit stopped
-      // a cell: its tiles may hold two arcs.)
+      // bound's cost, and its HausdorffBound lower). (Not where a limit
+      // stopped a cell: its tiles may hold two arcs.)
       if (!(slab <= aim) && predictionsHold && loops.Consistent)
       {
         const CellBoundary boundary = MarkedCellBoundary(tree, n, prims);

@@ -51,10 +51,10 @@ struct ExtractionResult
   /// Error-bounded cells larger than the tolerance whose certificate failed
   /// (their diagonal counts, which exceeds the tolerance).
   std::size_t UncertifiedCells = 0;
-  /// Own cells larger than the tolerance whose certificate their final
-  /// loops' chords, measured on the final tiles, settled without a branch and
-  /// bound (FinalChordsCellError, CertifiedError.h): where those loops no
-  /// longer refine the cell's own.
+  /// Own cells larger than the tolerance whose first certificate their
+  /// final loops' chords, measured on the final tiles, settled without a
+  /// branch and bound (FinalChordsCellError, CertifiedError.h) - mostly where
+  /// those loops no longer refine the cell's own, and no other bound held.
   std::size_t FinalChordCells = 0;
   /// Each own error-bounded cell's certified error (node index, E_C; +inf
   /// where the certificate failed), in node order.

@@ -65,21 +65,23 @@ inline bool ForEachChunk(std::size_t count, std::size_t chunk, const ParallelFor
 
 /// ForEachChunk with chunks sized by the time they take: the first holds
 /// `chunk` items; a chunk that took less than `seconds` makes the next twice
-/// as large (up to 16 chunks), one that took over four times as long makes it
-/// half as large (down to 1/16 chunk). Each chunk ends in a barrier - the
-/// threads wait for its slowest range - and in `afterChunk` on the calling
-/// thread alone, so chunks of many cheap items cost that wait many times
-/// (the turbine's subdivision at 1/64, 256-cell chunks: 2 % of its time),
-/// while one fixed size large enough for them would keep an abort waiting
-/// for seconds where each item takes milliseconds. The sizes depend on the
-/// clock: use it only for loops whose results do not depend on where the
-/// chunks end.
+/// as large (up to 8 times `chunk` items), one that took over four times as
+/// long makes it half as large (down to `chunk` / 16). Each chunk ends in a
+/// barrier - the threads wait for its slowest range - and in `afterChunk` on
+/// the calling thread alone, so chunks of many cheap items cost that wait
+/// many times (the turbine's subdivision at 1/64, 256-cell chunks: 2 % of
+/// its time), while one fixed size large enough for them would keep an
+/// abort waiting for seconds where each item takes milliseconds. A chunk
+/// grows only after cheap ones, so an abort waits about `seconds` - unless
+/// the items turn costly at once, then for at most 8 times what a chunk of
+/// `chunk` of them takes. The sizes depend on the clock: use it only for
+/// loops whose results do not depend on where the chunks end.
 inline bool ForEachTimedChunk(std::size_t count, std::size_t chunk, double seconds, const ParallelFor& parallelFor,
   const std::function<void(std::size_t, std::size_t)>& body,
   const std::function<bool(std::size_t, std::size_t)>& afterChunk)
 {
   using Clock = std::chrono::steady_clock;
-  const std::size_t smallest = std::max<std::size_t>(1, chunk / 16), largest = 16 * chunk;
+  const std::size_t smallest = std::max<std::size_t>(1, chunk / 16), largest = 8 * chunk;
   std::size_t size = chunk;
   for (std::size_t first = 0; first < count;)
   {

@@ -23,7 +23,8 @@ constexpr std::size_t Chunk = 256;
 
 /// The time a chunk of the cells' tests aims at (ForEachTimedChunk): its
 /// barrier and its serial part are a small share of it, and an abort waits
-/// for about that long.
+/// for about that long (at most for 8 chunks of Chunk cells, where cells turn
+/// costly at once).
 constexpr double ChunkSeconds = 0.05;
 
 CellState StateOf(RegionSign s)
@@ -310,12 +311,14 @@ bool LevelByLevel::EvaluateUnseenCorners()
 /// the cells that passed go into the tables (in cell order: the first tiling
 /// of a face stays) and every verdict drops them, so a level's cells never
 /// hold them all at once (face refinement may sample thousands of points per
-/// cell). The face decisions the level shares (FaceDecisionCache.h) - a
-/// tiling and its corners' signs per face one cell has tiled and the other
-/// not yet - are held until the level ends. The chunks are sized by the
-/// clock (ForEachTimedChunk), which no verdict depends on: a cell's tests
-/// read no tiling of its own level, and of the sign table only exact signs,
-/// which the cell computes alike where they are not in it yet.
+/// cell; a chunk's cells hold at most what they computed in about
+/// ChunkSeconds). The face decisions the level shares (FaceDecisionCache.h)
+/// - a tiling and its corners' signs per face one cell has tiled and the
+/// other not yet - are held until the level ends. The chunks are sized by
+/// the clock (ForEachTimedChunk), which no verdict depends on: a cell's tests
+/// read its level's tilings only through those decisions - what the cell
+/// would compute, kept until the level ends - and of the sign table only
+/// exact signs, which the cell computes alike where they are not in it yet.
 bool LevelByLevel::TestCells(std::vector<CellTests>& tests)
 {
   AdaptiveOctree& tree = this->Result.Octree;
