@@ -315,8 +315,9 @@
 // with the same topology, guarantees and no larger bound.
 // Where the slab is too thick, its local heights are tried (LocalHeights.h;
 // the prediction's own chords and their deltas, each chord's face read from
-// the cell; the extraction's over the prediction's own loops and Delta). They bound more tightly than the branch and bound stopped at its
-// first proof, so OwnFanError reads lower there and MeshEdgeFanKeptWithin
+// the cell; the extraction's over the prediction's own loops and Delta).
+// They bound more tightly than the branch and bound stopped at its first
+// proof, so OwnFanError reads lower there and MeshEdgeFanKeptWithin
 // keeps fewer loop-point fans: over CGAL's closed demo meshes at 1/64, 36 of 84
 // surfaces changed, 682 triangles more of 197 536, 43 bounds lower, none
 // higher, the same topology and guarantees.

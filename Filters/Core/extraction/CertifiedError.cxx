@@ -77,6 +77,33 @@ bool SlabApplies(const CellSurface& surface)
 {
   return surface.OneMesh && surface.SceneOfOneMesh && surface.Solid && surface.Solid->EveryEdgeHasTwoTriangles();
 }
+
+/// The triangles of `patches` (positions `triangles`) as `groups` fans, in
+/// their order: each triangle in the fan groupOf(i, its apex's local id)
+/// names; false where a triangle has no apex (a local vertex) or groupOf
+/// refuses it (returns `groups` or more).
+template <typename GroupOf>
+bool FansAroundApexes(const CellPatches& patches, const std::vector<SourceTriangle>& triangles, std::size_t groups,
+  const GroupOf& groupOf, std::vector<std::vector<SourceTriangle>>& fans)
+{
+  fans.assign(groups, {});
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+  {
+    const Triangle& t = patches.Triangles[i];
+    const auto local = std::find_if(t.begin(), t.end(), [](std::uint32_t v) { return v & CellPatches::LocalFlag; });
+    if (local == t.end())
+    {
+      return false;
+    }
+    const std::size_t group = groupOf(i, *local);
+    if (group >= groups)
+    {
+      return false;
+    }
+    fans[group].push_back(triangles[i]);
+  }
+  return true;
+}
 } // namespace
 
 double SlabCellError(const CellSurface& surface, const CellPatches& patches, const TriangleMesh& mesh,
@@ -94,24 +121,22 @@ double SheetwiseCellError(const CellSurface& surface, const CellPatches& patches
   {
     return HUGE_VAL;
   }
-  std::vector<std::vector<SourceTriangle>> fans(prediction.Loops.size());
-  const std::vector<SourceTriangle> triangles = PatchTriangles(patches, mesh);
-  for (std::size_t i = 0; i < triangles.size(); ++i)
+  // (Each triangle with the own loop whose apex - the prediction's - it is
+  // drawn around.)
+  const std::size_t loops = prediction.Loops.size();
+  std::vector<std::vector<SourceTriangle>> fans;
+  if (!FansAroundApexes(patches, PatchTriangles(patches, mesh), loops,
+        [&](std::size_t, std::uint32_t local) {
+          const Vec3& apex = patches.Apexes[local & ~CellPatches::LocalFlag];
+          const auto own = std::find_if(prediction.Apexes.begin(), prediction.Apexes.end(),
+            [&](const Vec3& a) { return a[0] == apex[0] && a[1] == apex[1] && a[2] == apex[2]; });
+          return own == prediction.Apexes.end() || prediction.Apexes.size() != loops
+            ? loops
+            : static_cast<std::size_t>(own - prediction.Apexes.begin());
+        },
+        fans))
   {
-    const Triangle& t = patches.Triangles[i];
-    const auto local = std::find_if(t.begin(), t.end(), [](std::uint32_t v) { return v & CellPatches::LocalFlag; });
-    if (local == t.end())
-    {
-      return HUGE_VAL;
-    }
-    const Vec3& apex = patches.Apexes[*local & ~CellPatches::LocalFlag];
-    const auto own = std::find_if(prediction.Apexes.begin(), prediction.Apexes.end(),
-      [&](const Vec3& a) { return a[0] == apex[0] && a[1] == apex[1] && a[2] == apex[2]; });
-    if (own == prediction.Apexes.end() || prediction.Apexes.size() != fans.size())
-    {
-      return HUGE_VAL;
-    }
-    fans[static_cast<std::size_t>(own - prediction.Apexes.begin())].push_back(triangles[i]);
+    return HUGE_VAL;
   }
   const OwnChords chords{ nullptr, nullptr, prediction.Delta, !same, cell };
   return SheetwiseSlabError(*surface.Solid, surface.MeshTriangles, surface.Mesh, cell, prediction.Loops, chords,
@@ -135,26 +160,19 @@ bool FansByLoop(const CellPatches& patches, const std::vector<SourceTriangle>& t
     return std::any_of(loop.begin(), loop.end(),
       [&](const Vec3& q) { return q[0] == p[0] && q[1] == p[1] && q[2] == p[2]; });
   };
-  fans.assign(finals.size(), {});
-  for (std::size_t i = 0; i < triangles.size(); ++i)
-  {
-    const Triangle& t = patches.Triangles[i];
-    const auto local = std::find_if(t.begin(), t.end(), [](std::uint32_t v) { return v & CellPatches::LocalFlag; });
-    if (local == t.end())
-    {
-      return false;
-    }
-    const std::size_t l = *local & ~CellPatches::LocalFlag;
-    for (int k = 0; k < 3; ++k)
-    {
-      if (t[k] != *local && !onLoop(finals[l], triangles[i][k]))
+  return FansAroundApexes(patches, triangles, finals.size(),
+    [&](std::size_t i, std::uint32_t local) {
+      const std::size_t l = local & ~CellPatches::LocalFlag;
+      for (int k = 0; k < 3; ++k)
       {
-        return false;
+        if (patches.Triangles[i][k] != local && !onLoop(finals[l], triangles[i][k]))
+        {
+          return finals.size();
+        }
       }
-    }
-    fans[l].push_back(triangles[i]);
-  }
-  return true;
+      return l;
+    },
+    fans);
 }
 } // namespace
 
